@@ -1,0 +1,11 @@
+// Each subcommand of `usvid` registers itself on the application: its options, its help and
+// the callback that runs it. A callback throws InputError for bad input (main: exit code 2).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace usvid {
+
+void AddImportCommand(CLI::App& app);
+
+}  // namespace usvid

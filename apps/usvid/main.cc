@@ -1,0 +1,36 @@
+// usvid: identification of high-speed USV dynamics, and a benchmark of the methods.
+// Exit codes: 0 success, 2 bad input or usage (one line naming the file, line or option),
+// 1 an internal failure.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "apps/usvid/commands.h"
+#include "core/error.h"
+
+#ifndef USVID_VERSION
+#define USVID_VERSION "unknown"
+#endif
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "usvid: identify the dynamics of high-speed unmanned surface vessels from data, and "
+      "measure how well each identification method does."};
+  app.set_version_flag("--version", "usvid " USVID_VERSION);
+  app.require_subcommand(1);
+  usvid::AddImportCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::cerr << "usvid: error: " << e.what() << " (see usvid --help)\n";
+    return 2;
+  } catch (const usvid::InputError& e) {
+    std::cerr << "usvid: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "usvid: internal error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

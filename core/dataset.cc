@@ -1,0 +1,77 @@
+#include "core/dataset.h"
+
+#include <cassert>
+#include <cstdlib>
+#include <limits>
+#include <utility>
+
+#include "core/error.h"
+
+namespace usvid {
+
+const Channel* Dataset::Find(const std::string& name) const {
+  for (const Channel& c : channels_)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+Channel* Dataset::FindMutable(const std::string& name) {
+  return const_cast<Channel*>(std::as_const(*this).Find(name));
+}
+
+const Channel& Dataset::Get(const std::string& name) const {
+  const Channel* c = Find(name);
+  if (c == nullptr) throw InputError("no channel '" + name + "' in the data");
+  return *c;
+}
+
+void Dataset::Set(const std::string& name, Eigen::VectorXd values) {
+  Eigen::Array<bool, Eigen::Dynamic, 1> sampled =
+      Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(values.size(), true);
+  Set(name, std::move(values), std::move(sampled));
+}
+
+void Dataset::Set(const std::string& name, Eigen::VectorXd values,
+                  Eigen::Array<bool, Eigen::Dynamic, 1> sampled) {
+  if (values.size() != rows() || sampled.size() != rows()) std::abort();
+  for (Eigen::Index i = 0; i < rows(); ++i)
+    if (!sampled(i)) values(i) = std::numeric_limits<double>::quiet_NaN();
+  if (Channel* c = FindMutable(name)) {
+    c->values = std::move(values);
+    c->sampled = std::move(sampled);
+  } else {
+    channels_.push_back({name, std::move(values), std::move(sampled)});
+  }
+}
+
+void Dataset::Remove(const std::string& name) {
+  std::erase_if(channels_, [&](const Channel& c) { return c.name == name; });
+}
+
+void Dataset::KeepRows(const std::vector<bool>& keep) {
+  if (static_cast<Eigen::Index>(keep.size()) != rows()) std::abort();
+  std::vector<Eigen::Index> idx;
+  for (Eigen::Index i = 0; i < rows(); ++i)
+    if (keep[i]) idx.push_back(i);
+  const auto n = static_cast<Eigen::Index>(idx.size());
+  Eigen::VectorXd t(n);
+  for (Eigen::Index k = 0; k < n; ++k) t(k) = t_(idx[k]);
+  t_ = std::move(t);
+  for (Channel& c : channels_) {
+    Eigen::VectorXd v(n);
+    Eigen::Array<bool, Eigen::Dynamic, 1> s(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      v(k) = c.values(idx[k]);
+      s(k) = c.sampled(idx[k]);
+    }
+    c.values = std::move(v);
+    c.sampled = std::move(s);
+  }
+}
+
+void Dataset::SetTime(Eigen::VectorXd t) {
+  if (t.size() != rows() && !channels_.empty()) std::abort();
+  t_ = std::move(t);
+}
+
+}  // namespace usvid

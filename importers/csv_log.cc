@@ -1,0 +1,119 @@
+#include "importers/csv_log.h"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "core/csv_tokenizer.h"
+#include "core/error.h"
+#include "core/parse_number.h"
+#include "core/time_repair.h"
+#include "importers/earth_to_body.h"
+
+namespace usvid {
+namespace {
+
+char DetectSeparator(const std::string& text) {
+  const std::string header = text.substr(0, text.find('\n'));
+  char best = ',';
+  long best_count = 0;
+  for (char sep : {',', ';', '\t'}) {
+    const long count = std::count(header.begin(), header.end(), sep);
+    if (count > best_count) {
+      best = sep;
+      best_count = count;
+    }
+  }
+  return best;
+}
+
+std::string SeparatorName(char sep) { return sep == '\t' ? "tab" : std::string(1, sep); }
+
+}  // namespace
+
+Dataset ParseCsvLog(const std::string& text, const std::string& file,
+                    const std::vector<ColumnMapping>& map, ImportReport& report) {
+  if (text.empty()) throw InputError(Located(file, 0, 0, "the file is empty"));
+  const char sep = DetectSeparator(text);
+  const CsvTable table = TokenizeCsv(text, file, sep);
+  if (table.rows.size() < 2) throw InputError(Located(file, 0, 0, "no data rows"));
+  const CsvRow& header = table.rows.front();
+  std::map<std::string, size_t> column_of;
+  for (size_t c = 0; c < header.fields.size(); ++c) column_of.emplace(header.fields[c].text, c);
+
+  std::vector<ColumnMapping> plan = map;
+  if (plan.empty())
+    for (const CsvField& f : header.fields) plan.push_back({f.text, f.text, "", 1.0});
+  if (std::none_of(plan.begin(), plan.end(), [](const auto& m) { return m.target == "t"; }))
+    throw InputError(Located(file, header.line, 0,
+                             "no time channel: map one with --map t=COLUMN[:unit]"));
+
+  const auto nrow = static_cast<Eigen::Index>(table.rows.size() - 1);
+  std::vector<Eigen::VectorXd> values;
+  std::vector<Eigen::Array<bool, Eigen::Dynamic, 1>> sampled;
+  for (const ColumnMapping& m : plan) {
+    const auto it = column_of.find(m.source);
+    if (it == column_of.end())
+      throw InputError(Located(file, header.line, 0,
+                               "--map " + m.target + "=" + m.source + ": no column '" + m.source +
+                                   "' in the header"));
+    const size_t c = it->second;
+    Eigen::VectorXd v(nrow);
+    Eigen::Array<bool, Eigen::Dynamic, 1> s(nrow);
+    for (Eigen::Index i = 0; i < nrow; ++i) {
+      const CsvRow& row = table.rows[i + 1];
+      if (c >= row.fields.size())
+        throw InputError(Located(file, row.line, row.end_column,
+                                 "short row: no cell for column '" + m.source + "'"));
+      const ParsedNumber p = ParseNumber(row.fields[c].text);
+      s(i) = p.status == NumberStatus::kOk;
+      v(i) = p.value * m.factor;
+      if (p.status == NumberStatus::kEmpty && m.target != "t") continue;
+      if (p.status != NumberStatus::kOk)
+        throw InputError(Located(file, row.line, row.fields[c].column,
+                                 "column '" + m.source + "': " +
+                                     DescribeNumberStatus(p.status, row.fields[c].text)));
+    }
+    values.push_back(std::move(v));
+    sampled.push_back(std::move(s));
+  }
+
+  Dataset data;
+  for (size_t k = 0; k < plan.size(); ++k)
+    if (plan[k].target == "t") data = Dataset(values[k]);
+  for (size_t k = 0; k < plan.size(); ++k)
+    if (plan[k].target != "t") data.Set(plan[k].target, values[k], sampled[k]);
+  data.metadata()["source"] = file;
+  data.metadata()["format"] = "csv";
+
+  std::ostringstream s;
+  s << file << ": " << nrow << " rows, separator '" << SeparatorName(sep) << "'; channels:";
+  for (const ColumnMapping& m : plan) {
+    s << ' ' << m.target;
+    if (m.source != m.target || !m.unit.empty()) s << "=" << m.source;
+    if (!m.unit.empty()) s << " (" << m.unit << " to SI, x" << m.factor << ")";
+  }
+  report.Note(s.str());
+  if (data.Has("vn") || data.Has("ve")) {
+    if (!data.Has("vn") || !data.Has("ve") || !data.Has("psi"))
+      throw InputError(Located(file, header.line, 0,
+                               "--map: earth-fixed velocities need all of vn, ve and psi"));
+    const Channel& vn = data.Get("vn");
+    const Channel& ve = data.Get("ve");
+    const Channel& psi = data.Get("psi");
+    const Eigen::Array<bool, Eigen::Dynamic, 1> both = vn.sampled && ve.sampled && psi.sampled;
+    BodyVelocities body = EarthToBody(vn.values, ve.values, psi.values);
+    data.Set("u", std::move(body.u), both);
+    data.Set("v", std::move(body.v), both);
+    report.Note("earth-fixed vn, ve rotated to body-fixed u, v with psi");
+  }
+  report.Note(DropNonIncreasingRows(data).Summary());
+  return data;
+}
+
+Dataset ImportCsvLog(const std::string& path, const std::vector<ColumnMapping>& map,
+                     ImportReport& report) {
+  return ParseCsvLog(ReadTextFile(path), path, map, report);
+}
+
+}  // namespace usvid

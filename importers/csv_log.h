@@ -1,0 +1,22 @@
+// Any CSV log into the contract's form. The separator (',', ';' or tab) is detected from the
+// header. With a column map only the mapped columns are read (others may hold text, such as
+// dates); without one every column is read and must be numeric. Time comes from the channel t
+// (map it: --map t=time). Rows whose time does not increase are dropped and reported; vn/ve
+// become body-fixed u/v (column_map.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+#include "importers/column_map.h"
+#include "importers/import_report.h"
+
+namespace usvid {
+
+Dataset ImportCsvLog(const std::string& path, const std::vector<ColumnMapping>& map,
+                     ImportReport& report);
+Dataset ParseCsvLog(const std::string& text, const std::string& file,
+                    const std::vector<ColumnMapping>& map, ImportReport& report);
+
+}  // namespace usvid
