@@ -7,5 +7,6 @@
 namespace usvid {
 
 void AddImportCommand(CLI::App& app);
+void AddInfoCommand(CLI::App& app);
 
 }  // namespace usvid

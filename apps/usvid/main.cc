@@ -3,6 +3,7 @@
 // 1 an internal failure.
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 
 #include "apps/usvid/commands.h"
@@ -19,6 +20,15 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "usvid " USVID_VERSION);
   app.require_subcommand(1);
   usvid::AddImportCommand(app);
+  usvid::AddInfoCommand(app);
+  if (argc > 1 && argv[1][0] != '-') {
+    const auto subcommands = app.get_subcommands({});
+    if (std::none_of(subcommands.begin(), subcommands.end(),
+                     [&](const CLI::App* c) { return c->check_name(argv[1]); })) {
+      std::cerr << "usvid: error: unknown command '" << argv[1] << "' (see usvid --help)\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

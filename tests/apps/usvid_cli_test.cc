@@ -1,0 +1,100 @@
+// The `usvid` binary as a user runs it: help, version, exit codes, import and info.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/csv_dataset.h"
+#include "tests/apps/run_usvid.h"
+
+namespace usvid {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+using testing::FreshTempDir;
+using testing::RunUsvid;
+using testing::WriteText;
+namespace fs = std::filesystem;
+
+class UsvidCliTest : public ::testing::Test {};
+
+// --help lists the subcommands; --version names the program; both exit 0.
+TEST_F(UsvidCliTest, HelpAndVersion) {
+  const auto help = RunUsvid("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_THAT(help.out, HasSubstr("import"));
+  EXPECT_THAT(help.out, HasSubstr("info"));
+  const auto sub = RunUsvid("import --help");
+  EXPECT_EQ(sub.exit_code, 0);
+  EXPECT_THAT(sub.out, HasSubstr("--map"));
+  const auto version = RunUsvid("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_THAT(version.out, StartsWith("usvid "));
+}
+
+// Usage errors exit 2 with one line naming the command or option (contract section 2).
+TEST_F(UsvidCliTest, UsageErrorsExitTwo) {
+  const auto none = RunUsvid("");
+  EXPECT_EQ(none.exit_code, 2);
+  const auto unknown = RunUsvid("fly");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("unknown command 'fly'"));
+  const auto format = RunUsvid("import --format xls --data a --out b");
+  EXPECT_EQ(format.exit_code, 2);
+  EXPECT_THAT(format.err, HasSubstr("--format"));
+  const auto missing = RunUsvid("info --data /nonexistent/x.csv");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_THAT(missing.err, HasSubstr("/nonexistent/x.csv"));
+}
+
+// A malformed data file: exit 2, "file:line:column: what" on stderr.
+TEST_F(UsvidCliTest, MalformedCsvIsLocated) {
+  const auto dir = FreshTempDir();
+  WriteText(dir / "bad.csv", "t,u\n0,1\n0.1,nan\n");
+  const auto r = RunUsvid("info --data " + (dir / "bad.csv").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr((dir / "bad.csv").string() + ":3:5: column 'u'"));
+}
+
+// A foreign CSV log imports with a map and passes the contract check; a bad log leaves no
+// output file behind.
+TEST_F(UsvidCliTest, ImportCsvThenInfo) {
+  const auto dir = FreshTempDir();
+  WriteText(dir / "log.csv", "time,heading_deg,speed_kn\n0,10,2\n0.5,11,2.1\n0.5,11,2.1\n1,12,2\n");
+  const auto out = (dir / "data.csv").string();
+  const auto r = RunUsvid("import --format csv --data " + (dir / "log.csv").string() +
+                          " --map t=time,psi=heading_deg:deg,U=speed_kn:knots --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("dropping 1 rows"));
+  const Dataset d = ReadDatasetCsv(out);
+  EXPECT_EQ(d.rows(), 3);
+  EXPECT_NEAR(d["U"](0), 2 * 0.514444, 1e-5);
+  EXPECT_EQ(RunUsvid("info --data " + out).exit_code, 0);
+
+  WriteText(dir / "bad.csv", "time,x\n0,1\n1,x\n");
+  const auto bad_out = (dir / "bad_out.csv").string();
+  const auto bad = RunUsvid("import --format csv --data " + (dir / "bad.csv").string() +
+                            " --map t=time,x=x --out " + bad_out);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("bad.csv:3:3"));
+  EXPECT_FALSE(fs::exists(bad_out));
+}
+
+// The KVLCC2 acceptance command of issue 2, run through the binary.
+TEST_F(UsvidCliTest, ImportMarinZigZag) {
+  const std::string path =
+      std::string(USVID_SHARED_DATA_DIR) + "/kvlcc2-marin/MARIN_FREE_KVLCC2_zz_20_m.dat";
+  if (!fs::exists(path)) GTEST_SKIP() << "shared data absent: " << path;
+  const auto dir = FreshTempDir();
+  const auto out = (dir / "k.csv").string();
+  const auto r = RunUsvid("import --format marin-dat --data " + path + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("repaired 3235 rows"));
+  const Dataset d = ReadDatasetCsv(out);  // strictly increasing t, or this throws
+  EXPECT_NEAR(d["u"](0), 8.1, 0.05);
+  EXPECT_LT(d["v"].cwiseAbs().maxCoeff(), 2.0);
+}
+
+}  // namespace
+}  // namespace usvid
