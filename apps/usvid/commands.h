@@ -8,5 +8,6 @@ namespace usvid {
 
 void AddImportCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
+void AddSimulateCommand(CLI::App& app);
 
 }  // namespace usvid

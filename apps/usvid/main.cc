@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   usvid::AddImportCommand(app);
   usvid::AddInfoCommand(app);
+  usvid::AddSimulateCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     const auto subcommands = app.get_subcommands({});
     if (std::none_of(subcommands.begin(), subcommands.end(),

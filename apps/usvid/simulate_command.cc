@@ -1,0 +1,164 @@
+// usvid simulate --vessel V --maneuver M [--effect NAME=VALUE ...] [--noise S] [--seed N]
+//                [--rates imu=50,gps=5,jet=10] --out F.csv          (writes F.truth.json too)
+// usvid simulate --vessel V --inputs IN.csv [--dt H] --out F.csv
+
+#include <iostream>
+#include <memory>
+
+#include "apps/usvid/commands.h"
+#include "core/atomic_file.h"
+#include "core/csv_dataset.h"
+#include "core/error.h"
+#include "core/json_file.h"
+#include "effects/effect_values.h"
+#include "maneuvers/maneuver_factory.h"
+#include "sensors/noise.h"
+#include "sensors/sample_rates.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+namespace {
+
+struct SimulateOptions {
+  std::string vessel;
+  std::string maneuver;
+  std::string inputs;
+  std::vector<std::string> effects;
+  double noise = 0.0;
+  uint64_t seed = 1;
+  std::vector<std::string> rates;
+  std::string params;
+  double duration = 0.0;
+  double dt = 0.01;
+  double rate_hz = 20.0;
+  std::string integrator = "rk4";
+  std::string out;
+};
+
+// F.csv -> F.truth.json
+std::string TruthPath(const std::string& out) {
+  const auto dot = out.rfind('.');
+  const auto slash = out.rfind('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (has_ext ? out.substr(0, dot) : out) + ".truth.json";
+}
+
+void RunSimulate(const SimulateOptions& o) {
+  if (o.maneuver.empty() == o.inputs.empty())
+    throw InputError("simulate: give exactly one of --maneuver and --inputs");
+  if (!(o.dt > 0) || !(o.rate_hz > 0))
+    throw InputError("--dt and --rate: must be positive");
+  const VesselSimulator& sim = FindVessel(o.vessel);
+  const VesselInfo& info = sim.Info();
+  const std::vector<Effect> effects = ParseEffects(o.effects, o.seed);
+  const EffectValues<double> values = ValuesOf(effects);
+  std::vector<double> params = info.default_params;
+  if (!o.params.empty()) {
+    const nlohmann::json j = ReadJsonFile(o.params);
+    try {
+      params = info.ParamsFrom(j.contains("parameters") ? j.at("parameters") : j);
+    } catch (const InputError& e) {
+      throw InputError(o.params + ": " + e.what());
+    }
+  }
+  RunOptions run;
+  run.dt = o.dt;
+  run.rate_hz = o.rate_hz;
+  run.integrator = o.integrator == "dopri" ? Integrator::kDormandPrince : Integrator::kRk4;
+
+  SimulationResult result;
+  nlohmann::json truth;
+  if (!o.maneuver.empty()) {
+    // Multi-rate sensors need an output grid at least as fast as the fastest sensor.
+    for (const std::string& item : o.rates) {
+      const auto eq = item.find('=');
+      if (eq != std::string::npos) run.rate_hz = std::max(run.rate_hz, std::atof(item.c_str() + eq + 1));
+    }
+    auto maneuver = MakeManeuver(o.maneuver, info.actuation, o.duration, o.seed);
+    std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "
+              << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
+    result = sim.RunManeuver(*maneuver, params, values, run);
+  } else {
+    const Dataset in = ReadDatasetCsv(o.inputs);
+    result = sim.RunInputs(in, params, values, run);
+    truth["inputs_file"] = o.inputs;
+  }
+  if (result.diverged)
+    throw InputError("simulate: the " + info.name + " simulation diverged at t = " +
+                     std::to_string(result.diverged_at_s) + " s (check --params and inputs)");
+
+  Dataset& data = result.data;
+  std::vector<std::string> measured = info.states;
+  measured.insert(measured.end(), info.derived.begin(), info.derived.end());
+  const std::vector<double> sds = AddGaussianNoise(data, measured, o.noise, o.seed);
+  const auto rates = ParseSampleRates(o.rates, data);
+  ApplySampleRates(data, rates);
+
+  nlohmann::json p = nlohmann::json::object();
+  for (size_t i = 0; i < params.size(); ++i) p[info.params[i]] = params[i];
+  nlohmann::json e = nlohmann::json::array();
+  for (const Effect& effect : effects) e.push_back(EffectToJson(effect));
+  nlohmann::json noise_sd = nlohmann::json::object();
+  for (size_t i = 0; i < measured.size(); ++i) noise_sd[measured[i]] = sds[i];
+  truth.update({{"vessel", info.name},
+                {"parameters", p},
+                {"effects", e},
+                {"seed", o.seed},
+                {"noise", {{"level", o.noise}, {"sd", noise_sd}}},
+                {"states", info.states},
+                {"derived", info.derived},
+                {"inputs", info.inputs},
+                {"dt", run.dt},
+                {"rate_hz", run.rate_hz},
+                {"integrator", o.integrator},
+                {"transport_delay_s", info.transport_delay_s},
+                {"sensor_rates_hz", rates},
+                {"duration_s", data.duration()},
+                {"run_in_s", result.run_in_s}});
+  if (!result.maneuver.is_null()) truth["maneuver"] = result.maneuver;
+
+  WriteDatasetCsv(o.out, data);
+  WriteJsonFile(TruthPath(o.out), truth);
+  std::cerr << "usvid simulate: wrote " << o.out << " (" << data.rows() << " rows, "
+            << data.duration() << " s) and " << TruthPath(o.out) << '\n';
+}
+
+}  // namespace
+
+void AddSimulateCommand(CLI::App& app) {
+  auto o = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "simulate", "Run a maneuver on a simulator, or drive it with recorded inputs");
+  std::string vessels;
+  for (const std::string& v : VesselNames()) vessels += (vessels.empty() ? "" : ", ") + v;
+  cmd->add_option("--vessel", o->vessel, "Simulator: " + vessels)->required();
+  cmd->add_option("--maneuver", o->maneuver,
+                  "zigzag[:A/B], turning[:A], stepgrid[:T/Y], random-steps[:HOLD_S], "
+                  "prbs[:CLOCK_S], multisine[:FMAX_HZ]");
+  cmd->add_option("--inputs", o->inputs,
+                  "Drive open-loop with the input columns of this CSV (zero-order hold); output "
+                  "at its time stamps, initial state from its first row");
+  cmd->add_option("--effect", o->effects,
+                  "NAME=VALUE, repeatable: input_delay, current (SPEED[:DIR_DEG]), actuator_lag, "
+                  "input_bias, sensor_bias, inertia, damping, saturation");
+  cmd->add_option("--noise", o->noise,
+                  "Gaussian noise on every measured channel, as a fraction of its standard "
+                  "deviation (0.01 = 1 %)");
+  cmd->add_option("--seed", o->seed, "Seed of noise, random maneuvers and current direction");
+  cmd->add_option("--rates", o->rates,
+                  "Multi-rate sensors, e.g. imu=50,gps=5,jet=10 (groups or channel names, Hz); "
+                  "other rows are written as empty cells")
+      ->delimiter(',');
+  cmd->add_option("--params", o->params,
+                  "JSON of parameter overrides (name: value), or a truth/model file's "
+                  "\"parameters\"");
+  cmd->add_option("--duration", o->duration, "Maneuver length [s] (0: the maneuver's default)");
+  cmd->add_option("--dt", o->dt, "Largest integration step [s]");
+  cmd->add_option("--rate", o->rate_hz, "Output and control rate [Hz] (maneuvers)");
+  cmd->add_option("--integrator", o->integrator, "rk4 (fixed step) or dopri (adaptive 5(4))")
+      ->check(CLI::IsMember({"rk4", "dopri"}));
+  cmd->add_option("--out", o->out, "Data CSV to write (and F.truth.json beside it)")->required();
+  cmd->callback([o] { RunSimulate(*o); });
+}
+
+}  // namespace usvid

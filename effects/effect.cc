@@ -1,0 +1,134 @@
+#include "effects/effect.h"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "core/error.h"
+#include "core/parse_number.h"
+
+namespace usvid {
+namespace {
+
+constexpr std::array<EffectInfo, 8> kCatalogue = {{
+    {EffectKind::kInputDelay, "input_delay", "delay_s",
+     "every input reaches the plant late by a constant time"},
+    {EffectKind::kCurrent, "current", "speed",
+     "constant irrotational ocean current; damping acts on the relative velocity"},
+    {EffectKind::kActuatorLag, "actuator_lag", "time_constant_s",
+     "first-order lag between commanded and applied input"},
+    {EffectKind::kInputBias, "input_bias", "bias",
+     "constant offset added to the yaw input (misaligned jets / nozzle zero)"},
+    {EffectKind::kSensorBias, "sensor_bias", "bias",
+     "constant offset on the measured yaw rate r (gyro bias)"},
+    {EffectKind::kInertia, "inertia", "scale", "mass and inertia matrix off by a common factor"},
+    {EffectKind::kDamping, "damping", "scale", "damping matrix off by a common factor"},
+    {EffectKind::kSaturation, "saturation", "fraction",
+     "each input clipped at +-fraction x its peak absolute command in the data"},
+}};
+
+std::string KnownNames() {
+  std::string names;
+  for (const EffectInfo& e : kCatalogue) names += (names.empty() ? "" : ", ") + std::string(e.name);
+  return names;
+}
+
+// Checks the main value against the effect's rule; returns the rule broken, or "".
+std::string Violation(EffectKind kind, double value) {
+  switch (kind) {
+    case EffectKind::kInputDelay:
+      return value >= 0.0 && value <= 10.0 ? "" : "delay_s must be in [0, 10] s";
+    case EffectKind::kCurrent:
+      return value >= 0.0 && value <= 5.0 ? "" : "current speed must be in [0, 5] m/s";
+    case EffectKind::kActuatorLag:
+      return value > 0.0 && value <= 60.0 ? "" : "time_constant_s must be in (0, 60] s";
+    case EffectKind::kInputBias:
+    case EffectKind::kSensorBias:
+      return "";
+    case EffectKind::kInertia:
+    case EffectKind::kDamping:
+      return value > 0.0 && value <= 100.0 ? "" : "scale must be in (0, 100]";
+    case EffectKind::kSaturation:
+      return value > 0.0 && value <= 1.0 ? "" : "fraction must be in (0, 1]";
+  }
+  return "";
+}
+
+double ParseValue(const std::string& text, const std::string& where) {
+  const ParsedNumber p = ParseNumber(text);
+  if (p.status != NumberStatus::kOk) throw InputError(where + DescribeNumberStatus(p.status, text));
+  return p.value;
+}
+
+}  // namespace
+
+const std::array<EffectInfo, 8>& EffectCatalogue() { return kCatalogue; }
+
+const EffectInfo& InfoOf(EffectKind kind) { return kCatalogue[static_cast<size_t>(kind)]; }
+
+Effect ParseEffect(const std::string& spec, uint64_t seed) {
+  const std::string where = "--effect '" + spec + "': ";
+  const auto eq = spec.find('=');
+  const std::string name = spec.substr(0, eq);
+  const EffectInfo* info = nullptr;
+  for (const EffectInfo& e : kCatalogue)
+    if (e.name == name) info = &e;
+  if (info == nullptr)
+    throw InputError(where + "unknown effect '" + name + "' (known: " + KnownNames() + ")");
+  if (eq == std::string::npos) throw InputError(where + "expected NAME=VALUE");
+  std::string value_text = spec.substr(eq + 1);
+  std::string direction_text;
+  if (info->kind == EffectKind::kCurrent) {
+    const auto colon = value_text.find(':');
+    if (colon != std::string::npos) {
+      direction_text = value_text.substr(colon + 1);
+      value_text = value_text.substr(0, colon);
+    }
+  }
+  const double value = ParseValue(value_text, where);
+  if (const std::string rule = Violation(info->kind, value); !rule.empty())
+    throw InputError(where + rule);
+
+  Effect effect{info->kind, {}};
+  if (info->kind == EffectKind::kCurrent) {
+    double direction = 0.0;
+    if (!direction_text.empty()) {
+      direction = ParseValue(direction_text, where) * std::numbers::pi / 180.0;
+    } else {
+      std::mt19937_64 rng(seed ^ 0xC0FFEEull);
+      direction = std::uniform_real_distribution<double>(0.0, 2 * std::numbers::pi)(rng);
+    }
+    effect.parameters["current_north"] = value * std::cos(direction);
+    effect.parameters["current_east"] = value * std::sin(direction);
+  } else {
+    effect.parameters[std::string(info->main_parameter)] = value;
+  }
+  return effect;
+}
+
+std::vector<Effect> ParseEffects(const std::vector<std::string>& specs, uint64_t seed) {
+  std::vector<Effect> effects;
+  for (const std::string& spec : specs) {
+    Effect e = ParseEffect(spec, seed);
+    for (const Effect& other : effects)
+      if (other.kind == e.kind) throw InputError("--effect '" + spec + "': given twice");
+    effects.push_back(std::move(e));
+  }
+  return effects;
+}
+
+nlohmann::json EffectToJson(const Effect& effect) {
+  return {{"effect", effect.name()}, {"parameters", effect.parameters}};
+}
+
+Effect EffectFromJson(const nlohmann::json& value) {
+  const std::string name = value.at("effect").get<std::string>();
+  for (const EffectInfo& e : kCatalogue) {
+    if (e.name == name) {
+      return {e.kind, value.at("parameters").get<std::map<std::string, double>>()};
+    }
+  }
+  throw InputError("unknown effect '" + name + "' (known: " + KnownNames() + ")");
+}
+
+}  // namespace usvid

@@ -1,0 +1,63 @@
+// The catalogue of what a simulation can get wrong (contract section 3), shared by
+// `usvid simulate --effect NAME=VALUE` and `usvid diagnose`:
+//   input_delay   every input reaches the plant late by delay_s [s]
+//   current       constant irrotational current current_north, current_east [m/s]; damping
+//                 acts on the velocity relative to the water
+//   actuator_lag  first-order lag, time_constant_s [s], between commanded and applied input
+//   input_bias    constant offset `bias` [input units] added to the yaw input
+//   sensor_bias   constant offset `bias` [rad/s] on the measured yaw rate r
+//   inertia       mass and inertia parameters times `scale`
+//   damping       damping parameters times `scale`
+//   saturation    each input clipped at +-fraction x its peak absolute command
+// ParseEffect throws InputError naming the --effect item and the rule it breaks.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace usvid {
+
+enum class EffectKind {
+  kInputDelay,
+  kCurrent,
+  kActuatorLag,
+  kInputBias,
+  kSensorBias,
+  kInertia,
+  kDamping,
+  kSaturation
+};
+
+struct EffectInfo {
+  EffectKind kind;
+  std::string_view name;
+  std::string_view main_parameter;  // what NAME=VALUE sets
+  std::string_view meaning;
+};
+
+const std::array<EffectInfo, 8>& EffectCatalogue();
+const EffectInfo& InfoOf(EffectKind kind);
+
+struct Effect {
+  EffectKind kind;
+  std::map<std::string, double> parameters;  // names of contract section 3
+
+  std::string_view name() const { return InfoOf(kind).name; }
+  double at(const std::string& parameter) const { return parameters.at(parameter); }
+};
+
+// "NAME=VALUE" with the main parameter; `current=SPEED` takes a direction drawn from `seed`
+// (uniform over the compass), `current=SPEED:DIRECTION_DEG` the direction the water flows to,
+// clockwise from north.
+Effect ParseEffect(const std::string& spec, uint64_t seed);
+std::vector<Effect> ParseEffects(const std::vector<std::string>& specs, uint64_t seed);
+
+nlohmann::json EffectToJson(const Effect& effect);
+Effect EffectFromJson(const nlohmann::json& value);
+
+}  // namespace usvid

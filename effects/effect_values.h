@@ -1,0 +1,41 @@
+// The catalogue's effects as numbers of scalar type T, so that their sizes can be fitted
+// through a differentiable rollout. Neutral values (no effect) are the defaults. The delay is a
+// double: it moves the input signal in time and is found by a 1-D search, not by derivatives.
+#pragma once
+
+#include <array>
+#include <limits>
+#include <vector>
+
+#include "effects/effect.h"
+
+namespace usvid {
+
+template <typename T>
+struct EffectValues {
+  double delay_s = 0.0;
+  T current_north = T(0);
+  T current_east = T(0);
+  T lag_time_constant_s = T(0);  // 0: applied input = commanded input
+  T input_bias = T(0);           // added to the vessel's yaw input
+  T sensor_bias = T(0);          // added to the measured rate channel
+  T inertia_scale = T(1);
+  T damping_scale = T(1);
+  double saturation_fraction = 0.0;  // 0: no clipping
+};
+
+// The values of a list of effects (each kind at most once).
+EffectValues<double> ValuesOf(const std::vector<Effect>& effects);
+
+// +-limit per input for `saturation`: fraction x the peak |command| of each input channel
+// (infinite when there is no saturation or the channel never moves).
+template <int N>
+std::array<double, N> SaturationLimits(double fraction, const std::array<double, N>& peak) {
+  std::array<double, N> limit;
+  for (int i = 0; i < N; ++i)
+    limit[i] = fraction > 0.0 && peak[i] > 0.0 ? fraction * peak[i]
+                                               : std::numeric_limits<double>::infinity();
+  return limit;
+}
+
+}  // namespace usvid

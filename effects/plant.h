@@ -1,0 +1,76 @@
+// Any vessel V wrapped with the catalogue's effects: one implementation, used by simulation and
+// by diagnosis. The plant state is V's state followed by one applied-input state per input
+// (the actuator lag's memory). With commanded input u_c (already delayed by the caller):
+//   u_s = clamp(u_c, -limit, +limit)                        (saturation)
+//   u_a = x_lag,  x_lag' = (u_s - x_lag) / time_constant     (actuator_lag; else u_a = u_s)
+//   u_a[yaw] += input_bias                                   (input_bias)
+//   x' = V::Derivative(x, u_a, p_eff, {current})             (current)
+// where p_eff is p with inertia and damping parameters scaled (inertia, damping). The measured
+// rate channel carries sensor_bias (MeasuredRate); input_delay shifts u_c in time (caller).
+#pragma once
+
+#include <array>
+
+#include "effects/effect_values.h"
+#include "simulators/scalar.h"
+#include "simulators/vessel.h"
+
+namespace usvid {
+
+template <Vessel V>
+struct Plant {
+  static constexpr int kStates = V::kStates + V::kInputs;
+
+  template <typename T>
+  static void ScaleParams(const T* p, const EffectValues<T>& e, T* p_eff) {
+    for (int i = 0; i < V::kParams; ++i) {
+      switch (V::kParamGroups[i]) {
+        case ParamGroup::kInertia:
+          p_eff[i] = p[i] * e.inertia_scale;
+          break;
+        case ParamGroup::kDamping:
+          p_eff[i] = p[i] * e.damping_scale;
+          break;
+        case ParamGroup::kOther:
+          p_eff[i] = p[i];
+          break;
+      }
+    }
+  }
+
+  // x: plant state; u_cmd: commanded (delayed) input; p_eff: from ScaleParams.
+  template <typename T>
+  static void Derivative(const T* x, const T* u_cmd, const T* p_eff, const EffectValues<T>& e,
+                         const std::array<double, V::kInputs>& limit, T* dx) {
+    std::array<T, V::kInputs> u_sat;
+    for (int i = 0; i < V::kInputs; ++i) {
+      u_sat[i] = u_cmd[i];
+      if (ValueOf(u_sat[i]) > limit[i]) u_sat[i] = T(limit[i]);
+      if (ValueOf(u_sat[i]) < -limit[i]) u_sat[i] = T(-limit[i]);
+    }
+    const T* lag = x + V::kStates;
+    T* dlag = dx + V::kStates;
+    std::array<T, V::kInputs> u_applied;
+    const bool lagged = ValueOf(e.lag_time_constant_s) > 0.0;
+    for (int i = 0; i < V::kInputs; ++i) {
+      if (lagged) {
+        u_applied[i] = lag[i];
+        dlag[i] = (u_sat[i] - lag[i]) / e.lag_time_constant_s;
+      } else {
+        u_applied[i] = u_sat[i];
+        dlag[i] = T(0);
+      }
+    }
+    u_applied[V::kYawInput] += e.input_bias;
+    const Environment<T> env{e.current_north, e.current_east};
+    V::template Derivative<T>(x, u_applied.data(), p_eff, env, dx);
+  }
+
+  // The state a plant starts in: the vessel state, and the lag memory at the first command.
+  template <typename T>
+  static void InitialLagState(const T* u_cmd, T* x) {
+    for (int i = 0; i < V::kInputs; ++i) x[V::kStates + i] = u_cmd[i];
+  }
+};
+
+}  // namespace usvid

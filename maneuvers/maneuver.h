@@ -1,0 +1,67 @@
+// A maneuver decides the commanded inputs over time, open-loop or closed-loop on the measured
+// state. It is called once per control period, in time order, and its command is held until the
+// next call. Maneuvers know a vessel only through its Actuation: which input steers, which
+// drives, their ranges, and where heading, speed and rate sit in the state.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace usvid {
+
+enum class InputRole {
+  kThrust,  // drives forward: held, stepped or varied by the maneuver
+  kYaw,     // steers: the maneuver's main channel
+  kSide,    // a free extra input (sway force): zero in classic maneuvers, excited in random ones
+  kFixed,   // held at its neutral value (reversing bucket)
+};
+
+struct Actuation {
+  std::vector<std::string> input_names;
+  std::vector<InputRole> roles;
+  std::vector<double> input_min, input_max;
+  std::vector<double> neutral;  // the inputs at rest
+  int yaw_input = -1;
+  int thrust_input = -1;        // -1: the vessel has no thrust input (msd)
+  int heading_state = -1;       // psi or chi; -1: no heading (msd)
+  int rate_state = -1;
+  int north_state = -1, east_state = -1;  // positions, -1: none
+  int speed_state = -1;         // U, or surge u (with sway v next) when speed_is_surge
+  bool speed_is_surge = false;
+  // Full yaw command: for an angle input (nozzle, rudder) the command of `yaw_full_deg`
+  // degrees is that angle in radians; for a moment input, yaw_full_deg maps to yaw_full.
+  bool yaw_is_angle = false;
+  double yaw_full = 1.0;
+  double yaw_full_deg = 35.0;
+  double thrust_cruise = 0.0;   // the thrust command of the default cruise
+
+  int inputs() const { return static_cast<int>(input_names.size()); }
+  // The yaw command standing for a rudder angle of `deg` degrees, within the input's range.
+  double YawCommand(double deg) const;
+  // Speed over ground from a state (U, or the norm of u and v); 0 without a speed state.
+  double Speed(std::span<const double> state) const;
+};
+
+// Classic maneuvers (zig-zag, turning) start with this long a straight approach at cruise.
+inline constexpr double kLeadInS = 5.0;
+
+class Maneuver {
+ public:
+  virtual ~Maneuver() = default;
+  virtual std::string Spec() const = 0;
+  // Seconds the maneuver runs (after the run-in to steady state).
+  virtual double Duration() const = 0;
+  // The inputs the vessel is brought to steady state with before t = 0.
+  virtual std::vector<double> InitialCommand() const = 0;
+  // The command from t until the next call, given the measured state.
+  virtual void Command(double t, std::span<const double> state, std::span<double> u) = 0;
+  // Whether the maneuver has finished early (closed-loop grids end when done).
+  virtual bool Done() const { return false; }
+  // What the maneuver measured of the run, for F.truth.json (e.g. zig-zag overshoots).
+  virtual nlohmann::json Report() const { return nlohmann::json::object(); }
+};
+
+}  // namespace usvid

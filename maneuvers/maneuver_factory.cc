@@ -1,0 +1,83 @@
+#include "maneuvers/maneuver_factory.h"
+
+#include "core/error.h"
+#include "core/parse_number.h"
+#include "maneuvers/input_schedule.h"
+#include "maneuvers/step_grid.h"
+#include "maneuvers/turning.h"
+#include "maneuvers/zigzag.h"
+
+namespace usvid {
+namespace {
+
+constexpr const char* kKnown = "zigzag:A/B, turning:A, stepgrid:T/Y, random-steps, prbs, multisine";
+
+// Splits "a/b" into numbers; `count` of them are expected.
+std::vector<double> Numbers(const std::string& args, size_t count, const std::string& spec) {
+  std::vector<double> out;
+  size_t start = 0;
+  while (true) {
+    const auto slash = args.find('/', start);
+    const std::string item = args.substr(start, slash == std::string::npos ? slash : slash - start);
+    const ParsedNumber p = ParseNumber(item);
+    if (p.status != NumberStatus::kOk)
+      throw InputError("--maneuver '" + spec + "': " + DescribeNumberStatus(p.status, item));
+    out.push_back(p.value);
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  if (out.size() != count)
+    throw InputError("--maneuver '" + spec + "': expected " + std::to_string(count) +
+                     " number(s) after ':'");
+  return out;
+}
+
+double Positive(double value, const std::string& spec) {
+  if (!(value > 0)) throw InputError("--maneuver '" + spec + "': the value must be positive");
+  return value;
+}
+
+}  // namespace
+
+std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation& act,
+                                       double duration_s, uint64_t seed) {
+  if (duration_s < 0) throw InputError("--duration: must not be negative");
+  const auto colon = spec.find(':');
+  const std::string name = spec.substr(0, colon);
+  const bool has_args = colon != std::string::npos;
+  const std::string args = has_args ? spec.substr(colon + 1) : "";
+  auto duration = [&](double fallback) { return duration_s > 0 ? duration_s : fallback; };
+
+  if (name == "zigzag") {
+    const auto ab = has_args ? Numbers(args, 2, spec) : std::vector<double>{20, 20};
+    return std::make_unique<ZigZag>(act, ab[0], ab[1], duration(300));
+  }
+  if (name == "turning") {
+    const double a = has_args ? Numbers(args, 1, spec)[0] : 35.0;
+    return std::make_unique<Turning>(act, a, duration(300));
+  }
+  if (name == "stepgrid") {
+    StepGridOptions opt;
+    if (has_args) {
+      const auto ty = Numbers(args, 2, spec);
+      opt.thrust_levels = static_cast<int>(ty[0]);
+      opt.yaw_levels = static_cast<int>(ty[1]);
+    }
+    return std::make_unique<StepGrid>(act, opt, duration(3600));
+  }
+  if (name == "random-steps") {
+    const double hold = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 6.0;
+    return MakeRandomSteps(act, hold, duration(600), seed);
+  }
+  if (name == "prbs") {
+    const double clock = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 4.0;
+    return MakePrbs(act, clock, duration(600), seed);
+  }
+  if (name == "multisine") {
+    const double f_max = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 0.2;
+    return MakeMultisine(act, f_max, duration(600), seed);
+  }
+  throw InputError("--maneuver '" + spec + "': unknown maneuver (known: " + kKnown + ")");
+}
+
+}  // namespace usvid

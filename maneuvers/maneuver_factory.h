@@ -1,0 +1,19 @@
+// Maneuvers by name (contract section 2): zigzag[:A/B] (default 20/20), turning[:A] (35),
+// stepgrid[:T/Y] (4 thrust levels, 3 yaw levels a side), random-steps[:HOLD_S] (6 s),
+// prbs[:CLOCK_S] (4 s), multisine[:FMAX_HZ] (0.2 Hz). duration_s = 0 takes the maneuver's
+// default: 300 s for zig-zag and turning, 600 s for the random ones, up to 3600 s for the grid
+// (it ends when the grid is done). Throws InputError naming the spec and what is wrong.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "maneuvers/maneuver.h"
+
+namespace usvid {
+
+std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation& act,
+                                       double duration_s, uint64_t seed);
+
+}  // namespace usvid

@@ -1,0 +1,35 @@
+// Kempf zig-zag A/B (ITTC): after a straight approach of kLeadInS, the yaw command goes to +A; when the heading has turned
+// B degrees from the initial heading it switches to -A, when it reaches -B back to +A, and so
+// on, closed-loop on the measured heading. Thrust is held at cruise. For a moment-driven vessel
+// the yaw command is the moment standing for A degrees (Actuation::YawCommand).
+// Report: the first and second overshoot angles [deg] (how far the heading goes beyond B after
+// the first and second switch), the switch times, and the heading rate at each switch.
+#pragma once
+
+#include "maneuvers/maneuver.h"
+
+namespace usvid {
+
+class ZigZag : public Maneuver {
+ public:
+  // Throws InputError when the vessel has no heading.
+  ZigZag(const Actuation& act, double rudder_deg, double heading_deg, double duration_s);
+
+  std::string Spec() const override;
+  double Duration() const override { return duration_s_; }
+  std::vector<double> InitialCommand() const override;
+  void Command(double t, std::span<const double> state, std::span<double> u) override;
+  nlohmann::json Report() const override;
+
+ private:
+  Actuation act_;
+  double rudder_deg_, heading_deg_, duration_s_;
+  double psi0_ = 0.0;
+  bool started_ = false;
+  int sign_ = 1;  // current yaw command direction
+  std::vector<double> switch_times_;
+  // Largest excursion beyond the threshold after each switch [rad], sign-corrected.
+  std::vector<double> overshoot_;
+};
+
+}  // namespace usvid

@@ -1,0 +1,48 @@
+// A commanded input signal under zero-order hold: samples (t_k, u_k) appended in time order;
+// the command in force at t is the last sample at or before t (the first one before t_0).
+// Lookups that move forward in time are O(1) amortised.
+#pragma once
+
+#include <algorithm>
+#include <span>
+#include <vector>
+
+namespace usvid {
+
+class InputTrack {
+ public:
+  explicit InputTrack(int inputs) : inputs_(inputs) {}
+
+  int inputs() const { return inputs_; }
+  size_t size() const { return times_.size(); }
+  double time(size_t k) const { return times_[k]; }
+
+  void Append(double t, std::span<const double> u) {
+    times_.push_back(t);
+    values_.insert(values_.end(), u.begin(), u.begin() + inputs_);
+  }
+
+  // Pointer to the `inputs()` values in force at t; the track must not be empty.
+  const double* At(double t) const {
+    if (hint_ >= times_.size() || times_[hint_] > t) hint_ = 0;
+    while (hint_ + 1 < times_.size() && times_[hint_ + 1] <= t) ++hint_;
+    return values_.data() + hint_ * inputs_;
+  }
+
+  // Largest |u_i| over the track, per input (the peak command).
+  std::vector<double> PeakAbs() const {
+    std::vector<double> peak(inputs_, 0.0);
+    for (size_t k = 0; k < times_.size(); ++k)
+      for (int i = 0; i < inputs_; ++i)
+        peak[i] = std::max(peak[i], std::abs(values_[k * inputs_ + i]));
+    return peak;
+  }
+
+ private:
+  int inputs_;
+  std::vector<double> times_;
+  std::vector<double> values_;
+  mutable size_t hint_ = 0;
+};
+
+}  // namespace usvid

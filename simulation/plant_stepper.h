@@ -1,0 +1,50 @@
+// One integration step of a vessel with effects under a held input, by fixed-step RK4 or by
+// adaptive Dormand-Prince over the same span. Shared by the open- and closed-loop runners.
+#pragma once
+
+#include <array>
+
+#include "effects/plant.h"
+#include "simulators/dormand_prince.h"
+#include "simulators/rk4.h"
+
+namespace usvid {
+
+enum class Integrator { kRk4, kDormandPrince };
+
+template <Vessel V, typename T>
+struct PlantStepper {
+  using State = StateVector<T, Plant<V>::kStates>;
+
+  const T* params_eff;  // after Plant<V>::ScaleParams
+  const EffectValues<T>* effects;
+  std::array<double, V::kInputs> limits;
+  Integrator integrator = Integrator::kRk4;
+  AdaptiveOptions adaptive;
+
+  // Advances x by h with the commanded input u held; false if the adaptive step failed.
+  bool Step(const T* u, double h, State& x) const {
+    auto f = [&](const T* xs, T* dx) {
+      Plant<V>::template Derivative<T>(xs, u, params_eff, *effects, limits, dx);
+    };
+    if (integrator == Integrator::kRk4) {
+      Rk4Step<T, Plant<V>::kStates>(f, h, x);
+      return true;
+    }
+    AdaptiveOptions opt = adaptive;
+    opt.initial_step = std::min(opt.initial_step, h);
+    return DormandPrinceIntegrate<T, Plant<V>::kStates>(f, h, x, opt).ok;
+  }
+};
+
+// Total input delay: the vessel's own transport delay (if it has one) plus the effect's.
+template <Vessel V>
+double TotalDelay(double effect_delay_s) {
+  if constexpr (requires { V::kTransportDelay; }) {
+    return V::kTransportDelay + effect_delay_s;
+  } else {
+    return effect_delay_s;
+  }
+}
+
+}  // namespace usvid

@@ -1,0 +1,149 @@
+// VesselSimulator for a compile-time vessel V: the one place where the runtime interface meets
+// the templated dynamics.
+#pragma once
+
+#include <cmath>
+
+#include "core/error.h"
+#include "simulation/closed_loop.h"
+#include "simulation/open_loop.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+
+template <Vessel V>
+class TypedVesselSimulator : public VesselSimulator {
+ public:
+  explicit TypedVesselSimulator(VesselInfo info) : info_(std::move(info)) {}
+  const VesselInfo& Info() const override { return info_; }
+
+  SimulationResult RunManeuver(Maneuver& maneuver, const std::vector<double>& params,
+                               const EffectValues<double>& effects,
+                               const RunOptions& options) const override {
+    const auto p = ToArray<V::kParams>(params);
+    const KinematicStates kinematic{info_.StateIndex("north"), info_.StateIndex("east"),
+                                    info_.actuation.heading_state};
+    std::array<double, V::kInputs> limits = NoLimits();
+    if (effects.saturation_fraction > 0.0) {
+      // The peak command comes from the same maneuver run without clipping.
+      EffectValues<double> free = effects;
+      free.saturation_fraction = 0.0;
+      const ClosedLoopRun probe = RunClosedLoop<V>(maneuver, p, free, limits, kinematic, options);
+      limits = SaturationLimits<V::kInputs>(effects.saturation_fraction,
+                                            ToArray<V::kInputs>(probe.commands.PeakAbs()));
+    }
+    const ClosedLoopRun run = RunClosedLoop<V>(maneuver, p, effects, limits, kinematic, options);
+    SimulationResult result;
+    result.run_in_s = run.run_in_s;
+    result.diverged = run.diverged;
+    result.diverged_at_s = run.diverged ? run.times.back() : 0.0;
+    result.maneuver = {{"spec", maneuver.Spec()}, {"report", maneuver.Report()}};
+    result.data = MakeDataset(run.times, run.states, V::kStates, run.commands, effects);
+    return result;
+  }
+
+  SimulationResult RunInputs(const Dataset& data, const std::vector<double>& params,
+                             const EffectValues<double>& effects,
+                             const RunOptions& options) const override {
+    InputTrack track(V::kInputs);
+    std::vector<const Channel*> channels;
+    for (const std::string& name : info_.inputs) {
+      if (!data.Has(name)) {
+        const auto source = data.metadata().find("source");
+        const std::string where = source != data.metadata().end() ? source->second + ": " : "";
+        throw InputError(where + "no input column '" + name + "' for vessel " + info_.name);
+      }
+      channels.push_back(&data.Get(name));
+    }
+    std::vector<double> u(V::kInputs, 0.0);
+    for (int i = 0; i < V::kInputs; ++i) {
+      const Channel& c = *channels[i];
+      for (Eigen::Index k = 0; k < data.rows(); ++k)
+        if (c.sampled(k)) {
+          u[i] = c.values(k);
+          break;
+        }
+    }
+    for (Eigen::Index k = 0; k < data.rows(); ++k) {
+      for (int i = 0; i < V::kInputs; ++i)
+        if (channels[i]->sampled(k)) u[i] = channels[i]->values(k);
+      track.Append(data.t()(k), u);
+    }
+    std::array<double, Plant<V>::kStates> x0{};
+    for (int i = 0; i < V::kStates; ++i) {
+      const Channel* c = data.Find(info_.states[i]);
+      if (c != nullptr && c->sampled(0)) x0[i] = c->values(0);
+    }
+    Plant<V>::InitialLagState(track.At(data.t()(0)), x0.data());
+    std::array<double, V::kInputs> limits = NoLimits();
+    if (effects.saturation_fraction > 0.0)
+      limits = SaturationLimits<V::kInputs>(effects.saturation_fraction,
+                                            ToArray<V::kInputs>(track.PeakAbs()));
+    OpenLoopSetup setup;
+    setup.inputs = &track;
+    setup.times.assign(data.t().data(), data.t().data() + data.rows());
+    setup.max_step = options.dt;
+    setup.integrator = options.integrator;
+    std::vector<double> out(setup.times.size() * Plant<V>::kStates);
+    const size_t rows = RolloutOpenLoop<V, double>(setup, x0.data(), ToArray<V::kParams>(params).data(),
+                                                   effects, limits, out.data());
+    SimulationResult result;
+    result.diverged = rows < setup.times.size();
+    result.diverged_at_s = result.diverged ? setup.times[rows] : 0.0;
+    std::vector<double> states;
+    for (size_t k = 0; k < rows; ++k)
+      for (int i = 0; i < V::kStates; ++i) states.push_back(out[k * Plant<V>::kStates + i]);
+    setup.times.resize(rows);
+    result.data = MakeDataset(setup.times, states, V::kStates, track, effects);
+    return result;
+  }
+
+ private:
+  template <int M>
+  static std::array<double, M> ToArray(const std::vector<double>& v) {
+    if (static_cast<int>(v.size()) != M) std::abort();
+    std::array<double, M> a{};
+    std::copy(v.begin(), v.end(), a.begin());
+    return a;
+  }
+
+  static std::array<double, V::kInputs> NoLimits() {
+    std::array<double, V::kInputs> limits;
+    limits.fill(INFINITY);
+    return limits;
+  }
+
+  // t, states (rate channel with the sensor bias), derived U and chi, inputs.
+  Dataset MakeDataset(const std::vector<double>& times, const std::vector<double>& states,
+                      int stride, const InputTrack& commands,
+                      const EffectValues<double>& effects) const {
+    const auto n = static_cast<Eigen::Index>(times.size());
+    Dataset d(Eigen::Map<const Eigen::VectorXd>(times.data(), n));
+    Eigen::MatrixXd x(n, V::kStates);
+    for (Eigen::Index k = 0; k < n; ++k)
+      for (int i = 0; i < V::kStates; ++i) x(k, i) = states[k * stride + i];
+    x.col(V::kRateState).array() += effects.sensor_bias;
+    for (int i = 0; i < V::kStates; ++i) d.Set(info_.states[i], x.col(i));
+    if constexpr (requires { V::kDerivesSpeedAndCourse; }) {
+      const Eigen::VectorXd u = x.col(info_.StateIndex("u")), v = x.col(info_.StateIndex("v"));
+      const Eigen::VectorXd psi = x.col(info_.StateIndex("psi"));
+      Eigen::VectorXd speed(n), course(n);
+      for (Eigen::Index k = 0; k < n; ++k) {
+        speed(k) = std::hypot(u(k), v(k));
+        course(k) = psi(k) + std::atan2(v(k), u(k));
+      }
+      d.Set("U", speed);
+      d.Set("chi", course);
+    }
+    for (int i = 0; i < V::kInputs; ++i) {
+      Eigen::VectorXd c(n);
+      for (Eigen::Index k = 0; k < n; ++k) c(k) = commands.At(times[k])[i];
+      d.Set(info_.inputs[i], c);
+    }
+    return d;
+  }
+
+  VesselInfo info_;
+};
+
+}  // namespace usvid

@@ -1,0 +1,123 @@
+// The vessels usvid knows: one entry a vessel, with what maneuvers need to drive it.
+
+#include <algorithm>
+#include <map>
+
+#include "core/error.h"
+#include "simulation/typed_vessel_simulator.h"
+#include "simulators/eb2dof.h"
+#include "simulators/msd.h"
+#include "simulators/odin3dof.h"
+
+namespace usvid {
+namespace {
+
+constexpr double kNozzleMax = 27.0 * 3.14159265358979323846 / 180.0;
+
+// What a maneuver needs beyond the vessel's own constants: how its yaw input maps to a rudder
+// angle, and the thrust of a cruise.
+Actuation Drive(bool yaw_is_angle, double yaw_full, double yaw_full_deg, double thrust_cruise,
+                std::vector<double> neutral = {}) {
+  Actuation a;
+  a.yaw_is_angle = yaw_is_angle;
+  a.yaw_full = yaw_full;
+  a.yaw_full_deg = yaw_full_deg;
+  a.thrust_cruise = thrust_cruise;
+  a.neutral = std::move(neutral);
+  return a;
+}
+
+template <Vessel V>
+VesselInfo InfoFor(std::vector<InputRole> roles, const Actuation& extra) {
+  VesselInfo info;
+  info.name = std::string(V::kName);
+  for (auto s : V::kStateNames) info.states.emplace_back(s);
+  for (auto s : V::kInputNames) info.inputs.emplace_back(s);
+  for (auto s : V::kParamNames) info.params.emplace_back(s);
+  info.default_params.assign(V::kDefaultParams.begin(), V::kDefaultParams.end());
+  info.groups.assign(V::kParamGroups.begin(), V::kParamGroups.end());
+  if constexpr (requires { V::kDerivesSpeedAndCourse; }) info.derived = {"U", "chi"};
+  if constexpr (requires { V::kTransportDelay; }) info.transport_delay_s = V::kTransportDelay;
+
+  Actuation& a = info.actuation;
+  a = extra;
+  a.input_names = info.inputs;
+  a.roles = std::move(roles);
+  a.input_min.assign(V::kInputMin.begin(), V::kInputMin.end());
+  a.input_max.assign(V::kInputMax.begin(), V::kInputMax.end());
+  if (a.neutral.empty()) a.neutral.assign(V::kInputs, 0.0);
+  a.yaw_input = V::kYawInput;
+  a.thrust_input = V::kThrustInput;
+  a.rate_state = V::kRateState;
+  a.heading_state = V::kHeadingState;
+  a.north_state = info.StateIndex("north");
+  a.east_state = info.StateIndex("east");
+  if (info.StateIndex("U") >= 0) {
+    a.speed_state = info.StateIndex("U");
+  } else if (info.StateIndex("u") >= 0 && info.StateIndex("v") == info.StateIndex("u") + 1) {
+    a.speed_state = info.StateIndex("u");
+    a.speed_is_surge = true;
+  }
+  return info;
+}
+
+template <Vessel V>
+std::unique_ptr<VesselSimulator> Make(std::vector<InputRole> roles, const Actuation& extra) {
+  return std::make_unique<TypedVesselSimulator<V>>(InfoFor<V>(std::move(roles), extra));
+}
+
+const std::map<std::string, std::unique_ptr<VesselSimulator>>& Registry() {
+  static const auto* registry = [] {
+    auto* r = new std::map<std::string, std::unique_ptr<VesselSimulator>>;
+    using R = InputRole;
+    // msd: the force is the channel every maneuver moves (+-10 N: x within about +-5 m).
+    (*r)["msd"] = Make<Msd>({R::kYaw}, Drive(false, 10.0, 35.0, 0.0));
+    // odin3dof: cruise tau_x = 16 kN (about 8 m/s); a yaw moment of 20 kN m stands for 35 deg.
+    (*r)["odin3dof"] =
+        Make<Odin3Dof>({R::kThrust, R::kSide, R::kYaw}, Drive(false, 20000.0, 35.0, 16000.0));
+    // eb2dof: nozzle angle in radians, +-27 deg; cruise at half throttle.
+    (*r)["eb2dof"] = Make<Eb2Dof>({R::kThrust, R::kYaw}, Drive(true, kNozzleMax, 27.0, 0.5));
+    return r;
+  }();
+  return *registry;
+}
+
+}  // namespace
+
+int VesselInfo::StateIndex(const std::string& state) const {
+  const auto it = std::find(states.begin(), states.end(), state);
+  return it == states.end() ? -1 : static_cast<int>(it - states.begin());
+}
+
+std::vector<double> VesselInfo::ParamsFrom(const nlohmann::json& overrides) const {
+  std::vector<double> p = default_params;
+  if (overrides.is_null()) return p;
+  if (!overrides.is_object()) throw InputError("parameters: expected an object of name: value");
+  for (const auto& [key, value] : overrides.items()) {
+    const auto it = std::find(params.begin(), params.end(), key);
+    if (it == params.end())
+      throw InputError("parameters: vessel " + name + " has no parameter '" + key + "'");
+    if (!value.is_number()) throw InputError("parameters: '" + key + "' is not a number");
+    p[it - params.begin()] = value.get<double>();
+  }
+  return p;
+}
+
+const VesselSimulator& FindVessel(const std::string& name) {
+  const auto& r = Registry();
+  const auto it = r.find(name);
+  if (it == r.end()) {
+    std::string known;
+    for (const auto& [n, _] : r) known += (known.empty() ? "" : ", ") + n;
+    throw InputError("--vessel '" + name + "': unknown vessel (known: " + known + ")");
+  }
+  return *it->second;
+}
+
+std::vector<std::string> VesselNames() {
+  std::vector<std::string> names;
+  for (const auto& [n, _] : Registry()) names.push_back(n);
+  return names;
+}
+
+}  // namespace usvid

@@ -1,0 +1,64 @@
+// A vessel behind a runtime interface, so that the command line and the harness can pick one
+// by name: its channel and parameter names, and runs of a maneuver or of recorded inputs with
+// effects. The typed implementation is simulation/typed_vessel_simulator.h; the list of
+// vessels is vessel_registry.cc (one line a vessel).
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+#include "effects/effect_values.h"
+#include "maneuvers/maneuver.h"
+#include "simulation/run_options.h"
+#include "simulators/vessel.h"
+
+namespace usvid {
+
+struct VesselInfo {
+  std::string name;
+  std::vector<std::string> states;   // the integrated states, in order
+  std::vector<std::string> derived;  // channels computed from the states (U, chi)
+  std::vector<std::string> inputs;
+  std::vector<std::string> params;
+  std::vector<double> default_params;
+  std::vector<ParamGroup> groups;
+  Actuation actuation;
+  double transport_delay_s = 0.0;
+
+  int StateIndex(const std::string& name) const;  // -1 when absent
+  // Parameters by name over the defaults; throws InputError on an unknown name.
+  std::vector<double> ParamsFrom(const nlohmann::json& overrides) const;
+};
+
+struct SimulationResult {
+  Dataset data;              // t, states, derived channels, inputs (the commands)
+  nlohmann::json maneuver;   // spec and what the maneuver measured
+  double run_in_s = 0.0;
+  bool diverged = false;
+  double diverged_at_s = 0.0;
+};
+
+class VesselSimulator {
+ public:
+  virtual ~VesselSimulator() = default;
+  virtual const VesselInfo& Info() const = 0;
+  // Closed- or open-loop maneuver from steady state; saturation limits are taken from the
+  // peak commands of a first run without saturation.
+  virtual SimulationResult RunManeuver(Maneuver& maneuver, const std::vector<double>& params,
+                                       const EffectValues<double>& effects,
+                                       const RunOptions& options) const = 0;
+  // Recorded inputs (the data's input channels, zero-order hold, unsampled cells hold the last
+  // sample), output at the data's time stamps, initial state from its first row where present.
+  virtual SimulationResult RunInputs(const Dataset& inputs, const std::vector<double>& params,
+                                     const EffectValues<double>& effects,
+                                     const RunOptions& options) const = 0;
+};
+
+// Throws InputError listing the known vessels.
+const VesselSimulator& FindVessel(const std::string& name);
+std::vector<std::string> VesselNames();
+
+}  // namespace usvid

@@ -1,0 +1,29 @@
+// Classical fixed-step Runge-Kutta 4 for x' = f(x), any scalar T (double, ceres::Jet):
+//   k1 = f(x), k2 = f(x + h/2 k1), k3 = f(x + h/2 k2), k4 = f(x + h k3),
+//   x += h/6 (k1 + 2 k2 + 2 k3 + k4).
+// The inputs are held constant over the step by the caller (zero-order hold), so f sees one
+// input vector for all four stages. No allocation: the state is a fixed-size Eigen vector.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace usvid {
+
+template <typename T, int N>
+using StateVector = Eigen::Matrix<T, N, 1>;
+
+// f(const T* x, T* dx) evaluates the derivative.
+template <typename T, int N, typename F>
+void Rk4Step(const F& f, double h, StateVector<T, N>& x) {
+  StateVector<T, N> k1, k2, k3, k4, y;
+  f(x.data(), k1.data());
+  y = x + (0.5 * h) * k1;
+  f(y.data(), k2.data());
+  y = x + (0.5 * h) * k2;
+  f(y.data(), k3.data());
+  y = x + h * k3;
+  f(y.data(), k4.data());
+  x += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+}  // namespace usvid

@@ -1,0 +1,181 @@
+// Each effect of contract section 3 changes the data exactly as its definition says, checked
+// against a run without the effect that is changed by hand in the definition's way.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "effects/effect.h"
+#include "effects/effect_values.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+namespace {
+
+class EffectsTest : public ::testing::Test {
+ protected:
+  // 60 s at 100 Hz of force steps for the msd: rest, then +8 N from 5 s, -6 N from 25 s.
+  static Dataset MsdSteps() {
+    const int n = 6001;
+    Dataset d(Eigen::VectorXd::LinSpaced(n, 0.0, 60.0));
+    Eigen::VectorXd f(n);
+    for (int k = 0; k < n; ++k) f(k) = k < 500 ? 0.0 : (k < 2500 ? 8.0 : -6.0);
+    d.Set("f", f);
+    return d;
+  }
+  // 120 s at 20 Hz of odin3dof surge and yaw steps from a straight cruise at 8 m/s.
+  static Dataset OdinSteps() {
+    const int n = 2401;
+    Dataset d(Eigen::VectorXd::LinSpaced(n, 0.0, 120.0));
+    Eigen::VectorXd tx(n), ty = Eigen::VectorXd::Zero(n), tn(n), u0 = Eigen::VectorXd::Zero(n);
+    for (int k = 0; k < n; ++k) {
+      tx(k) = k < 1200 ? 16000.0 : 24000.0;
+      tn(k) = (k / 200) % 2 == 0 ? 3000.0 : -3000.0;
+    }
+    d.Set("tau_x", tx);
+    d.Set("tau_y", ty);
+    d.Set("tau_n", tn);
+    u0(0) = 8.0;
+    Eigen::Array<bool, Eigen::Dynamic, 1> first = Eigen::Array<bool, Eigen::Dynamic, 1>::Zero(n);
+    first(0) = true;
+    d.Set("u", u0, first);
+    return d;
+  }
+  static Dataset Run(const std::string& vessel, const Dataset& in,
+                     const std::vector<std::string>& effects = {},
+                     std::vector<double> params = {}) {
+    const VesselSimulator& sim = FindVessel(vessel);
+    if (params.empty()) params = sim.Info().default_params;
+    RunOptions opt;
+    opt.dt = 0.01;
+    const SimulationResult r = sim.RunInputs(in, params, ValuesOf(ParseEffects(effects, 5)), opt);
+    EXPECT_FALSE(r.diverged);
+    return r.data;
+  }
+  static double MaxDiff(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return (a - b).cwiseAbs().maxCoeff();
+  }
+};
+
+// input_delay: the response is the undelayed response shifted later by delay_s.
+TEST_F(EffectsTest, InputDelayShiftsTheResponse) {
+  const Dataset in = MsdSteps();
+  const Dataset plain = Run("msd", in), late = Run("msd", in, {"input_delay=0.5"});
+  const Eigen::VectorXd& x = plain["x"];
+  const Eigen::VectorXd& y = late["x"];
+  EXPECT_LT(MaxDiff(y.segment(50, 5000), x.segment(0, 5000)), 1e-9);
+  EXPECT_GT(MaxDiff(y, x), 0.1);
+}
+
+// current: with no thrust the hull drifts with the water, at the current's speed and
+// direction (damping acts on the velocity relative to the water).
+TEST_F(EffectsTest, CurrentCarriesTheHull) {
+  const int n = 24001;  // 1200 s at 20 Hz: linear surge damping is slow (m11 / Xu ~ 100 s)
+  Dataset in(Eigen::VectorXd::LinSpaced(n, 0.0, 1200.0));
+  for (const char* c : {"tau_x", "tau_y", "tau_n"}) in.Set(c, Eigen::VectorXd::Zero(n));
+  const Dataset d = Run("odin3dof", in, {"current=0.5:60"});
+  const double vn = (d["north"](n - 1) - d["north"](n - 201)) / 10.0;
+  const double ve = (d["east"](n - 1) - d["east"](n - 201)) / 10.0;
+  EXPECT_NEAR(vn, 0.5 * std::cos(M_PI / 3), 0.005);
+  EXPECT_NEAR(ve, 0.5 * std::sin(M_PI / 3), 0.005);
+}
+
+// actuator_lag: the plant sees the command through 1 / (T s + 1): the same as running without
+// the lag on the command filtered by hand (exactly, at the midpoints of a 10x finer grid).
+TEST_F(EffectsTest, ActuatorLagFiltersTheCommand) {
+  const double tc = 1.5;
+  const Dataset in = MsdSteps();
+  const Dataset lagged = Run("msd", in, {"actuator_lag=1.5"});
+  const int fine = 10 * static_cast<int>(in.rows() - 1) + 1;
+  Dataset filtered(Eigen::VectorXd::LinSpaced(fine, 0.0, 60.0));
+  Eigen::VectorXd g(fine);
+  double lag = 0.0;  // the lag state at the start of each fine step
+  for (int k = 0; k < fine; ++k) {
+    const double f = in["f"](k / 10), h = 0.001;
+    g(k) = f + (lag - f) * std::exp(-0.5 * h / tc);  // at the step's midpoint
+    lag = f + (lag - f) * std::exp(-h / tc);
+  }
+  filtered.Set("f", g);
+  const VesselSimulator& sim = FindVessel("msd");
+  RunOptions opt;
+  opt.dt = 0.001;
+  const Dataset by_hand = sim.RunInputs(filtered, sim.Info().default_params, {}, opt).data;
+  double err = 0.0;
+  for (Eigen::Index k = 0; k < in.rows(); ++k)
+    err = std::max(err, std::abs(lagged["x"](k) - by_hand["x"](10 * k)));
+  EXPECT_LT(err, 1e-5);
+  EXPECT_GT(MaxDiff(lagged["x"], Run("msd", in)["x"]), 0.1);
+}
+
+// input_bias: the same as adding the bias to the yaw input column.
+TEST_F(EffectsTest, InputBiasAddsToTheYawInput) {
+  Dataset in = OdinSteps();
+  const Dataset biased = Run("odin3dof", in, {"input_bias=400"});
+  in.Set("tau_n", (in["tau_n"].array() + 400.0).matrix());
+  const Dataset by_hand = Run("odin3dof", in);
+  for (const char* c : {"u", "v", "r", "psi"}) EXPECT_LT(MaxDiff(biased[c], by_hand[c]), 1e-9) << c;
+}
+
+// sensor_bias: the measured r is offset by exactly the bias; nothing else changes.
+TEST_F(EffectsTest, SensorBiasOffsetsOnlyTheMeasuredRate) {
+  const Dataset in = OdinSteps();
+  const Dataset plain = Run("odin3dof", in), biased = Run("odin3dof", in, {"sensor_bias=0.01"});
+  EXPECT_LT(MaxDiff((biased["r"].array() - 0.01).matrix(), plain["r"]), 1e-12);
+  for (const char* c : {"u", "v", "psi", "north"}) EXPECT_EQ(MaxDiff(biased[c], plain[c]), 0.0);
+}
+
+// inertia: the same as the mass parameters times the scale.
+TEST_F(EffectsTest, InertiaScalesTheMass) {
+  const Dataset in = MsdSteps();
+  const Dataset scaled = Run("msd", in, {"inertia=1.3"});
+  const Dataset by_hand = Run("msd", in, {}, {13.0, 1.0, 2.0});
+  EXPECT_LT(MaxDiff(scaled["x"], by_hand["x"]), 1e-12);
+  EXPECT_GT(MaxDiff(scaled["x"], Run("msd", in)["x"]), 0.05);
+}
+
+// damping: the same as every damping coefficient times the scale.
+TEST_F(EffectsTest, DampingScalesEveryDampingCoefficient) {
+  const Dataset in = OdinSteps();
+  const Dataset scaled = Run("odin3dof", in, {"damping=0.7"});
+  std::vector<double> p = FindVessel("odin3dof").Info().default_params;
+  for (int i = 3; i < 10; ++i) p[i] *= 0.7;  // Xu .. Nrr
+  const Dataset by_hand = Run("odin3dof", in, {}, p);
+  for (const char* c : {"u", "v", "r"}) EXPECT_LT(MaxDiff(scaled[c], by_hand[c]), 1e-9) << c;
+}
+
+// saturation: each input clipped at +-fraction x its peak |command|.
+TEST_F(EffectsTest, SaturationClipsAtAFractionOfThePeak) {
+  Dataset in = MsdSteps();
+  const Dataset clipped = Run("msd", in, {"saturation=0.5"});
+  in.Set("f", in["f"].cwiseMax(-4.0).cwiseMin(4.0));  // peak 8 N
+  EXPECT_LT(MaxDiff(clipped["x"], Run("msd", in)["x"]), 1e-12);
+}
+
+// A current given by speed alone takes its direction from the seed: reproducible per seed,
+// different across seeds, always of the given speed.
+TEST_F(EffectsTest, CurrentDirectionIsSeeded) {
+  const Effect a = ParseEffect("current=0.5", 7), b = ParseEffect("current=0.5", 7);
+  const Effect c = ParseEffect("current=0.5", 8);
+  EXPECT_EQ(a.parameters, b.parameters);
+  EXPECT_NE(a.parameters, c.parameters);
+  EXPECT_NEAR(std::hypot(c.at("current_north"), c.at("current_east")), 0.5, 1e-12);
+}
+
+// Bad effect specs name the item and the rule.
+TEST_F(EffectsTest, BadSpecsAreRefused) {
+  EXPECT_THROW(ParseEffect("current=abc", 1), InputError);
+  EXPECT_THROW(ParseEffect("wind=3", 1), InputError);
+  EXPECT_THROW(ParseEffect("saturation=1.5", 1), InputError);
+  EXPECT_THROW(ParseEffect("actuator_lag=0", 1), InputError);
+  EXPECT_THROW(ParseEffect("input_delay=-1", 1), InputError);
+  EXPECT_THROW(ParseEffects({"damping=2", "damping=3"}, 1), InputError);
+  try {
+    ParseEffect("current=abc", 1);
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("--effect 'current=abc'"));
+  }
+}
+
+}  // namespace
+}  // namespace usvid
