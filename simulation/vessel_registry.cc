@@ -8,6 +8,7 @@
 #include "simulators/eb2dof.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
+#include "simulators/odin_hs.h"
 
 namespace usvid {
 namespace {
@@ -45,7 +46,13 @@ VesselInfo InfoFor(std::vector<InputRole> roles, const Actuation& extra) {
   a.roles = std::move(roles);
   a.input_min.assign(V::kInputMin.begin(), V::kInputMin.end());
   a.input_max.assign(V::kInputMax.begin(), V::kInputMax.end());
-  if (a.neutral.empty()) a.neutral.assign(V::kInputs, 0.0);
+  if (a.neutral.empty()) {
+    if constexpr (requires { V::kNeutralInput; }) {
+      a.neutral.assign(V::kNeutralInput.begin(), V::kNeutralInput.end());
+    } else {
+      a.neutral.assign(V::kInputs, 0.0);
+    }
+  }
   a.yaw_input = V::kYawInput;
   a.thrust_input = V::kThrustInput;
   a.rate_state = V::kRateState;
@@ -77,6 +84,10 @@ const std::map<std::string, std::unique_ptr<VesselSimulator>>& Registry() {
         Make<Odin3Dof>({R::kThrust, R::kSide, R::kYaw}, Drive(false, 20000.0, 35.0, 16000.0));
     // eb2dof: nozzle angle in radians, +-27 deg; cruise at half throttle.
     (*r)["eb2dof"] = Make<Eb2Dof>({R::kThrust, R::kYaw}, Drive(true, kNozzleMax, 27.0, 0.5));
+    // odin-hs: throttle, nozzle [rad, +-27 deg], bucket held open (full ahead); cruise at
+    // half throttle (5.4 m/s, semi-displacement).
+    (*r)["odin-hs"] =
+        Make<OdinHs>({R::kThrust, R::kYaw, R::kFixed}, Drive(true, kNozzleMax, 27.0, 0.5));
     return r;
   }();
   return *registry;

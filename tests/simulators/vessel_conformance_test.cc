@@ -13,6 +13,7 @@
 #include "simulators/eb2dof.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
+#include "simulators/odin_hs.h"
 #include "simulators/rk4.h"
 
 // Counts heap allocations in this test binary, to show the step does none.
@@ -43,7 +44,7 @@ class VesselConformanceTest : public ::testing::Test {
   }
 };
 
-using Vessels = ::testing::Types<Msd, Odin3Dof, Eb2Dof>;
+using Vessels = ::testing::Types<Msd, Odin3Dof, Eb2Dof, OdinHs>;
 TYPED_TEST_SUITE(VesselConformanceTest, Vessels);
 
 // The value part of a Jet evaluation is the double evaluation, and the Jet's parameter
@@ -69,7 +70,7 @@ TYPED_TEST(VesselConformanceTest, JetDerivativesMatchCentralDifferences) {
 
   for (int i = 0; i < V::kStates; ++i) EXPECT_DOUBLE_EQ(dxj[i].a, dx[i]) << V::kStateNames[i];
   for (int j = 0; j < V::kParams; ++j) {
-    const double h = 1e-6 * std::abs(V::kDefaultParams[j]);
+    const double h = 1e-6 * (V::kDefaultParams[j] != 0.0 ? std::abs(V::kDefaultParams[j]) : 1.0);
     auto plus = V::kDefaultParams, minus = V::kDefaultParams;
     plus[j] += h;
     minus[j] -= h;
