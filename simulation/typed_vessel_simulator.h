@@ -98,6 +98,23 @@ class TypedVesselSimulator : public VesselSimulator {
     return result;
   }
 
+  std::optional<double> Resistance(double speed,
+                                   const std::vector<double>& params) const override {
+    if constexpr (requires { V::template Resistance<double>(speed, params.data()); }) {
+      return V::template Resistance<double>(speed, params.data());
+    } else {
+      return std::nullopt;
+    }
+  }
+
+  std::optional<double> FroudeNumber(double speed) const override {
+    if constexpr (requires { V::FroudeNumber(speed); }) {
+      return V::FroudeNumber(speed);
+    } else {
+      return std::nullopt;
+    }
+  }
+
  private:
   template <int M>
   static std::array<double, M> ToArray(const std::vector<double>& v) {

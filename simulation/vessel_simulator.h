@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,11 @@ class VesselSimulator {
   virtual SimulationResult RunInputs(const Dataset& inputs, const std::vector<double>& params,
                                      const EffectValues<double>& effects,
                                      const RunOptions& options) const = 0;
+  // Calm-water resistance [N] at a speed [m/s], for vessels whose model has one (odin-hs).
+  virtual std::optional<double> Resistance(double speed,
+                                           const std::vector<double>& params) const = 0;
+  // Froude number U / sqrt(g L) for vessels with a length (odin-hs).
+  virtual std::optional<double> FroudeNumber(double speed) const = 0;
 };
 
 // Throws InputError listing the known vessels.

@@ -9,5 +9,6 @@ namespace usvid {
 void AddImportCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
 void AddSimulateCommand(CLI::App& app);
+void AddVesselCommand(CLI::App& app);
 
 }  // namespace usvid

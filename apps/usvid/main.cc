@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   usvid::AddImportCommand(app);
   usvid::AddInfoCommand(app);
   usvid::AddSimulateCommand(app);
+  usvid::AddVesselCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     const auto subcommands = app.get_subcommands({});
     if (std::none_of(subcommands.begin(), subcommands.end(),
