@@ -8,8 +8,7 @@
 namespace usvid {
 namespace {
 
-void BM_Simulate600s(benchmark::State& state, const std::string& vessel,
-                     const std::string& spec) {
+void BM_Simulate600s(benchmark::State& state, const std::string& vessel, const std::string& spec) {
   const VesselSimulator& sim = FindVessel(vessel);
   long steps = 0;
   for (auto _ : state) {

@@ -22,8 +22,8 @@ void WriteFileAtomically(const std::string& path, std::string_view content) {
     throw InputError(path + ": directory '" + parent.string() + "' does not exist");
 
   static std::atomic<int> counter{0};
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + "." +
-                          std::to_string(counter.fetch_add(1));
+  const std::string tmp =
+      path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter.fetch_add(1));
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (f == nullptr) throw InputError(path + ": cannot write: " + std::strerror(errno));
   const bool written = std::fwrite(content.data(), 1, content.size(), f) == content.size();

@@ -17,9 +17,9 @@ void CheckHeader(const CsvTable& table) {
       const auto at = header.fields[0].text.find(sep);
       if (at != std::string::npos) {
         const std::string name = sep == '\t' ? "a tab" : std::string("'") + sep + "'";
-        throw InputError(Located(table.file, header.line, static_cast<int>(at) + 1,
-                                 "wrong separator: found " + name +
-                                     " in the header; data files are comma-separated"));
+        throw InputError(Located(
+            table.file, header.line, static_cast<int>(at) + 1,
+            "wrong separator: found " + name + " in the header; data files are comma-separated"));
       }
     }
   }
@@ -59,9 +59,9 @@ Dataset ParseDatasetCsv(std::string_view text, const std::string& file) {
       const bool shorter = row.fields.size() < ncol;
       const int column = shorter ? row.end_column : row.fields[ncol].column;
       throw InputError(Located(file, row.line, column,
-                               std::string(shorter ? "short" : "long") + " row: " +
-                                   std::to_string(row.fields.size()) + " cells, the header has " +
-                                   std::to_string(ncol)));
+                               std::string(shorter ? "short" : "long") +
+                                   " row: " + std::to_string(row.fields.size()) +
+                                   " cells, the header has " + std::to_string(ncol)));
     }
     for (size_t c = 0; c < ncol; ++c) {
       const CsvField& f = row.fields[c];
@@ -73,9 +73,9 @@ Dataset ParseDatasetCsv(std::string_view text, const std::string& file) {
         continue;
       }
       if (p.status != NumberStatus::kOk)
-        throw InputError(Located(file, row.line, f.column,
-                                 "column '" + header.fields[c].text +
-                                     "': " + DescribeNumberStatus(p.status, f.text)));
+        throw InputError(Located(
+            file, row.line, f.column,
+            "column '" + header.fields[c].text + "': " + DescribeNumberStatus(p.status, f.text)));
       sampled(i, c) = true;
       values(i, c) = p.value;
     }
@@ -96,7 +96,9 @@ Dataset ParseDatasetCsv(std::string_view text, const std::string& file) {
   return data;
 }
 
-Dataset ReadDatasetCsv(const std::string& path) { return ParseDatasetCsv(ReadTextFile(path), path); }
+Dataset ReadDatasetCsv(const std::string& path) {
+  return ParseDatasetCsv(ReadTextFile(path), path);
+}
 
 std::string FormatDatasetCsv(const Dataset& data) {
   std::string out = "t";

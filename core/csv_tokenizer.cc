@@ -15,10 +15,14 @@ int Utf8SequenceLength(std::string_view s, size_t i) {
   const auto c = static_cast<unsigned char>(s[i]);
   int n = 0;
   if (c < 0x80) return 1;
-  if ((c & 0xE0) == 0xC0 && c >= 0xC2) n = 2;
-  else if ((c & 0xF0) == 0xE0) n = 3;
-  else if ((c & 0xF8) == 0xF0 && c <= 0xF4) n = 4;
-  else return 0;
+  if ((c & 0xE0) == 0xC0 && c >= 0xC2)
+    n = 2;
+  else if ((c & 0xF0) == 0xE0)
+    n = 3;
+  else if ((c & 0xF8) == 0xF0 && c <= 0xF4)
+    n = 4;
+  else
+    return 0;
   if (i + n > s.size()) return 0;
   for (int k = 1; k < n; ++k)
     if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
@@ -60,8 +64,8 @@ CsvRow SplitLine(std::string_view line, const std::string& file, int line_no, ch
       size_t j = start + 1;
       while (true) {
         if (j >= line.size())
-          throw InputError(Located(file, line_no, static_cast<int>(start) + 1,
-                                   "unterminated quoted field"));
+          throw InputError(
+              Located(file, line_no, static_cast<int>(start) + 1, "unterminated quoted field"));
         if (line[j] == '"') {
           if (j + 1 < line.size() && line[j + 1] == '"') {
             field.text += '"';

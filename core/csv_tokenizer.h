@@ -17,8 +17,8 @@ struct CsvField {
 };
 
 struct CsvRow {
-  int line = 0;          // 1-based line number in the file
-  int end_column = 0;    // 1-based column just past the last character of the line
+  int line = 0;        // 1-based line number in the file
+  int end_column = 0;  // 1-based column just past the last character of the line
   std::vector<CsvField> fields;
 };
 

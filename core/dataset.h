@@ -13,7 +13,7 @@ namespace usvid {
 
 struct Channel {
   std::string name;
-  Eigen::VectorXd values;                  // NaN where not sampled
+  Eigen::VectorXd values;  // NaN where not sampled
   Eigen::Array<bool, Eigen::Dynamic, 1> sampled;
 
   bool FullySampled() const { return sampled.all(); }

@@ -27,8 +27,9 @@ std::string TimeRepairReport::Summary() const {
   s << "time: " << rows_in << " rows, " << repeated << " repeated and " << went_back
     << " decreasing stamps";
   if (rebuilt)
-    s << "; repaired " << repeated + went_back << " rows by rebuilding a uniform time base (dt = "
-      << dt << " s, largest shift " << max_shift << " s)";
+    s << "; repaired " << repeated + went_back
+      << " rows by rebuilding a uniform time base (dt = " << dt << " s, largest shift " << max_shift
+      << " s)";
   if (dropped > 0) s << "; repaired by dropping " << dropped << " rows";
   if (!Changed()) s << "; nothing to repair";
   return s.str();
@@ -64,8 +65,7 @@ TimeRepairReport RebuildRoundedTime(Dataset& data, int significant_digits) {
   Eigen::ArrayXd weight(n);
   for (Eigen::Index i = 0; i < n; ++i)
     weight(i) = 1.0 / std::pow(std::max(RoundingStep(t(i), significant_digits), 1e-9), 2);
-  const double dt =
-      (weight * index * (t.array() - t(0))).sum() / (weight * index.square()).sum();
+  const double dt = (weight * index * (t.array() - t(0))).sum() / (weight * index.square()).sum();
   const Eigen::VectorXd grid = (t(0) + index * dt).matrix();
   bool consistent = dt > 0.0;
   double max_shift = 0.0;

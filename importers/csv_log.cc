@@ -45,8 +45,8 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
   if (plan.empty())
     for (const CsvField& f : header.fields) plan.push_back({f.text, f.text, "", 1.0});
   if (std::none_of(plan.begin(), plan.end(), [](const auto& m) { return m.target == "t"; }))
-    throw InputError(Located(file, header.line, 0,
-                             "no time channel: map one with --map t=COLUMN[:unit]"));
+    throw InputError(
+        Located(file, header.line, 0, "no time channel: map one with --map t=COLUMN[:unit]"));
 
   const auto nrow = static_cast<Eigen::Index>(table.rows.size() - 1);
   std::vector<Eigen::VectorXd> values;
@@ -54,9 +54,9 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
   for (const ColumnMapping& m : plan) {
     const auto it = column_of.find(m.source);
     if (it == column_of.end())
-      throw InputError(Located(file, header.line, 0,
-                               "--map " + m.target + "=" + m.source + ": no column '" + m.source +
-                                   "' in the header"));
+      throw InputError(Located(
+          file, header.line, 0,
+          "--map " + m.target + "=" + m.source + ": no column '" + m.source + "' in the header"));
     const size_t c = it->second;
     Eigen::VectorXd v(nrow);
     Eigen::Array<bool, Eigen::Dynamic, 1> s(nrow);
@@ -70,9 +70,9 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
       v(i) = p.value * m.factor;
       if (p.status == NumberStatus::kEmpty && m.target != "t") continue;
       if (p.status != NumberStatus::kOk)
-        throw InputError(Located(file, row.line, row.fields[c].column,
-                                 "column '" + m.source + "': " +
-                                     DescribeNumberStatus(p.status, row.fields[c].text)));
+        throw InputError(Located(
+            file, row.line, row.fields[c].column,
+            "column '" + m.source + "': " + DescribeNumberStatus(p.status, row.fields[c].text)));
     }
     values.push_back(std::move(v));
     sampled.push_back(std::move(s));

@@ -81,8 +81,8 @@ Dataset ParseMarinDat(const std::string& text, const std::string& file, ImportRe
   report.Note(s.str());
   const TimeRepairReport repair = RebuildRoundedTime(data, time_digits);
   report.Note(repair.Summary());
-  const double max_pos = std::max(data["north"].cwiseAbs().maxCoeff(),
-                                  data["east"].cwiseAbs().maxCoeff());
+  const double max_pos =
+      std::max(data["north"].cwiseAbs().maxCoeff(), data["east"].cwiseAbs().maxCoeff());
   if (max_pos > 0.0) {
     const double step = std::pow(10.0, std::floor(std::log10(max_pos)) - (time_digits - 1));
     s.str("");

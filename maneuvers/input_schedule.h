@@ -13,7 +13,10 @@ class InputSchedule : public Maneuver {
   // command(t, u) writes the inputs at time t.
   InputSchedule(std::string spec, double duration_s, int inputs,
                 std::function<void(double, std::span<double>)> command)
-      : spec_(std::move(spec)), duration_s_(duration_s), inputs_(inputs), command_(std::move(command)) {}
+      : spec_(std::move(spec)),
+        duration_s_(duration_s),
+        inputs_(inputs),
+        command_(std::move(command)) {}
 
   std::string Spec() const override { return spec_; }
   double Duration() const override { return duration_s_; }

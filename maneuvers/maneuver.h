@@ -25,18 +25,18 @@ struct Actuation {
   std::vector<double> input_min, input_max;
   std::vector<double> neutral;  // the inputs at rest
   int yaw_input = -1;
-  int thrust_input = -1;        // -1: the vessel has no thrust input (msd)
-  int heading_state = -1;       // psi or chi; -1: no heading (msd)
+  int thrust_input = -1;   // -1: the vessel has no thrust input (msd)
+  int heading_state = -1;  // psi or chi; -1: no heading (msd)
   int rate_state = -1;
   int north_state = -1, east_state = -1;  // positions, -1: none
-  int speed_state = -1;         // U, or surge u (with sway v next) when speed_is_surge
+  int speed_state = -1;                   // U, or surge u (with sway v next) when speed_is_surge
   bool speed_is_surge = false;
   // Full yaw command: for an angle input (nozzle, rudder) the command of `yaw_full_deg`
   // degrees is that angle in radians; for a moment input, yaw_full_deg maps to yaw_full.
   bool yaw_is_angle = false;
   double yaw_full = 1.0;
   double yaw_full_deg = 35.0;
-  double thrust_cruise = 0.0;   // the thrust command of the default cruise
+  double thrust_cruise = 0.0;  // the thrust command of the default cruise
 
   int inputs() const { return static_cast<int>(input_names.size()); }
   // The yaw command standing for a rudder angle of `deg` degrees, within the input's range.

@@ -1,7 +1,8 @@
 // Turning circle at A degrees (A > 0 to starboard): after a straight approach of kLeadInS at
-// cruise, the yaw command goes to A degrees and is held; thrust stays at cruise. Report: advance and transfer [m] at 90 deg of
-// heading change, tactical diameter [m] (transfer at 180 deg), and the steady turning radius
-// U / |r| [m] over the last full turn, when the state has positions and speeds.
+// cruise, the yaw command goes to A degrees and is held; thrust stays at cruise. Report: advance
+// and transfer [m] at 90 deg of heading change, tactical diameter [m] (transfer at 180 deg), and
+// the steady turning radius U / |r| [m] over the last full turn, when the state has positions and
+// speeds.
 #pragma once
 
 #include "maneuvers/maneuver.h"

@@ -1,9 +1,10 @@
-// Kempf zig-zag A/B (ITTC): after a straight approach of kLeadInS, the yaw command goes to +A; when the heading has turned
-// B degrees from the initial heading it switches to -A, when it reaches -B back to +A, and so
-// on, closed-loop on the measured heading. Thrust is held at cruise. For a moment-driven vessel
-// the yaw command is the moment standing for A degrees (Actuation::YawCommand).
-// Report: the first and second overshoot angles [deg] (how far the heading goes beyond B after
-// the first and second switch), the switch times, and the heading rate at each switch.
+// Kempf zig-zag A/B (ITTC): after a straight approach of kLeadInS, the yaw command goes to +A; when
+// the heading has turned B degrees from the initial heading it switches to -A, when it reaches -B
+// back to +A, and so on, closed-loop on the measured heading. Thrust is held at cruise. For a
+// moment-driven vessel the yaw command is the moment standing for A degrees
+// (Actuation::YawCommand). Report: the first and second overshoot angles [deg] (how far the heading
+// goes beyond B after the first and second switch), the switch times, and the heading rate at each
+// switch.
 #pragma once
 
 #include "maneuvers/maneuver.h"

@@ -27,8 +27,7 @@ std::vector<double> AddGaussianNoise(Dataset& data, const std::vector<std::strin
     const auto n = static_cast<double>(c.sampled.count());
     const Eigen::ArrayXd v = c.sampled.select(c.values.array(), 0.0);
     const double mean = n > 0 ? v.sum() / n : 0.0;
-    const double var =
-        n > 0 ? c.sampled.select((v - mean).square(), 0.0).sum() / n : 0.0;
+    const double var = n > 0 ? c.sampled.select((v - mean).square(), 0.0).sum() / n : 0.0;
     const double sd = level * std::sqrt(var);
     sds.push_back(sd);
     if (sd == 0.0) continue;

@@ -19,9 +19,9 @@ namespace usvid {
 
 struct ClosedLoopRun {
   std::vector<double> times;
-  std::vector<double> states;    // rows x V::kStates
+  std::vector<double> states;  // rows x V::kStates
   InputTrack commands{0};
-  double run_in_s = 0.0;         // how long the run-in took
+  double run_in_s = 0.0;  // how long the run-in took
   bool diverged = false;
 };
 

@@ -85,8 +85,8 @@ class TypedVesselSimulator : public VesselSimulator {
     setup.max_step = options.dt;
     setup.integrator = options.integrator;
     std::vector<double> out(setup.times.size() * Plant<V>::kStates);
-    const size_t rows = RolloutOpenLoop<V, double>(setup, x0.data(), ToArray<V::kParams>(params).data(),
-                                                   effects, limits, out.data());
+    const size_t rows = RolloutOpenLoop<V, double>(
+        setup, x0.data(), ToArray<V::kParams>(params).data(), effects, limits, out.data());
     SimulationResult result;
     result.diverged = rows < setup.times.size();
     result.diverged_at_s = result.diverged ? setup.times[rows] : 0.0;
@@ -98,8 +98,7 @@ class TypedVesselSimulator : public VesselSimulator {
     return result;
   }
 
-  std::optional<double> Resistance(double speed,
-                                   const std::vector<double>& params) const override {
+  std::optional<double> Resistance(double speed, const std::vector<double>& params) const override {
     if constexpr (requires { V::template Resistance<double>(speed, params.data()); }) {
       return V::template Resistance<double>(speed, params.data());
     } else {

@@ -35,8 +35,8 @@ struct VesselInfo {
 };
 
 struct SimulationResult {
-  Dataset data;              // t, states, derived channels, inputs (the commands)
-  nlohmann::json maneuver;   // spec and what the maneuver measured
+  Dataset data;             // t, states, derived channels, inputs (the commands)
+  nlohmann::json maneuver;  // spec and what the maneuver measured
   double run_in_s = 0.0;
   bool diverged = false;
   double diverged_at_s = 0.0;

@@ -23,8 +23,8 @@ struct AdaptiveOptions {
 };
 
 struct AdaptiveResult {
-  bool ok = true;      // false: step size fell below min_step or max_steps was reached
-  int steps = 0;       // accepted steps
+  bool ok = true;  // false: step size fell below min_step or max_steps was reached
+  int steps = 0;   // accepted steps
   int rejected = 0;
   double last_step = 0.0;  // a good first step for the next interval
 };
@@ -32,15 +32,14 @@ struct AdaptiveResult {
 template <typename T, int N, typename F>
 AdaptiveResult DormandPrinceIntegrate(const F& f, double span, StateVector<T, N>& x,
                                       const AdaptiveOptions& opt = {}) {
-  constexpr double a21 = 1.0 / 5, a31 = 3.0 / 40, a32 = 9.0 / 40, a41 = 44.0 / 45,
-                   a42 = -56.0 / 15, a43 = 32.0 / 9, a51 = 19372.0 / 6561,
-                   a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729,
-                   a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247,
-                   a64 = 49.0 / 176, a65 = -5103.0 / 18656, b1 = 35.0 / 384, b3 = 500.0 / 1113,
-                   b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
+  constexpr double a21 = 1.0 / 5, a31 = 3.0 / 40, a32 = 9.0 / 40, a41 = 44.0 / 45, a42 = -56.0 / 15,
+                   a43 = 32.0 / 9, a51 = 19372.0 / 6561, a52 = -25360.0 / 2187,
+                   a53 = 64448.0 / 6561, a54 = -212.0 / 729, a61 = 9017.0 / 3168, a62 = -355.0 / 33,
+                   a63 = 46732.0 / 5247, a64 = 49.0 / 176, a65 = -5103.0 / 18656, b1 = 35.0 / 384,
+                   b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
   // Error coefficients: 5th-order minus embedded 4th-order weights.
-  constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
-                   e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
+  constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
+                   e6 = 22.0 / 525, e7 = -1.0 / 40;
   AdaptiveResult result;
   double t = 0.0;
   double h = std::min(opt.initial_step, span);
@@ -67,8 +66,8 @@ AdaptiveResult DormandPrinceIntegrate(const F& f, double span, StateVector<T, N>
     f(x_new.data(), k7.data());
     double err = 0.0;
     for (int i = 0; i < N; ++i) {
-      const double e = ValueOf(h * (e1 * k1(i) + e3 * k3(i) + e4 * k4(i) + e5 * k5(i) +
-                                    e6 * k6(i) + e7 * k7(i)));
+      const double e = ValueOf(
+          h * (e1 * k1(i) + e3 * k3(i) + e4 * k4(i) + e5 * k5(i) + e6 * k6(i) + e7 * k7(i)));
       const double scale =
           opt.atol + opt.rtol * std::max(std::abs(ValueOf(x(i))), std::abs(ValueOf(x_new(i))));
       err = std::max(err, std::abs(e) / scale);

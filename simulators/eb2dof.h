@@ -21,8 +21,8 @@ namespace usvid {
 struct Eb2Dof {
   static constexpr std::string_view kName = "eb2dof";
   static constexpr int kStates = 5, kInputs = 2, kParams = 11;
-  static constexpr std::array<std::string_view, kStates> kStateNames = {"north", "east", "chi",
-                                                                        "U", "r"};
+  static constexpr std::array<std::string_view, kStates> kStateNames = {"north", "east", "chi", "U",
+                                                                        "r"};
   static constexpr std::array<std::string_view, kInputs> kInputNames = {"throttle", "nozzle"};
   static constexpr std::array<std::string_view, kParams> kParamNames = {
       "mU0", "mU1", "mr0", "mr1", "sU1", "sU2", "sU3", "sUr", "sr1", "srU", "sr3"};
@@ -37,8 +37,7 @@ struct Eb2Dof {
   static constexpr int kYawInput = 1, kThrustInput = 0, kRateState = 4, kHeadingState = 2;
 
   template <typename T>
-  static void Derivative(const T* x, const T* tau, const T* p, const Environment<T>& env,
-                         T* dx) {
+  static void Derivative(const T* x, const T* tau, const T* p, const Environment<T>& env, T* dx) {
     using std::cos;
     using std::sin;
     const T& chi = x[2];

@@ -37,13 +37,14 @@ struct Environment {
 template <typename V>
 concept Vessel = requires {
   { V::kName } -> std::convertible_to<std::string_view>;
-  requires V::kStates > 0 && V::kInputs > 0 && V::kParams > 0;
+  requires V::kStates >
+  0 && V::kInputs > 0 && V::kParams > 0;
   requires V::kStateNames.size() == V::kStates;
   requires V::kInputNames.size() == V::kInputs;
   requires V::kParamNames.size() == V::kParams;
   requires V::kDefaultParams.size() == V::kParams;
   requires V::kParamGroups.size() == V::kParams;
-  requires V::kInputMin.size() == V::kInputs && V::kInputMax.size() == V::kInputs;
+  requires V::kInputMin.size() == V::kInputs&& V::kInputMax.size() == V::kInputs;
   { V::kYawInput } -> std::convertible_to<int>;
   { V::kThrustInput } -> std::convertible_to<int>;
   { V::kRateState } -> std::convertible_to<int>;

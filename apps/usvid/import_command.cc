@@ -40,8 +40,9 @@ void RunImport(const ImportOptions& o) {
 void AddImportCommand(CLI::App& app) {
   auto o = std::make_shared<ImportOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "import", "Turn a foreign log into usvid's data CSV (units to SI, body velocities, time "
-                "repaired and reported)");
+      "import",
+      "Turn a foreign log into usvid's data CSV (units to SI, body velocities, time "
+      "repaired and reported)");
   cmd->add_option("--format", o->format, "Log format: marin-dat (MARIN .dat) or csv")
       ->required()
       ->check(CLI::IsMember({"marin-dat", "csv"}));

@@ -31,8 +31,8 @@ double MedianInterval(const Eigen::VectorXd& t, const Channel& c) {
 
 void RunInfo(const std::string& path) {
   const Dataset d = ReadDatasetCsv(path);
-  std::printf("%s: %ld rows, t from %g to %g s (%g s)\n", path.c_str(),
-              static_cast<long>(d.rows()), d.t()(0), d.t()(d.rows() - 1), d.duration());
+  std::printf("%s: %ld rows, t from %g to %g s (%g s)\n", path.c_str(), static_cast<long>(d.rows()),
+              d.t()(0), d.t()(d.rows() - 1), d.duration());
   std::printf("%-16s %9s %10s %14s %14s\n", "channel", "samples", "rate [Hz]", "min", "max");
   for (const Channel& c : d.channels()) {
     const long n = c.sampled.count();

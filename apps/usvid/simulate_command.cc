@@ -46,8 +46,7 @@ std::string TruthPath(const std::string& out) {
 void RunSimulate(const SimulateOptions& o) {
   if (o.maneuver.empty() == o.inputs.empty())
     throw InputError("simulate: give exactly one of --maneuver and --inputs");
-  if (!(o.dt > 0) || !(o.rate_hz > 0))
-    throw InputError("--dt and --rate: must be positive");
+  if (!(o.dt > 0) || !(o.rate_hz > 0)) throw InputError("--dt and --rate: must be positive");
   const VesselSimulator& sim = FindVessel(o.vessel);
   const VesselInfo& info = sim.Info();
   const std::vector<Effect> effects = ParseEffects(o.effects, o.seed);
@@ -72,7 +71,8 @@ void RunSimulate(const SimulateOptions& o) {
     // Multi-rate sensors need an output grid at least as fast as the fastest sensor.
     for (const std::string& item : o.rates) {
       const auto eq = item.find('=');
-      if (eq != std::string::npos) run.rate_hz = std::max(run.rate_hz, std::atof(item.c_str() + eq + 1));
+      if (eq != std::string::npos)
+        run.rate_hz = std::max(run.rate_hz, std::atof(item.c_str() + eq + 1));
     }
     auto maneuver = MakeManeuver(o.maneuver, info.actuation, o.duration, o.seed);
     std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "

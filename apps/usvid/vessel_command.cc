@@ -85,8 +85,8 @@ void RunVessel(const VesselOptions& o) {
       std::string regime = "";
       if (const auto fn = sim.FroudeNumber(speed(k))) {
         regime = *fn < kDisplacementFn ? "displacement"
-                 : *fn > kPlaningFn   ? "planing"
-                                      : "semi-displacement";
+                 : *fn > kPlaningFn    ? "planing"
+                                       : "semi-displacement";
         row["froude"] = *fn;
         row["regime"] = regime;
       }

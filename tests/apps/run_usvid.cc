@@ -36,8 +36,8 @@ RunResult RunUsvid(const std::string& args) {
   const auto dir = std::filesystem::temp_directory_path();
   const auto out = dir / ("usvid_run_" + std::to_string(::getpid()) + ".out");
   const auto err = dir / ("usvid_run_" + std::to_string(::getpid()) + ".err");
-  const std::string cmd = std::string(USVID_BINARY) + " " + args + " >" + out.string() + " 2>" +
-                          err.string();
+  const std::string cmd =
+      std::string(USVID_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

@@ -13,8 +13,8 @@
 namespace usvid {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::FreshTempDir;
+using ::testing::HasSubstr;
 using testing::RunUsvid;
 namespace fs = std::filesystem;
 
@@ -25,8 +25,10 @@ class SimulateCliTest : public ::testing::Test {};
 TEST_F(SimulateCliTest, ZigZagWritesDataAndTruth) {
   const auto dir = FreshTempDir();
   const auto out = (dir / "zz.csv").string();
-  const auto r = RunUsvid("simulate --vessel odin3dof --maneuver zigzag:20/20 --noise 0.01 "
-                          "--seed 4 --effect current=0.3 --out " + out);
+  const auto r = RunUsvid(
+      "simulate --vessel odin3dof --maneuver zigzag:20/20 --noise 0.01 "
+      "--seed 4 --effect current=0.3 --out " +
+      out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Dataset d = ReadDatasetCsv(out);
   for (const char* c : {"north", "east", "psi", "u", "v", "r", "tau_x", "tau_y", "tau_n"})
@@ -42,7 +44,10 @@ TEST_F(SimulateCliTest, ZigZagWritesDataAndTruth) {
   // Same command, same bytes.
   const auto out2 = (dir / "zz2.csv").string();
   ASSERT_EQ(RunUsvid("simulate --vessel odin3dof --maneuver zigzag:20/20 --noise 0.01 --seed 4 "
-                     "--effect current=0.3 --out " + out2).exit_code, 0);
+                     "--effect current=0.3 --out " +
+                     out2)
+                .exit_code,
+            0);
   EXPECT_EQ(ReadTextFile(out), ReadTextFile(out2));
 }
 
@@ -50,8 +55,10 @@ TEST_F(SimulateCliTest, ZigZagWritesDataAndTruth) {
 TEST_F(SimulateCliTest, MultiRateSensorsLeaveEmptyCells) {
   const auto dir = FreshTempDir();
   const auto out = (dir / "mr.csv").string();
-  const auto r = RunUsvid("simulate --vessel eb2dof --maneuver random-steps --duration 60 "
-                          "--rates imu=50,gps=5 --out " + out);
+  const auto r = RunUsvid(
+      "simulate --vessel eb2dof --maneuver random-steps --duration 60 "
+      "--rates imu=50,gps=5 --out " +
+      out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Dataset d = ReadDatasetCsv(out);
   EXPECT_NEAR(d.t()(1) - d.t()(0), 0.02, 1e-12);

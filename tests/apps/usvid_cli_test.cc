@@ -10,10 +10,10 @@
 namespace usvid {
 namespace {
 
-using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using testing::FreshTempDir;
+using ::testing::HasSubstr;
 using testing::RunUsvid;
+using ::testing::StartsWith;
 using testing::WriteText;
 namespace fs = std::filesystem;
 

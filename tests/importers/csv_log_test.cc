@@ -36,7 +36,8 @@ TEST_F(CsvLogTest, MapsColumnsWithUnits) {
 
 // Earth-fixed velocities become body-fixed surge and sway.
 TEST_F(CsvLogTest, RotatesEarthVelocitiesToBody) {
-  const Dataset d = Parse("t,vn,ve,psi\n0,0,3,90\n1,3,0,0\n", {"t=t", "vn=vn", "ve=ve", "psi=psi:deg"});
+  const Dataset d =
+      Parse("t,vn,ve,psi\n0,0,3,90\n1,3,0,0\n", {"t=t", "vn=vn", "ve=ve", "psi=psi:deg"});
   EXPECT_NEAR(d["u"](0), 3.0, 1e-12);
   EXPECT_NEAR(d["v"](0), 0.0, 1e-12);
   EXPECT_NEAR(d["u"](1), 3.0, 1e-12);
@@ -67,14 +68,14 @@ TEST_F(CsvLogTest, BadInputIsLocated) {
 
 // The small USV's GPS log imports with a map (issue 2 acceptance).
 TEST_F(CsvLogTest, RealFuzhouUsvLogImportsWithMap) {
-  const std::string path = std::string(USVID_SHARED_DATA_DIR) + "/usv-fuzhou/zigzag_30_inter_xy.csv";
+  const std::string path =
+      std::string(USVID_SHARED_DATA_DIR) + "/usv-fuzhou/zigzag_30_inter_xy.csv";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared data absent: " << path;
   ImportReport report;
-  const Dataset d = ImportCsvLog(
-      path,
-      ParseColumnMap({"t=time", "north=x0", "east=y0", "psi=psi", "U=speed", "delta=delta",
-                      "heading=heading:deg"}),
-      report);
+  const Dataset d = ImportCsvLog(path,
+                                 ParseColumnMap({"t=time", "north=x0", "east=y0", "psi=psi",
+                                                 "U=speed", "delta=delta", "heading=heading:deg"}),
+                                 report);
   EXPECT_EQ(d.rows(), 420);
   EXPECT_NEAR(d.duration(), 209.5, 1e-9);
   // The log's heading [deg] and psi [rad] are the same angle.

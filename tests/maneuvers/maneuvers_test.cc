@@ -20,8 +20,8 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 class ManeuversTest : public ::testing::Test {
  protected:
-  static SimulationResult Run(const std::string& vessel, const std::string& spec,
-                              uint64_t seed = 1, double duration = 0.0) {
+  static SimulationResult Run(const std::string& vessel, const std::string& spec, uint64_t seed = 1,
+                              double duration = 0.0) {
     const VesselSimulator& sim = FindVessel(vessel);
     auto m = MakeManeuver(spec, sim.Info().actuation, duration, seed);
     SimulationResult r = sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{});
@@ -108,8 +108,8 @@ TEST_F(ManeuversTest, RandomManeuversVaryThrottleWithinRange) {
       const Eigen::VectorXd& u = a.data[info.inputs[i]];
       EXPECT_GE(u.minCoeff(), info.actuation.input_min[i] - 1e-12) << spec;
       EXPECT_LE(u.maxCoeff(), info.actuation.input_max[i] + 1e-12) << spec;
-      EXPECT_GT(u.maxCoeff() - u.minCoeff(), 0.2 * (info.actuation.input_max[i] -
-                                                    info.actuation.input_min[i]))
+      EXPECT_GT(u.maxCoeff() - u.minCoeff(),
+                0.2 * (info.actuation.input_max[i] - info.actuation.input_min[i]))
           << spec << " " << info.inputs[i];
     }
     EXPECT_EQ(a.data["U"], b.data["U"]) << spec;

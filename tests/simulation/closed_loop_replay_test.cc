@@ -21,7 +21,8 @@ TEST_F(ClosedLoopReplayTest, ReplayingRecordedCommandsReproducesTheRun) {
       const auto effects = ValuesOf(effect.empty() ? std::vector<Effect>{}
                                                    : std::vector<Effect>{ParseEffect(effect, 1)});
       const SimulationResult run = sim.RunManeuver(*m, sim.Info().default_params, effects, {});
-      const SimulationResult replay = sim.RunInputs(run.data, sim.Info().default_params, effects, {});
+      const SimulationResult replay =
+          sim.RunInputs(run.data, sim.Info().default_params, effects, {});
       ASSERT_EQ(replay.data.rows(), run.data.rows());
       // Before the delay has passed, the replay cannot know the commands of the run-in.
       const Eigen::Index skip = effect.empty() ? 0 : 40;
@@ -29,7 +30,8 @@ TEST_F(ClosedLoopReplayTest, ReplayingRecordedCommandsReproducesTheRun) {
         const Eigen::VectorXd a = run.data[s].tail(run.data.rows() - skip);
         const Eigen::VectorXd b = replay.data[s].tail(run.data.rows() - skip);
         const double range = a.maxCoeff() - a.minCoeff() + 1e-9;
-        EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-6 * range) << vessel << " " << effect << " " << s;
+        EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-6 * range)
+            << vessel << " " << effect << " " << s;
       }
     }
   }

@@ -2,9 +2,9 @@
 // (issue 3 acceptance): odin3dof from domain.md section 2.2 written with its matrices M, C(nu),
 // D(nu) and a linear solve, msd from m x'' + d x' + k x = f, both with classical RK4 and the
 // input held over each step. Over 300 s every channel agrees to 1e-4 of its range.
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -41,8 +41,7 @@ Eigen::Matrix<double, 6, 1> Odin3DofReference(const Eigen::Matrix<double, 6, 1>&
 
 template <typename F, typename X, typename U>
 X Rk4(const F& f, const X& x, const U& u, double h) {
-  const X k1 = f(x, u), k2 = f(x + h / 2 * k1, u), k3 = f(x + h / 2 * k2, u),
-          k4 = f(x + h * k3, u);
+  const X k1 = f(x, u), k2 = f(x + h / 2 * k1, u), k3 = f(x + h / 2 * k2, u), k4 = f(x + h * k3, u);
   return x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
 }
 

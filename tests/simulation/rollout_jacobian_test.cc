@@ -39,8 +39,8 @@ class RolloutJacobianTest : public ::testing::Test {
   std::vector<double> Rollout(const std::array<double, Odin3Dof::kParams>& p,
                               const EffectValues<double>& e) const {
     std::vector<double> out(setup_.times.size() * kN);
-    const size_t rows = RolloutOpenLoop<Odin3Dof, double>(setup_, x0_.data(), p.data(), e,
-                                                          limits_, out.data());
+    const size_t rows =
+        RolloutOpenLoop<Odin3Dof, double>(setup_, x0_.data(), p.data(), e, limits_, out.data());
     EXPECT_EQ(rows, setup_.times.size());
     return out;
   }
@@ -73,8 +73,8 @@ TEST_F(RolloutJacobianTest, ParameterJacobianMatchesCentralDifferences) {
   std::array<J, kN> xj;
   for (int i = 0; i < kN; ++i) xj[i] = J(x0_[i]);
   std::vector<J> out(setup_.times.size() * kN);
-  const size_t rows = RolloutOpenLoop<Odin3Dof, J>(setup_, xj.data(), pj.data(),
-                                                    EffectValues<J>{}, limits_, out.data());
+  const size_t rows = RolloutOpenLoop<Odin3Dof, J>(setup_, xj.data(), pj.data(), EffectValues<J>{},
+                                                   limits_, out.data());
   ASSERT_EQ(rows, setup_.times.size());
 
   std::vector<std::vector<double>> jet(Odin3Dof::kParams), fd(Odin3Dof::kParams);
@@ -140,6 +140,39 @@ TEST_F(RolloutJacobianTest, EffectJacobianMatchesCentralDifferences) {
     }
   }
   ExpectColumnsAgree(jet, fd, names);
+}
+
+// The adaptive Dormand-Prince rollout differentiates too: its step control decides on values
+// only, so the Jet rollout's values equal the double rollout's to round-off, and its Jacobian
+// matches central differences to the integrator's tolerance.
+TEST_F(RolloutJacobianTest, AdaptiveRolloutJacobianMatchesCentralDifferences) {
+  using J = ceres::Jet<double, Odin3Dof::kParams>;
+  setup_.integrator = Integrator::kDormandPrince;
+  std::array<J, Odin3Dof::kParams> pj;
+  for (int i = 0; i < Odin3Dof::kParams; ++i) pj[i] = J(Odin3Dof::kDefaultParams[i], i);
+  std::array<J, kN> xj;
+  for (int i = 0; i < kN; ++i) xj[i] = J(x0_[i]);
+  std::vector<J> out(setup_.times.size() * kN);
+  const size_t rows = RolloutOpenLoop<Odin3Dof, J>(setup_, xj.data(), pj.data(), EffectValues<J>{},
+                                                   limits_, out.data());
+  ASSERT_EQ(rows, setup_.times.size());
+  const auto base = Rollout(Odin3Dof::kDefaultParams, {});
+  for (size_t i = 0; i < out.size(); ++i)
+    EXPECT_NEAR(out[i].a, base[i], 1e-12 * (1 + std::abs(base[i])));
+  for (int j = 0; j < Odin3Dof::kParams; ++j) {
+    const double h = 1e-4 * Odin3Dof::kDefaultParams[j];
+    auto plus = Odin3Dof::kDefaultParams, minus = Odin3Dof::kDefaultParams;
+    plus[j] += h;
+    minus[j] -= h;
+    const auto yp = Rollout(plus, {}), ym = Rollout(minus, {});
+    double err = 0, scale = 0;
+    for (size_t i = 0; i < out.size(); ++i) {
+      const double fd = (yp[i] - ym[i]) / (2 * h);
+      err = std::max(err, std::abs(out[i].v[j] - fd));
+      scale = std::max(scale, std::abs(fd));
+    }
+    EXPECT_LE(err, 1e-4 * scale) << Odin3Dof::kParamNames[j];
+  }
 }
 
 }  // namespace
