@@ -1,6 +1,7 @@
 // The catalogue's effects as numbers of scalar type T, so that their sizes can be fitted
 // through a differentiable rollout. Neutral values (no effect) are the defaults. The delay is a
-// double: it moves the input signal in time and is found by a 1-D search, not by derivatives.
+// double: it moves the input signal in time and is found by a bounded search, not by
+// derivatives.
 #pragma once
 
 #include <array>
@@ -22,6 +23,8 @@ struct EffectValues {
   T inertia_scale = T(1);
   T damping_scale = T(1);
   double saturation_fraction = 0.0;  // 0: no clipping
+  // Extra delay per input, on top of delay_s (empty: none); for per-input delay estimates.
+  std::vector<double> input_delays_s;
 };
 
 // The values of a list of effects (each kind at most once).

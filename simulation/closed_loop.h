@@ -76,9 +76,10 @@ ClosedLoopRun RunClosedLoop(Maneuver& maneuver, const std::array<double, V::kPar
     run.times.push_back(t);
     for (int i = 0; i < V::kStates; ++i) run.states.push_back(x(i));
     if (maneuver.Done() || k + 1 == ticks) break;
+    std::array<double, V::kInputs> cmd;
     for (int s = 0; s < substeps; ++s) {
-      const double* cmd = run.commands.At(t + s * h - delay);
-      stepper.Step(cmd, h, x);
+      run.commands.Delayed(t + s * h, delay, effects.input_delays_s, cmd.data());
+      stepper.Step(cmd.data(), h, x);
     }
     if (!x.allFinite() || x.cwiseAbs().maxCoeff() > 1e7) {
       run.diverged = true;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -24,9 +25,22 @@ class InputTrack {
 
   // Pointer to the `inputs()` values in force at t; the track must not be empty.
   const double* At(double t) const {
-    if (hint_ >= times_.size() || times_[hint_] > t) hint_ = 0;
+    if (hint_ >= times_.size() || times_[hint_] > t) {
+      const auto it = std::upper_bound(times_.begin(), times_.end(), t);
+      hint_ = it == times_.begin() ? 0 : static_cast<size_t>(it - times_.begin()) - 1;
+    }
     while (hint_ + 1 < times_.size() && times_[hint_ + 1] <= t) ++hint_;
     return values_.data() + hint_ * inputs_;
+  }
+
+  // The commands in force at t - delay (and, per input, t - delay - extra[i]) into u.
+  template <typename T>
+  void Delayed(double t, double delay, const std::vector<double>& extra, T* u) const {
+    const double* cmd = At(t - delay);
+    for (int i = 0; i < inputs_; ++i) u[i] = T(cmd[i]);
+    if (extra.empty()) return;
+    for (int i = 0; i < inputs_; ++i)
+      if (extra[i] != 0.0) u[i] = T(At(t - delay - extra[i])[i]);
   }
 
   // Largest |u_i| over the track, per input (the peak command).

@@ -42,8 +42,7 @@ size_t RolloutOpenLoop(const OpenLoopSetup& setup, const T* x0, const T* params,
       const int n = std::max(1, static_cast<int>(std::ceil(span / setup.max_step - 1e-9)));
       const double h = span / n;
       for (int s = 0; s < n; ++s) {
-        const double* cmd = setup.inputs->At(setup.times[k - 1] + s * h - delay);
-        for (int i = 0; i < V::kInputs; ++i) u[i] = T(cmd[i]);
+        setup.inputs->Delayed(setup.times[k - 1] + s * h, delay, effects.input_delays_s, u.data());
         if (!stepper.Step(u.data(), h, x)) return k;
       }
     }

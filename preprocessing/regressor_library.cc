@@ -1,0 +1,62 @@
+#include "preprocessing/regressor_library.h"
+
+#include <Eigen/QR>
+
+namespace usvid {
+
+RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
+                              const std::vector<NamedSignal>& inputs,
+                              const LibraryOptions& options) {
+  const Eigen::Index n = !states.empty()   ? states[0].values.size()
+                         : !inputs.empty() ? inputs[0].values.size()
+                                           : 0;
+  std::vector<std::string> names;
+  std::vector<Eigen::VectorXd> cols;
+  if (options.constant) {
+    names.push_back("1");
+    cols.push_back(Eigen::VectorXd::Ones(n));
+  }
+  for (const NamedSignal& x : states) {
+    names.push_back(x.name);
+    cols.push_back(x.values);
+  }
+  if (options.products) {
+    for (size_t i = 0; i < states.size(); ++i)
+      for (size_t k = i; k < states.size(); ++k) {
+        names.push_back(states[i].name + "*" + states[k].name);
+        cols.push_back(states[i].values.cwiseProduct(states[k].values));
+      }
+  }
+  if (options.abs_terms) {
+    for (const NamedSignal& x : states) {
+      names.push_back("abs(" + x.name + ")*" + x.name);
+      cols.push_back(x.values.cwiseAbs().cwiseProduct(x.values));
+    }
+  }
+  for (const NamedSignal& u : inputs) {
+    names.push_back(u.name);
+    cols.push_back(u.values);
+  }
+  RegressorLibrary lib{names, Eigen::MatrixXd(n, static_cast<Eigen::Index>(cols.size()))};
+  for (size_t c = 0; c < cols.size(); ++c) lib.columns.col(static_cast<Eigen::Index>(c)) = cols[c];
+  return lib;
+}
+
+LinearFit FitLeastSquares(const Eigen::MatrixXd& columns, const Eigen::VectorXd& target) {
+  // Columns scaled to unit RMS so that N and rad/s sit in one well-conditioned problem.
+  Eigen::VectorXd scale = (columns.colwise().squaredNorm() / std::max<double>(1, columns.rows()))
+                              .cwiseSqrt()
+                              .transpose();
+  for (Eigen::Index c = 0; c < scale.size(); ++c)
+    if (scale(c) == 0.0) scale(c) = 1.0;
+  const Eigen::MatrixXd a = columns * scale.cwiseInverse().asDiagonal();
+  LinearFit fit;
+  fit.weights = a.colPivHouseholderQr().solve(target).cwiseQuotient(scale);
+  const Eigen::VectorXd residual = target - columns * fit.weights;
+  fit.ssr = residual.squaredNorm();
+  const double sst = (target.array() - target.mean()).square().sum();
+  fit.r2 = sst > 0 ? 1.0 - fit.ssr / sst : 0.0;
+  return fit;
+}
+
+}  // namespace usvid

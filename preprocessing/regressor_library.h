@@ -1,0 +1,41 @@
+// Candidate regressors for equation-error fits (delay scans, SINDy): from state channels x and
+// input channels u, the columns 1, x_i, u_j, x_i x_k (i <= k) and |x_i| x_i, each named in the
+// contract's expression syntax ("u", "v*r", "abs(u)*u", "tau_x") so a fitted row of weights is
+// an equation that can be written out.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace usvid {
+
+struct NamedSignal {
+  std::string name;
+  Eigen::VectorXd values;
+};
+
+struct LibraryOptions {
+  bool constant = true;
+  bool products = true;   // x_i x_k
+  bool abs_terms = true;  // |x_i| x_i
+};
+
+struct RegressorLibrary {
+  std::vector<std::string> names;
+  Eigen::MatrixXd columns;  // rows: samples, one column per name
+};
+
+RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
+                              const std::vector<NamedSignal>& inputs,
+                              const LibraryOptions& options);
+
+// Least-squares weights of target on the columns, and the fit's R^2 (1 - SSR / SST).
+struct LinearFit {
+  Eigen::VectorXd weights;
+  double r2 = 0.0;
+  double ssr = 0.0;
+};
+LinearFit FitLeastSquares(const Eigen::MatrixXd& columns, const Eigen::VectorXd& target);
+
+}  // namespace usvid
