@@ -35,7 +35,7 @@ Dataset Resample(const Dataset& data, const ResampleOptions& options, ResampleRe
   if (data.rows() < 2) throw InputError("resample: the data need at least two rows");
   const double t0 = data.t()(0), t1 = data.t()(data.rows() - 1);
   const double step = 1.0 / options.rate_hz;
-  const auto n = static_cast<Eigen::Index>(std::floor((t1 - t0) / step + 1e-9)) + 1;
+  const auto n = static_cast<Eigen::Index>(std::floor((t1 - t0) / step + 1e-6)) + 1;
   Dataset out(Eigen::VectorXd::LinSpaced(n, t0, t0 + (n - 1) * step));
   out.metadata() = data.metadata();
 

@@ -10,5 +10,6 @@ void AddImportCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
 void AddSimulateCommand(CLI::App& app);
 void AddVesselCommand(CLI::App& app);
+void AddPreprocessCommand(CLI::App& app);
 
 }  // namespace usvid

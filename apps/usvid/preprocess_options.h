@@ -1,0 +1,54 @@
+// The preprocessing flags shared by `usvid preprocess` and `usvid identify`:
+// --rate, --interpolation, --derivative, --delay, --max-delay, --no-step-breaks.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "core/error.h"
+#include "core/parse_number.h"
+#include "preprocessing/pipeline.h"
+
+namespace usvid {
+
+struct PreprocessFlags {
+  double rate_hz = 0.0;
+  std::string interpolation = "spline";
+  std::string derivative = "spline";
+  std::string delay = "0";
+  double max_delay_s = 2.0;
+  bool no_step_breaks = false;
+
+  void Add(CLI::App& cmd) {
+    cmd.add_option("--rate", rate_hz, "Resample to this rate [Hz] (0: the data's own)");
+    cmd.add_option("--interpolation", interpolation, "linear or spline")
+        ->check(CLI::IsMember({"linear", "spline"}));
+    cmd.add_option("--derivative", derivative,
+                   "sg[:W[:P]], spline[:LAMBDA], tv[:ALPHA] or euler[:W] (the report's)");
+    cmd.add_option("--delay", delay, "Input delay: auto (estimated) or seconds");
+    cmd.add_option("--max-delay", max_delay_s, "Longest delay --delay auto considers [s]");
+    cmd.add_flag("--no-step-breaks", no_step_breaks,
+                 "Do not let derivatives jump where the inputs step");
+  }
+
+  PreprocessOptions Options() const {
+    PreprocessOptions o;
+    o.rate_hz = rate_hz;
+    o.interpolation =
+        interpolation == "linear" ? Interpolation::kLinear : Interpolation::kCubicSpline;
+    o.derivative = DerivativeMethod::Parse(derivative);
+    o.step_breaks = !no_step_breaks;
+    o.max_delay_s = max_delay_s;
+    if (delay == "auto") {
+      o.estimate_delay = true;
+    } else {
+      const ParsedNumber p = ParseNumber(delay);
+      if (p.status != NumberStatus::kOk || p.value < 0)
+        throw InputError("--delay '" + delay + "': expected auto or a non-negative number of s");
+      o.delay_s = p.value;
+    }
+    return o;
+  }
+};
+
+}  // namespace usvid

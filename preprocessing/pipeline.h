@@ -1,0 +1,42 @@
+// The preprocessing every derivative-based identification runs, in one call: multi-rate data
+// onto a uniform grid, the input delay (given, or estimated by the equation-error scan) taken
+// out by shifting the inputs, then each state smoothed and differentiated (by default with
+// breaks where the shifted inputs step). Used by `usvid preprocess` and `usvid identify`.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+#include "preprocessing/delay_estimation.h"
+#include "preprocessing/derivative.h"
+#include "preprocessing/resample.h"
+
+namespace usvid {
+
+struct PreprocessOptions {
+  double rate_hz = 0.0;  // 0: the data's own rate (median interval)
+  Interpolation interpolation = Interpolation::kCubicSpline;
+  DerivativeMethod derivative;
+  bool step_breaks = true;
+  // Delay in seconds, or none: estimated when `estimate_delay`.
+  double delay_s = 0.0;
+  bool estimate_delay = false;
+  double max_delay_s = 2.0;
+};
+
+struct PreparedData {
+  // The grid: states (smoothed), "<state>_dot" derivatives, inputs shifted by the delay, and
+  // the raw (resampled) states as "<state>_raw".
+  Dataset data;
+  double delay_s = 0.0;
+  std::optional<DelayEstimate> delay_estimate;
+  std::vector<std::string> notes;  // what was done, for stderr and model.json
+};
+
+// Throws InputError naming a missing channel or a bad option.
+PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& states,
+                        const std::vector<std::string>& inputs, const PreprocessOptions& options);
+
+}  // namespace usvid
