@@ -1,0 +1,35 @@
+// Random trees and their variation: ramped half-and-half initialisation, subtree crossover and
+// subtree or point mutation, all within a maximum depth. Randomness comes only from the stream
+// passed in, so results depend on the seed, never on threads or scheduling.
+#pragma once
+
+#include <random>
+#include <vector>
+
+#include "methods/gp/tree.h"
+
+namespace usvid::gp {
+
+struct PrimitiveSet {
+  std::vector<Op> functions;  // from --operators
+  int variables = 1;
+  double constant_probability = 0.1;  // of a terminal being a constant in [-1, 1]
+};
+
+using Rng = std::mt19937_64;
+
+// A stream for (seed, generation, index): SplitMix64 of the three.
+Rng StreamFor(uint64_t seed, uint64_t generation, uint64_t index);
+
+// `full`: every branch reaches `depth`; otherwise branches may stop early (grow).
+Tree RandomTree(Rng& rng, const PrimitiveSet& set, int depth, bool full);
+
+// The child: a copy of `a` with a random subtree replaced by a random subtree of `b`, within
+// `max_depth` (a copy of `a` when no such pair is found in a few tries).
+Tree Crossover(Rng& rng, const Tree& a, const Tree& b, int max_depth);
+
+// Subtree mutation (a random subtree replaced by a new one of depth <= 3) or point mutation
+// (one node changed to another of the same arity), half and half, within `max_depth`.
+Tree Mutate(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth);
+
+}  // namespace usvid::gp
