@@ -73,8 +73,8 @@ Dataset Resample(const Dataset& data, const ResampleOptions& options, ResampleRe
       const bool spline = options.interpolation == Interpolation::kCubicSpline && st.size() >= 3;
       std::optional<CubicSpline> cs;
       if (spline) cs.emplace(st, sy);
-      const auto lo = static_cast<Eigen::Index>(std::ceil((st.front() - t0) / step - 1e-9));
-      const auto hi = static_cast<Eigen::Index>(std::floor((st.back() - t0) / step + 1e-9));
+      const auto lo = static_cast<Eigen::Index>(std::ceil((st.front() - t0) / step - 1e-6));
+      const auto hi = static_cast<Eigen::Index>(std::floor((st.back() - t0) / step + 1e-6));
       size_t k = 0;
       for (Eigen::Index i = std::max<Eigen::Index>(lo, 0); i <= std::min(hi, n - 1); ++i) {
         const double t = out.t()(i);

@@ -11,5 +11,6 @@ void AddInfoCommand(CLI::App& app);
 void AddSimulateCommand(CLI::App& app);
 void AddVesselCommand(CLI::App& app);
 void AddPreprocessCommand(CLI::App& app);
+void AddIdentifyCommand(CLI::App& app);
 
 }  // namespace usvid

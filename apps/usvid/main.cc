@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   usvid::AddSimulateCommand(app);
   usvid::AddVesselCommand(app);
   usvid::AddPreprocessCommand(app);
+  usvid::AddIdentifyCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     const auto subcommands = app.get_subcommands({});
     if (std::none_of(subcommands.begin(), subcommands.end(),

@@ -1,0 +1,202 @@
+// The equations of model.json (contract section 5): parsed once into a flat postfix program and
+// evaluated per sample, over a whole Dataset, or on any scalar T (double, ceres::Jet).
+//
+// Grammar (whitespace between tokens is ignored; columns in messages are 1-based bytes):
+//   expression := product (('+' | '-') product)*           left-associative
+//   product    := unary (('*' | '/') unary)*               left-associative
+//   unary      := '-' unary | primary                      binds tighter than '*' and '/', as in C
+//   primary    := number | channel | function '(' expression ')' | '(' expression ')'
+//   number     := digits ['.' digits*] [exponent] | '.' digits [exponent]
+//                 exponent := ('e' | 'E') ['+' | '-'] digits        e.g. 2.0263e-4, .5, 3.
+//   channel    := [A-Za-z_][A-Za-z0-9_]*, other than a function name
+//   function   := abs | tanh | sin | cos | exp | sqrt            (one argument each)
+// There is no unary '+', no '^' (write powers as repeated products, u*u) and no comma.
+//
+// Protected semantics (the same in every evaluation, so a GP model means the same everywhere):
+//   x / y  = x         when |y| < 1e-12 (protected division, as in GP), x / y otherwise
+//   sqrt(x) = sqrt(|x|)
+//   exp(x)  = exp(min(x, 50))  (no overflow; as GP's interpreter, methods/gp/interpreter.h)
+// Everything else is IEEE arithmetic with the <cmath> functions; NaN propagates.
+//
+// Parse() throws InputError "<where>: column N: <what>" for an empty text, an unexpected
+// character or token, a malformed or out-of-range number, a missing ')', an unknown function, a
+// function without parentheses, text after a complete expression, or nesting deeper than 256.
+// Evaluate(const Dataset&) throws InputError naming a channel the data lack.
+// Sub-expressions made of constants only are folded at parse time when the value is finite
+// (bit-identical results). An Expression is immutable after Parse(); its const methods may run
+// concurrently.
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace usvid {
+
+class Dataset;
+
+enum class OpCode : std::uint8_t {
+  kConstant,  // push value
+  kVariable,  // push variables[index]
+  kNegate,
+  kAdd,
+  kSubtract,
+  kMultiply,
+  kDivide,  // protected
+  kAbs,
+  kTanh,
+  kSin,
+  kCos,
+  kExp,
+  kSqrt,  // of |x|
+};
+
+struct Instruction {
+  OpCode op = OpCode::kConstant;
+  int index = 0;       // kVariable: position in Expression::Variables()
+  double value = 0.0;  // kConstant
+};
+
+inline constexpr double kProtectedDivisionEpsilon = 1e-12;
+inline constexpr double kProtectedExpLimit = 50.0;
+
+// The name of a function op ("abs", "tanh", ...); empty for the other ops.
+std::string_view FunctionName(OpCode op);
+// The op applied to x (unary) or to x and y (binary) exactly as evaluation computes it; aborts
+// for kConstant and kVariable.
+double ApplyOperator(OpCode op, double x, double y = 0.0);
+
+class Expression {
+ public:
+  // The constant 0.
+  Expression();
+
+  static Expression Parse(const std::string& text, const std::string& where = "expression");
+
+  // The channel names the expression uses, sorted, unique.
+  const std::vector<std::string>& Variables() const { return variables_; }
+  // The postfix program (operands before their operator).
+  const std::vector<Instruction>& program() const { return program_; }
+
+  // Value for one sample; variables[i] is the value of Variables()[i] (aborts if the span is
+  // shorter). Does not allocate up to a stack depth of kInlineStack (deeper programs, which only
+  // heavy right-nesting produces, use one heap buffer per call).
+  double Evaluate(std::span<const double> variables) const;
+  // Value at every row of `data`, evaluated column-wise in blocks, bit-identical to
+  // Evaluate(span) row by row; NaN at rows where a channel the expression uses is not sampled.
+  Eigen::VectorXd Evaluate(const Dataset& data) const;
+  // The same as Evaluate(span) on any scalar with the <cmath> functions found by ADL.
+  template <typename T>
+  T EvaluateT(const T* variables) const;
+
+  // The expression in the contract's syntax; Parse(ToString()) evaluates bit-identically.
+  std::string ToString() const;
+
+  // The expression expanded into a sum of products, as (term, coefficient) sorted by term; see
+  // methods/expression_terms.h for the normal form.
+  std::vector<std::pair<std::string, double>> Terms() const;
+
+  static constexpr int kInlineStack = 32;
+
+ private:
+  template <typename T>
+  T Run(const T* variables, T* stack) const;
+
+  std::vector<Instruction> program_;
+  std::vector<std::string> variables_;
+  int max_stack_ = 1;
+  std::string where_ = "expression";
+};
+
+template <typename T>
+T ProtectedDivide(const T& x, const T& y) {
+  using std::abs;
+  return abs(y) < T(kProtectedDivisionEpsilon) ? x : T(x / y);
+}
+
+template <typename T>
+T ProtectedSqrt(const T& x) {
+  using std::abs;
+  using std::sqrt;
+  return sqrt(abs(x));
+}
+
+template <typename T>
+T ProtectedExp(const T& x) {
+  using std::exp;
+  return exp(T(kProtectedExpLimit) < x ? T(kProtectedExpLimit) : x);  // NaN stays NaN
+}
+
+template <typename T>
+T Expression::Run(const T* variables, T* stack) const {
+  using std::abs;
+  using std::cos;
+  using std::sin;
+  using std::tanh;
+  T* top = stack;  // one past the last pushed value
+  for (const Instruction& in : program_) {
+    switch (in.op) {
+      case OpCode::kConstant:
+        *top++ = T(in.value);
+        break;
+      case OpCode::kVariable:
+        *top++ = variables[in.index];
+        break;
+      case OpCode::kNegate:
+        top[-1] = -top[-1];
+        break;
+      case OpCode::kAdd:
+        top[-2] = top[-2] + top[-1];
+        --top;
+        break;
+      case OpCode::kSubtract:
+        top[-2] = top[-2] - top[-1];
+        --top;
+        break;
+      case OpCode::kMultiply:
+        top[-2] = top[-2] * top[-1];
+        --top;
+        break;
+      case OpCode::kDivide:
+        top[-2] = ProtectedDivide(top[-2], top[-1]);
+        --top;
+        break;
+      case OpCode::kAbs:
+        top[-1] = abs(top[-1]);
+        break;
+      case OpCode::kTanh:
+        top[-1] = tanh(top[-1]);
+        break;
+      case OpCode::kSin:
+        top[-1] = sin(top[-1]);
+        break;
+      case OpCode::kCos:
+        top[-1] = cos(top[-1]);
+        break;
+      case OpCode::kExp:
+        top[-1] = ProtectedExp(top[-1]);
+        break;
+      case OpCode::kSqrt:
+        top[-1] = ProtectedSqrt(top[-1]);
+        break;
+    }
+  }
+  return top[-1];
+}
+
+template <typename T>
+T Expression::EvaluateT(const T* variables) const {
+  if (max_stack_ <= kInlineStack) {
+    T stack[kInlineStack];
+    return Run(variables, stack);
+  }
+  std::vector<T> stack(static_cast<std::size_t>(max_stack_));
+  return Run(variables, stack.data());
+}
+
+}  // namespace usvid

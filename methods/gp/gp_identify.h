@@ -1,0 +1,37 @@
+// GP-SR identification of a whole model: one GP-OLS search per state derivative (after
+// preprocessing), with the states and inputs as variables. The result is the model JSON of
+// contract section 5 (equations in channel names) plus, per equation, the Pareto front of error
+// against size, the generation log and why the search stopped.
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "methods/gp/search.h"
+#include "preprocessing/pipeline.h"
+
+namespace usvid::gp {
+
+// "+,-,*,abs,tanh,/" -> functions; throws InputError naming an unknown operator.
+std::vector<Op> ParseOperators(const std::string& list);
+std::string OperatorList(const std::vector<Op>& ops);
+
+struct GpIdentification {
+  nlohmann::json equations = nlohmann::json::object();   // state -> expression of its derivative
+  nlohmann::json parameters = nlohmann::json::object();  // "<state>.bias", "<state>.w1", ...
+  nlohmann::json details = nlohmann::json::object();     // per state: r2, size, pareto, log
+  double node_evaluations = 0.0;
+};
+
+// One equation per state in `states`; the variables are `variables` (states that enter the
+// dynamics, e.g. the msd's position x, which needs no equation of its own) and `inputs`.
+// progress(state, log) after each generation.
+GpIdentification IdentifyWithGp(
+    const PreparedData& prepared, const std::vector<std::string>& states,
+    const std::vector<std::string>& variables, const std::vector<std::string>& inputs,
+    const GpOptions& options,
+    const std::function<void(const std::string&, const GenerationLog&)>& progress = {});
+
+}  // namespace usvid::gp

@@ -1,0 +1,105 @@
+// `usvid identify --method gp` as a user runs it: model.json with the contract's fields and
+// equations, the same equations at 1 and 2 threads, bad options refused with exit code 2.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/csv_dataset.h"
+#include "core/json_file.h"
+#include "methods/expression.h"
+#include "tests/apps/run_usvid.h"
+
+namespace usvid {
+namespace {
+
+using testing::FreshTempDir;
+using ::testing::HasSubstr;
+using testing::RunUsvid;
+namespace fs = std::filesystem;
+
+class IdentifyCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = FreshTempDir();
+    data_ = (dir_ / "msd.csv").string();
+    ASSERT_EQ(RunUsvid("simulate --vessel msd --maneuver random-steps --duration 300 --noise 0.01 "
+                       "--seed 3 --out " +
+                       data_)
+                  .exit_code,
+              0);
+  }
+  fs::path dir_;
+  std::string data_;
+};
+
+// Contract section 5: method, vessel, states, inputs, parameters, train, seed, equations.
+TEST_F(IdentifyCliTest, WritesModelJsonWithEquations) {
+  const auto out = (dir_ / "model.json").string();
+  const auto r = RunUsvid("identify --method gp --vessel msd --data " + data_ +
+                          " --population 300 --generations 20 --ols-threshold 0.01 --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("generation 0"));
+  const nlohmann::json m = ReadJsonFile(out);
+  for (const char* key :
+       {"method", "vessel", "states", "inputs", "parameters", "train", "seed", "equations"})
+    EXPECT_TRUE(m.contains(key)) << key;
+  EXPECT_EQ(m.at("states"), nlohmann::json({"v"}));  // x follows from the kinematics
+  EXPECT_EQ(m.at("inputs"), nlohmann::json({"f"}));
+  const std::string eq = m.at("equations").at("v");
+  EXPECT_THAT(eq, HasSubstr("x"));
+  EXPECT_THAT(eq, HasSubstr("f"));
+  EXPECT_FALSE(m.at("gp").at("equations").at("v").at("pareto").empty());
+  // The equation is the contract's syntax: it parses and evaluates on the data's channels.
+  const Expression e = Expression::Parse(eq, "model.json");
+  const Eigen::VectorXd values = e.Evaluate(ReadDatasetCsv(data_));
+  EXPECT_TRUE(values.allFinite());
+}
+
+// The same seed gives the same equations at 1 and at 2 threads.
+TEST_F(IdentifyCliTest, SameSeedSameEquationsAtAnyThreadCount) {
+  const std::string common = "identify --method gp --vessel msd --data " + data_ +
+                             " --population 200 --generations 8 --seed 11 --operators +,-,*,abs";
+  const auto one = (dir_ / "one.json").string(), two = (dir_ / "two.json").string();
+  ASSERT_EQ(RunUsvid(common + " --threads 1 --out " + one).exit_code, 0);
+  ASSERT_EQ(RunUsvid(common + " --threads 2 --out " + two).exit_code, 0);
+  EXPECT_EQ(ReadJsonFile(one).at("equations"), ReadJsonFile(two).at("equations"));
+  EXPECT_EQ(ReadJsonFile(one).at("parameters"), ReadJsonFile(two).at("parameters"));
+}
+
+// --delay auto: the report's scan, made right, finds the msd's 0.5 s input delay and the
+// model says so.
+TEST_F(IdentifyCliTest, FindsTheInputDelay) {
+  const auto late = (dir_ / "late.csv").string(), out = (dir_ / "late.json").string();
+  ASSERT_EQ(RunUsvid("simulate --vessel msd --maneuver random-steps --duration 300 --rate 100 "
+                     "--noise 0.01 --effect input_delay=0.5 --out " +
+                     late)
+                .exit_code,
+            0);
+  const auto r = RunUsvid("identify --method gp --vessel msd --data " + late +
+                          " --delay auto --population 100 --generations 5 --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(ReadJsonFile(out).at("preprocessing").at("delay_s").get<double>(), 0.5, 0.01);
+}
+
+// Bad options: exit 2, the option named, no model written.
+TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
+  const auto out = (dir_ / "bad.json").string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--method gp --vessel msd --operators +,^", "unknown operator '^'"},
+      {"--method magic --vessel msd", "--method"},
+      {"--method gp --states v,w --inputs f", "no channel 'w'"},
+      {"--method gp --vessel msd --population 2", "--population"},
+      {"--method gp --vessel msd --derivative sg:20", "window must be odd"},
+      {"--method gp", "give --vessel, or --states and --inputs"},
+  };
+  for (const auto& [args, message] : cases) {
+    const auto r = RunUsvid("identify " + args + " --data " + data_ + " --out " + out);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_THAT(r.err, HasSubstr(message)) << args;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+}
+
+}  // namespace
+}  // namespace usvid
