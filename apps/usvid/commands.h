@@ -12,5 +12,6 @@ void AddSimulateCommand(CLI::App& app);
 void AddVesselCommand(CLI::App& app);
 void AddPreprocessCommand(CLI::App& app);
 void AddIdentifyCommand(CLI::App& app);
+void AddEvaluateCommand(CLI::App& app);
 
 }  // namespace usvid

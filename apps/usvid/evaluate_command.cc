@@ -1,0 +1,71 @@
+// usvid evaluate --model model.json --data F.csv [--out DIR]
+// Free-runs the model on F's inputs and scores it: metrics.json (on stdout without --out) and,
+// with --out, a plot of measured against simulated channels.
+
+#include <iostream>
+#include <memory>
+
+#include "apps/usvid/commands.h"
+#include "core/atomic_file.h"
+#include "core/csv_dataset.h"
+#include "core/error.h"
+#include "core/json_file.h"
+#include "metrics/evaluation.h"
+#include "plot/figure_grid.h"
+
+namespace usvid {
+namespace {
+
+struct EvaluateOptions {
+  std::string model;
+  std::string data;
+  std::string out;
+};
+
+void RunEvaluate(const EvaluateOptions& o) {
+  const nlohmann::json model = ReadJsonFile(o.model);
+  if (!model.is_object()) throw InputError(o.model + ": expected a JSON object");
+  const Dataset data = ReadDatasetCsv(o.data);
+  Evaluation e;
+  try {
+    e = EvaluateModel(model, data);
+  } catch (const InputError& err) {
+    throw InputError(o.model + " on " + o.data + ": " + err.what());
+  }
+  e.metrics["model"] = o.model;
+  e.metrics["data"] = o.data;
+  if (o.out.empty()) {
+    std::cout << e.metrics.dump(2) << '\n';
+    return;
+  }
+  EnsureOutputDirectory(o.out);
+  FigureGrid grid;
+  grid.SetTitle("free run of " + model.value("method", std::string("model")) + " on " + o.data)
+      .SetXLabel("t", "s");
+  for (const auto& [state, _] : model.at("equations").items()) {
+    if (!data.Has(state)) continue;
+    LinePlot p;
+    p.SetYLabel(state)
+        .AddSeries("measured", data.t(), data[state])
+        .AddSeries("model", data.t(), e.run.simulated[state]);
+    grid.Add(std::move(p));
+  }
+  grid.WriteSvg(o.out + "/free_run.svg", 1000,
+                260 * static_cast<int>(model.at("equations").size()) + 80);
+  WriteJsonFile(o.out + "/metrics.json", e.metrics);
+  std::cerr << "usvid evaluate: wrote " << o.out << "/metrics.json and free_run.svg\n";
+}
+
+}  // namespace
+
+void AddEvaluateCommand(CLI::App& app) {
+  auto o = std::make_shared<EvaluateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "evaluate", "Free-run a model on data's inputs and score it (fit %, NRMSE, divergence)");
+  cmd->add_option("--model", o->model, "model.json from usvid identify")->required();
+  cmd->add_option("--data", o->data, "Data CSV to score on")->required();
+  cmd->add_option("--out", o->out, "Directory for metrics.json and plots (else stdout)");
+  cmd->callback([o] { RunEvaluate(*o); });
+}
+
+}  // namespace usvid

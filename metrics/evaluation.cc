@@ -1,0 +1,56 @@
+#include "metrics/evaluation.h"
+
+#include <cmath>
+
+#include "methods/expression.h"
+#include "metrics/fit_metrics.h"
+#include "preprocessing/pipeline.h"
+
+namespace usvid {
+
+Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& data) {
+  Evaluation e;
+  e.run = FreeRunModel(model, data);
+  nlohmann::json channels = nlohmann::json::object();
+  for (const std::string& c : e.run.channels)
+    if (data.Has(c)) channels[c] = ScoreChannel(data[c], e.run.simulated[c]).ToJson();
+
+  // One-step derivative R^2: each equation at the measured states against the data's
+  // derivatives (default estimator, inputs shifted by the model's delay).
+  nlohmann::json r2 = nlohmann::json::object();
+  std::vector<std::string> states, inputs;
+  for (const auto& [state, _] : model.at("equations").items()) states.push_back(state);
+  if (model.contains("inputs"))
+    for (const auto& i : model.at("inputs")) inputs.push_back(i.get<std::string>());
+  std::vector<std::string> variables = states;
+  if (model.contains("variables"))
+    variables = model.at("variables").get<std::vector<std::string>>();
+  bool can_differentiate = !inputs.empty();
+  for (const auto& names : {variables, inputs})
+    for (const std::string& n : names) can_differentiate = can_differentiate && data.Has(n);
+  if (can_differentiate) {
+    PreprocessOptions pre;
+    if (model.contains("preprocessing")) pre.delay_s = model["preprocessing"].value("delay_s", 0.0);
+    const PreparedData prepared = Preprocess(data, variables, inputs, pre);
+    for (const auto& [state, text] : model.at("equations").items()) {
+      const Expression expr = Expression::Parse(text.get<std::string>(), "model: " + state);
+      r2[state] = RSquared(prepared.data[state + "_dot"], expr.Evaluate(prepared.data));
+    }
+  }
+  e.metrics = {{"channels", channels},
+               {"derivative_r2", r2},
+               {"diverged", e.run.diverged},
+               {"samples", data.rows()},
+               {"seconds", data.duration()}};
+  // Flat per-channel fields too, as the contract lists them per state channel.
+  for (const auto& [c, s] : channels.items()) e.metrics[c] = s;
+  if (e.run.diverged) e.metrics["diverged_at_s"] = e.run.diverged_at_s;
+  if (data.Has("north") && data.Has("east") && e.run.simulated.Has("north")) {
+    const Eigen::Index last = data.rows() - 1;
+    e.metrics["position_drift_m"] = std::hypot(data["north"](last) - e.run.simulated["north"](last),
+                                               data["east"](last) - e.run.simulated["east"](last));
+  }
+  return e;
+}
+
+}  // namespace usvid
