@@ -14,8 +14,10 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/gp/gp_identify.h"
 #include "simulation/vessel_simulator.h"
+#include "simulators/odin3dof.h"
 
 namespace usvid {
 namespace {
@@ -35,8 +37,49 @@ struct IdentifyOptions {
   long fit_rows = 4000;
   uint64_t seed = 1;
   int threads = 0;
+  std::string fossen_mode = "simulation";
+  double segment_s = 10.0;
+  bool robust = false;
   std::string out;
 };
+
+// fossen-ceres: the parametric odin3dof model, equation error then multiple shooting.
+nlohmann::json IdentifyFossen(const IdentifyOptions& o, const PreparedData& prepared) {
+  fossen::FossenOptions fo;
+  fo.segment_s = o.segment_s;
+  fo.robust = o.robust;
+  fo.threads = o.threads > 0 ? o.threads : 1;
+  const fossen::FossenFit eq = fossen::FitEquationError(prepared, fo);
+  std::cerr << "usvid identify: equation-error fit: " << eq.termination << '\n';
+  fossen::FossenFit fit = eq;
+  if (o.fossen_mode == "simulation") {
+    fit = fossen::FitSimulationError(prepared, eq.params, fo);
+    std::cerr << "usvid identify: simulation-error fit (multiple shooting, " << o.segment_s
+              << " s segments): " << fit.termination << '\n';
+  }
+  nlohmann::json params = nlohmann::json::object(), sd = nlohmann::json::object(),
+                 eq_params = nlohmann::json::object();
+  for (int i = 0; i < Odin3Dof::kParams; ++i) {
+    const std::string name(Odin3Dof::kParamNames[i]);
+    params[name] = fit.params[i];
+    sd[name] = fit.sd[i];
+    eq_params[name] = eq.params[i];
+  }
+  return {{"parameters", params},
+          {"equations", fossen::Equations(fit.params)},
+          {"fossen",
+           {{"mode", o.fossen_mode},
+            {"segment_s", o.segment_s},
+            {"robust", o.robust},
+            {"parameter_sd", sd},
+            {"covariance_ok", fit.covariance_ok},
+            {"termination", fit.termination},
+            {"converged", fit.converged},
+            {"initial_cost", fit.initial_cost},
+            {"final_cost", fit.final_cost},
+            {"iterations", fit.iterations},
+            {"equation_error_parameters", eq_params}}}};
+}
 
 // The vessel's states less `excluded`, in order.
 std::vector<std::string> StatesExcept(const VesselInfo& info,
@@ -67,6 +110,11 @@ void RunIdentify(const IdentifyOptions& o) {
   }
   if (states.empty() || inputs.empty())
     throw InputError("identify: give --vessel, or --states and --inputs");
+  if (o.method == "fossen-ceres" && (states != std::vector<std::string>{"u", "v", "r"} ||
+                                     inputs != std::vector<std::string>{"tau_x", "tau_y", "tau_n"}))
+    throw InputError(
+        "--method fossen-ceres: fits the Fossen 3-DOF model of odin3dof, states "
+        "u,v,r and inputs tau_x,tau_y,tau_n (use --vessel odin3dof)");
   if (o.population < 4 || o.generations < 1 || o.max_depth < 2 || o.max_depth > 17)
     throw InputError("identify: --population >= 4, --generations >= 1, --max-depth in [2, 17]");
   if (!(o.ols_threshold >= 0 && o.ols_threshold < 1))
@@ -86,46 +134,48 @@ void RunIdentify(const IdentifyOptions& o) {
   const Dataset data = ReadDatasetCsv(o.data);
   const PreparedData prepared = Preprocess(data, variables, inputs, pre);
   for (const std::string& note : prepared.notes) std::cerr << "usvid identify: " << note << '\n';
-  const gp::GpIdentification gp = gp::IdentifyWithGp(
-      prepared, states, variables, inputs, gpo,
-      [](const std::string& state, const gp::GenerationLog& g) {
-        std::fprintf(stderr,
-                     "usvid identify: %s' generation %d: best r2 %.6f, size %zu, fitness %.6f, "
-                     "%.3g node evaluations/s\n",
-                     state.c_str(), g.generation, g.best_r2, g.best_size, g.best_fitness,
-                     g.node_evals_per_second);
-      });
+  nlohmann::json model = {{"method", o.method},
+                          {"vessel", o.vessel},
+                          {"states", states},
+                          {"variables", variables},
+                          {"inputs", inputs},
+                          {"seed", o.seed},
+                          {"preprocessing",
+                           {{"delay_s", prepared.delay_s},
+                            {"derivative", pre.derivative.Spec()},
+                            {"step_breaks", pre.step_breaks},
+                            {"notes", prepared.notes}}}};
+  if (o.method == "fossen-ceres") {
+    model.update(IdentifyFossen(o, prepared));
+  } else {
+    const gp::GpIdentification gp = gp::IdentifyWithGp(
+        prepared, states, variables, inputs, gpo,
+        [](const std::string& state, const gp::GenerationLog& g) {
+          std::fprintf(stderr,
+                       "usvid identify: %s' generation %d: best r2 %.6f, size %zu, fitness %.6f, "
+                       "%.3g node evaluations/s\n",
+                       state.c_str(), g.generation, g.best_r2, g.best_size, g.best_fitness,
+                       g.node_evals_per_second);
+        });
+    model["parameters"] = gp.parameters;
+    model["equations"] = gp.equations;
+    model["gp"] = {{"operators", gp::OperatorList(gpo.functions)},
+                   {"population", gpo.population},
+                   {"generations", gpo.generations},
+                   {"max_depth", gpo.max_depth},
+                   {"crossover", gpo.crossover},
+                   {"mutation", gpo.mutation},
+                   {"ols_threshold", gpo.ols_threshold},
+                   {"fitness", o.fitness},
+                   {"fit_rows", gpo.fit_rows},
+                   {"node_evaluations", gp.node_evaluations},
+                   {"equations", gp.details}};
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  nlohmann::json model = {
-      {"method", "gp"},
-      {"vessel", o.vessel},
-      {"states", states},
-      {"variables", variables},
-      {"inputs", inputs},
-      {"parameters", gp.parameters},
-      {"equations", gp.equations},
-      {"train", {{"data", o.data}, {"samples", prepared.data.rows()}, {"seconds", seconds}}},
-      {"seed", o.seed},
-      {"preprocessing",
-       {{"delay_s", prepared.delay_s},
-        {"derivative", pre.derivative.Spec()},
-        {"step_breaks", pre.step_breaks},
-        {"notes", prepared.notes}}},
-      {"gp",
-       {{"operators", gp::OperatorList(gpo.functions)},
-        {"population", gpo.population},
-        {"generations", gpo.generations},
-        {"max_depth", gpo.max_depth},
-        {"crossover", gpo.crossover},
-        {"mutation", gpo.mutation},
-        {"ols_threshold", gpo.ols_threshold},
-        {"fitness", o.fitness},
-        {"fit_rows", gpo.fit_rows},
-        {"node_evaluations", gp.node_evaluations},
-        {"equations", gp.details}}}};
+  model["train"] = {{"data", o.data}, {"samples", prepared.data.rows()}, {"seconds", seconds}};
   WriteJsonFile(o.out, model);
-  for (const auto& [state, eq] : gp.equations.items())
+  for (const auto& [state, eq] : model["equations"].items())
     std::cerr << "usvid identify: " << state << "' = " << eq.get<std::string>() << '\n';
   std::cerr << "usvid identify: wrote " << o.out << " (" << seconds << " s)\n";
 }
@@ -135,9 +185,11 @@ void RunIdentify(const IdentifyOptions& o) {
 void AddIdentifyCommand(CLI::App& app) {
   auto o = std::make_shared<IdentifyOptions>();
   CLI::App* cmd = app.add_subcommand("identify", "Fit one identification method to data");
-  cmd->add_option("--method", o->method, "gp (GP-SR with orthogonal least squares)")
+  cmd->add_option("--method", o->method,
+                  "gp (GP-SR with orthogonal least squares) or fossen-ceres (parametric Fossen "
+                  "3-DOF of odin3dof, Ceres)")
       ->required()
-      ->check(CLI::IsMember({"gp"}));
+      ->check(CLI::IsMember({"gp", "fossen-ceres"}));
   cmd->add_option("--data", o->data, "Training data CSV")->required();
   cmd->add_option("--vessel", o->vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->states, "States to find equations for")->delimiter(',');
@@ -155,6 +207,11 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--fit-rows", o->fit_rows, "Rows the search scores on (0: all)");
   cmd->add_option("--seed", o->seed, "Seed of the search");
   cmd->add_option("--threads", o->threads, "OpenMP threads (0: all cores)");
+  cmd->add_option("--fit", o->fossen_mode,
+                  "fossen-ceres: simulation (multiple shooting, default) or equation error")
+      ->check(CLI::IsMember({"simulation", "equation"}));
+  cmd->add_option("--segment", o->segment_s, "fossen-ceres: shooting segment length [s]");
+  cmd->add_flag("--robust", o->robust, "fossen-ceres: Huber loss");
   cmd->add_option("--out", o->out, "model.json to write")->required();
   cmd->callback([o] { RunIdentify(*o); });
 }

@@ -1,0 +1,206 @@
+#include "methods/fossen_ceres/fossen_fit.h"
+
+#include <ceres/ceres.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/parse_number.h"
+#include "simulation/input_track.h"
+#include "simulation/open_loop.h"
+#include "simulators/odin3dof.h"
+
+namespace usvid::fossen {
+namespace {
+
+constexpr int kParams = Odin3Dof::kParams;
+
+double Sd(const Eigen::VectorXd& v) {
+  const double sd = std::sqrt((v.array() - v.mean()).square().mean());
+  return sd > 0 ? sd : 1.0;
+}
+
+// One sample's equation error: M nu' + C(nu) nu + D(nu) nu - tau, normalised.
+struct EquationResidual {
+  double u, v, r, du, dv, dr, tx, ty, tn, sx, sy, sn;
+  template <typename T>
+  bool operator()(const T* p, T* res) const {
+    using std::abs;
+    res[0] = (p[0] * du - p[1] * v * r + (p[3] + p[4] * abs(u)) * u - tx) / sx;
+    res[1] = (p[1] * dv + p[0] * u * r + (p[5] + p[6] * abs(v)) * v - ty) / sy;
+    res[2] = (p[2] * dr + (p[1] - p[0]) * u * v + p[7] * v + (p[8] + p[9] * abs(r)) * r - tn) / sn;
+    return true;
+  }
+};
+
+// One shooting segment: rows [begin, end] simulated from the free initial velocities x0; the
+// residuals are the normalised errors of u, v, r at every row after the first, then the
+// weighted continuity error between the simulated end and the next segment's start.
+struct SegmentResidual {
+  const InputTrack* track;
+  std::vector<double> times;
+  Eigen::MatrixXd measured;  // rows x 3 (u, v, r)
+  std::array<double, 3> scale;
+  double continuity;  // 0 for the last segment
+
+  int Residuals() const { return static_cast<int>((times.size() - 1) * 3 + 3); }
+
+  template <typename T>
+  bool operator()(const T* p, const T* x0, const T* next, T* res) const {
+    constexpr int N = Plant<Odin3Dof>::kStates;
+    std::array<T, N> start;
+    start.fill(T(0));
+    start[3] = x0[0];
+    start[4] = x0[1];
+    start[5] = x0[2];
+    const double* u0 = track->At(times[0]);
+    for (int i = 0; i < Odin3Dof::kInputs; ++i) start[Odin3Dof::kStates + i] = T(u0[i]);
+    OpenLoopSetup setup;
+    setup.inputs = track;
+    setup.times = times;
+    setup.max_step = times.size() > 1 ? (times[1] - times[0]) * 1.0000001 : 1.0;
+    std::vector<T> out(times.size() * N);
+    std::array<double, 3> limits;
+    limits.fill(INFINITY);
+    const size_t rows =
+        RolloutOpenLoop<Odin3Dof, T>(setup, start.data(), p, EffectValues<T>{}, limits, out.data());
+    int k = 0;
+    for (size_t row = 1; row < times.size(); ++row)
+      for (int c = 0; c < 3; ++c) {
+        // A diverged rollout keeps its last state, so the cost stays finite.
+        const size_t use = std::min(row, rows - 1);
+        res[k++] = (out[use * N + 3 + c] - T(measured(row, c))) / scale[c];
+      }
+    const size_t last = rows - 1;
+    for (int c = 0; c < 3; ++c)
+      res[k++] = continuity * (out[last * N + 3 + c] - next[c]) / scale[c];
+    return true;
+  }
+};
+
+void Bound(ceres::Problem& problem, double* p) {
+  for (int i = 0; i < kParams; ++i) problem.SetParameterLowerBound(p, i, 1e-6);
+}
+
+void Solve(ceres::Problem& problem, const FossenOptions& o, double* p, FossenFit& fit) {
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  so.max_num_iterations = o.max_iterations;
+  so.num_threads = o.threads;
+  so.function_tolerance = 1e-12;
+  so.parameter_tolerance = 1e-12;
+  so.gradient_tolerance = 1e-14;
+  ceres::Solver::Summary summary;
+  const auto start = std::chrono::steady_clock::now();
+  ceres::Solve(so, &problem, &summary);
+  fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fit.termination = ceres::TerminationTypeToString(summary.termination_type) + std::string(": ") +
+                    summary.message;
+  fit.converged = summary.termination_type == ceres::CONVERGENCE;
+  fit.initial_cost = summary.initial_cost;
+  fit.final_cost = summary.final_cost;
+  fit.iterations = static_cast<int>(summary.iterations.size());
+  std::copy(p, p + kParams, fit.params.begin());
+  ceres::Covariance::Options co;
+  ceres::Covariance covariance(co);
+  std::vector<std::pair<const double*, const double*>> blocks = {{p, p}};
+  if (covariance.Compute(blocks, &problem)) {
+    double c[kParams * kParams];
+    covariance.GetCovarianceBlock(p, p, c);
+    // Scale by the residual variance per degree of freedom (the residuals are normalised).
+    const double dof = std::max(1, summary.num_residuals - summary.num_effective_parameters);
+    const double s2 = 2.0 * summary.final_cost / dof;
+    for (int i = 0; i < kParams; ++i) fit.sd[i] = std::sqrt(std::max(0.0, c[i * kParams + i] * s2));
+    fit.covariance_ok = true;
+  }
+}
+
+void Require(const PreparedData& prepared) {
+  for (const char* c : {"u", "v", "r", "u_dot", "v_dot", "r_dot", "u_raw", "v_raw", "r_raw",
+                        "tau_x", "tau_y", "tau_n"})
+    if (!prepared.data.Has(c))
+      throw InputError(std::string("fossen-ceres: the data need channel '") + c +
+                       "' (odin3dof: states u, v, r; inputs tau_x, tau_y, tau_n)");
+}
+
+}  // namespace
+
+FossenFit FitEquationError(const PreparedData& prepared, const FossenOptions& options) {
+  Require(prepared);
+  const Dataset& d = prepared.data;
+  std::array<double, kParams> p = {1000, 1000, 1000, 1, 1, 1, 1, 1, 1, 1};
+  ceres::Problem problem;
+  const double sx = Sd(d["tau_x"]), sy = Sd(d["tau_y"]), sn = Sd(d["tau_n"]);
+  ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
+  for (Eigen::Index k = 0; k < d.rows(); ++k) {
+    auto* cost = new ceres::AutoDiffCostFunction<EquationResidual, 3, kParams>(new EquationResidual{
+        d["u"](k), d["v"](k), d["r"](k), d["u_dot"](k), d["v_dot"](k), d["r_dot"](k), d["tau_x"](k),
+        d["tau_y"](k), d["tau_n"](k), sx, sy, sn});
+    problem.AddResidualBlock(cost, loss, p.data());
+  }
+  Bound(problem, p.data());
+  FossenFit fit;
+  Solve(problem, options, p.data(), fit);
+  return fit;
+}
+
+FossenFit FitSimulationError(const PreparedData& prepared, const std::array<double, 10>& start,
+                             const FossenOptions& options) {
+  Require(prepared);
+  const Dataset& d = prepared.data;
+  if (!(options.segment_s > 0)) throw InputError("fossen-ceres: segment length must be positive");
+  InputTrack track(3);
+  for (Eigen::Index k = 0; k < d.rows(); ++k) {
+    const double u[3] = {d["tau_x"](k), d["tau_y"](k), d["tau_n"](k)};
+    track.Append(d.t()(k), u);
+  }
+  const std::array<double, 3> scale = {Sd(d["u_raw"]), Sd(d["v_raw"]), Sd(d["r_raw"])};
+  // Segment boundaries [b_j, b_{j+1}]: consecutive segments share their boundary row.
+  std::vector<Eigen::Index> bounds = {0};
+  while (bounds.back() < d.rows() - 1) {
+    Eigen::Index e = bounds.back();
+    while (e + 1 < d.rows() && d.t()(e + 1) - d.t()(bounds.back()) <= options.segment_s) ++e;
+    bounds.push_back(std::max(e, bounds.back() + 1));
+  }
+  const size_t segments = bounds.size() - 1;
+  std::vector<std::array<double, 3>> x0(segments + 1);
+  for (size_t j = 0; j <= segments; ++j) {
+    const Eigen::Index row = std::min<Eigen::Index>(bounds[std::min(j, segments)], d.rows() - 1);
+    x0[j] = {d["u"](row), d["v"](row), d["r"](row)};  // smoothed states: good starts
+  }
+  std::array<double, kParams> p = start;
+  ceres::Problem problem;
+  ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
+  for (size_t j = 0; j < segments; ++j) {
+    auto* seg = new SegmentResidual;
+    seg->track = &track;
+    for (Eigen::Index k = bounds[j]; k <= bounds[j + 1]; ++k) seg->times.push_back(d.t()(k));
+    seg->measured.resize(static_cast<Eigen::Index>(seg->times.size()), 3);
+    for (Eigen::Index k = bounds[j]; k <= bounds[j + 1]; ++k)
+      seg->measured.row(k - bounds[j]) << d["u_raw"](k), d["v_raw"](k), d["r_raw"](k);
+    seg->scale = scale;
+    seg->continuity = j + 1 < segments ? options.continuity_weight : 0.0;
+    const int residuals = seg->Residuals();
+    auto* cost = new ceres::AutoDiffCostFunction<SegmentResidual, ceres::DYNAMIC, kParams, 3, 3>(
+        seg, residuals);
+    problem.AddResidualBlock(cost, loss, p.data(), x0[j].data(), x0[j + 1].data());
+  }
+  problem.SetParameterBlockConstant(x0[segments].data());
+  Bound(problem, p.data());
+  FossenFit fit;
+  Solve(problem, options, p.data(), fit);
+  return fit;
+}
+
+nlohmann::json Equations(const std::array<double, 10>& p) {
+  auto n = [](double v) { return FormatNumber(v); };
+  return {{"u", "(tau_x + " + n(p[1]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) + "*abs(u))*u) / " +
+                    n(p[0])},
+          {"v", "(tau_y - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) + "*abs(v))*v) / " +
+                    n(p[1])},
+          {"r", "(tau_n - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - " + n(p[7]) + "*v - (" +
+                    n(p[8]) + " + " + n(p[9]) + "*abs(r))*r) / " + n(p[2])}};
+}
+
+}  // namespace usvid::fossen

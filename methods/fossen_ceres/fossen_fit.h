@@ -1,0 +1,57 @@
+// `fossen-ceres`: the parametric Fossen 3-DOF model of odin3dof (domain.md section 2.2: M, C(nu)
+// from M, D(nu) with linear and quadratic terms; 10 parameters m11 m22 m33 Xu Xuu Yv Yvv Nv Nr
+// Nrr) fitted with Ceres in two modes:
+//  - equation error: on estimated derivatives, residual_k = (M nu' + C(nu) nu + D(nu) nu - tau)_k
+//    per sample, each force or moment divided by its input's standard deviation;
+//  - simulation error by multiple shooting: the data cut into segments of segment_s seconds;
+//    each segment is simulated by the templated plant (RK4, one step per sample) from its own
+//    free initial velocities, residuals are the simulated minus measured u, v, r (divided by
+//    their standard deviations), and segments are tied by continuity residuals (end of one minus
+//    start of the next, weighted). Ceres differentiates whole rollouts with Jets.
+// Parameters are bounded below (positive), a Huber loss is optional, and their standard
+// deviations come from ceres::Covariance. The simulation-error fit starts from the
+// equation-error one.
+#pragma once
+
+#include <array>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+#include "preprocessing/pipeline.h"
+
+namespace usvid::fossen {
+
+enum class FitMode { kEquationError, kSimulationError };
+
+struct FossenOptions {
+  FitMode mode = FitMode::kSimulationError;
+  double segment_s = 10.0;
+  double continuity_weight = 10.0;
+  bool robust = false;  // Huber loss (scale 1 in normalised units)
+  int max_iterations = 100;
+  int threads = 1;
+};
+
+struct FossenFit {
+  std::array<double, 10> params{};
+  std::array<double, 10> sd{};  // from ceres::Covariance (0 where not available)
+  bool covariance_ok = false;
+  std::string termination;  // Ceres' termination type and message
+  bool converged = false;
+  double initial_cost = 0.0, final_cost = 0.0;
+  int iterations = 0;
+  double seconds = 0.0;
+};
+
+// prepared: from Preprocess with states u, v, r (smoothed, "_dot" derivatives) and inputs
+// tau_x, tau_y, tau_n; raw states "<s>_raw" are what the simulation error compares against.
+FossenFit FitEquationError(const PreparedData& prepared, const FossenOptions& options);
+FossenFit FitSimulationError(const PreparedData& prepared, const std::array<double, 10>& start,
+                             const FossenOptions& options);
+
+// The model written out as equations in channel names (contract section 5).
+nlohmann::json Equations(const std::array<double, 10>& params);
+
+}  // namespace usvid::fossen
