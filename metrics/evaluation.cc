@@ -45,6 +45,34 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& data) {
   // Flat per-channel fields too, as the contract lists them per state channel.
   for (const auto& [c, s] : channels.items()) e.metrics[c] = s;
   if (e.run.diverged) e.metrics["diverged_at_s"] = e.run.diverged_at_s;
+
+  // Per speed regime, over the rows measured in it.
+  Eigen::VectorXd speed;
+  if (data.Has("U")) {
+    speed = data["U"];
+  } else if (data.Has("u") && data.Has("v")) {
+    speed = (data["u"].array().square() + data["v"].array().square()).sqrt().matrix();
+  }
+  if (speed.size() > 0) {
+    const double length = model.value("length_m", 10.5);
+    const Eigen::ArrayXd fn = speed.array() / std::sqrt(9.81 * length);
+    const std::pair<const char*, std::pair<double, double>> regimes[] = {
+        {"displacement", {-INFINITY, 0.4}},
+        {"semi-displacement", {0.4, 1.1}},
+        {"planing", {1.1, INFINITY}}};
+    nlohmann::json by_regime = nlohmann::json::object();
+    for (const auto& [name, range] : regimes) {
+      const Eigen::Array<bool, Eigen::Dynamic, 1> in = fn >= range.first && fn < range.second;
+      if (in.count() < 10) continue;
+      nlohmann::json scores = {{"samples", in.count()}};
+      for (const auto& [c, _] : channels.items()) {
+        const Eigen::VectorXd m = in.select(data[c].array(), NAN).matrix();
+        scores[c] = ScoreChannel(m, e.run.simulated[c]).ToJson();
+      }
+      by_regime[name] = scores;
+    }
+    e.metrics["regimes"] = by_regime;
+  }
   if (data.Has("north") && data.Has("east") && e.run.simulated.Has("north")) {
     const Eigen::Index last = data.rows() - 1;
     e.metrics["position_drift_m"] = std::hypot(data["north"](last) - e.run.simulated["north"](last),

@@ -54,6 +54,15 @@ TEST_F(EvaluationTest, TrueEquationsReproduceTheSimulator) {
     EXPECT_GT(e.metrics.at(c).at("fit_percent").get<double>(), 99.99) << c;
   EXPECT_LT(e.metrics.at("position_drift_m").get<double>(), 0.01);
   EXPECT_GT(e.metrics.at("derivative_r2").at("u").get<double>(), 0.99);
+  // Scores per speed regime, over the rows measured in each (odin3dof reaches all three).
+  const auto& regimes = e.metrics.at("regimes");
+  EXPECT_FALSE(regimes.empty());
+  long rows = 0;
+  for (const auto& [name, scores] : regimes.items()) {
+    rows += scores.at("samples").get<long>();
+    EXPECT_GT(scores.at("u").at("fit_percent").get<double>(), 99.9) << name;
+  }
+  EXPECT_LE(rows, d.rows());
 }
 
 // u' = u grows without bound: stopped at the bound, diverged, finite scores.
