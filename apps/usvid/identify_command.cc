@@ -16,6 +16,7 @@
 #include "core/json_file.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/gp/gp_identify.h"
+#include "methods/sindy/sindy.h"
 #include "simulation/vessel_simulator.h"
 #include "simulators/odin3dof.h"
 
@@ -147,6 +148,12 @@ void RunIdentify(const IdentifyOptions& o) {
                             {"notes", prepared.notes}}}};
   if (o.method == "fossen-ceres") {
     model.update(IdentifyFossen(o, prepared));
+  } else if (o.method == "sindy") {
+    const sindy::SindyIdentification id =
+        sindy::IdentifyWithSindy(prepared, states, variables, inputs, sindy::SindyOptions{});
+    model["parameters"] = id.parameters;
+    model["equations"] = id.equations;
+    model["sindy"] = id.details;
   } else {
     const gp::GpIdentification gp = gp::IdentifyWithGp(
         prepared, states, variables, inputs, gpo,
@@ -186,10 +193,10 @@ void AddIdentifyCommand(CLI::App& app) {
   auto o = std::make_shared<IdentifyOptions>();
   CLI::App* cmd = app.add_subcommand("identify", "Fit one identification method to data");
   cmd->add_option("--method", o->method,
-                  "gp (GP-SR with orthogonal least squares) or fossen-ceres (parametric Fossen "
-                  "3-DOF of odin3dof, Ceres)")
+                  "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge) "
+                  "or fossen-ceres (parametric Fossen 3-DOF of odin3dof, Ceres)")
       ->required()
-      ->check(CLI::IsMember({"gp", "fossen-ceres"}));
+      ->check(CLI::IsMember({"gp", "sindy", "fossen-ceres"}));
   cmd->add_option("--data", o->data, "Training data CSV")->required();
   cmd->add_option("--vessel", o->vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->states, "States to find equations for")->delimiter(',');

@@ -5,14 +5,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <set>
 
 #include "core/error.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/expression.h"
+#include "metrics/evaluation.h"
 #include "preprocessing/pipeline.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
@@ -84,6 +87,24 @@ class SindyTest : public ::testing::Test {
     return c;
   }
 };
+
+// Issue 6's bar for sindy: its model free-runs held-out multisine runs at 95 % or more. The
+// hull is unstable (docs/vessels/odin3dof.md), so a free run's fit depends on the run: the bar
+// is on the median over six held-out runs (seeds 1 to 6).
+TEST_F(SindyTest, Odin3DofFreeRunsHeldOutMultisineAtNinetyFivePercent) {
+  const nlohmann::json model = {
+      {"states", kOdinStates}, {"inputs", kOdinInputs}, {"equations", Odin().id.equations}};
+  std::map<std::string, std::vector<double>> fits;
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    const Evaluation e = EvaluateModel(model, Simulate("odin3dof", "multisine", 300, 0.0, seed));
+    for (const std::string& s : kOdinStates)
+      fits[s].push_back(e.metrics.at(s).at("fit_percent").get<double>());
+  }
+  for (auto& [s, f] : fits) {
+    std::sort(f.begin(), f.end());
+    EXPECT_GE(0.5 * (f[2] + f[3]), 95.0) << s;
+  }
+}
 
 // Each of u', v', r' of domain.md 2.2 within 5 % relative RMS error on the held-out multisine.
 TEST_F(SindyTest, Odin3DofFromRandomStepsWithinFivePercentOnHeldOutMultisine) {
