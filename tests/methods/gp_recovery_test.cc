@@ -9,14 +9,12 @@
 #include <algorithm>
 #include <map>
 
-#include "maneuvers/maneuver_factory.h"
 #include "methods/gp/search.h"
 #include "metrics/evaluation.h"
 #include "preprocessing/pipeline.h"
-#include "sensors/noise.h"
-#include "simulation/vessel_simulator.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
+#include "tests/support/synthetic_data.h"
 
 namespace usvid {
 namespace {
@@ -25,11 +23,14 @@ class GpRecoveryTest : public ::testing::Test {
  public:
   static Dataset Simulate(const std::string& vessel, const std::string& maneuver, double seconds,
                           double noise, uint64_t seed) {
-    const VesselSimulator& sim = FindVessel(vessel);
-    auto m = MakeManeuver(maneuver, sim.Info().actuation, seconds, seed);
-    Dataset d = sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
-    AddGaussianNoise(d, sim.Info().states, noise, seed);
-    return d;
+    return testing::Simulate(vessel, maneuver, seconds, noise, seed);
+  }
+  template <typename V>
+  static Eigen::VectorXd TrueDerivative(const Dataset& d, int index) {
+    return testing::TrueDerivative<V>(d, index);
+  }
+  static double RelativeError(const Eigen::VectorXd& pred, const Eigen::VectorXd& truth) {
+    return testing::RelativeError(pred, truth);
   }
 
   static gp::GpProblem Problem(const Dataset& d, const std::vector<std::string>& vars,
@@ -39,25 +40,6 @@ class GpRecoveryTest : public ::testing::Test {
     for (const std::string& v : vars) p.variables.push_back(d[v]);
     p.target = target;
     return p;
-  }
-
-  // The vessel's true right-hand side for state `index` at every row of clean data.
-  template <typename V>
-  static Eigen::VectorXd TrueDerivative(const Dataset& d, int index) {
-    Eigen::VectorXd out(d.rows());
-    for (Eigen::Index k = 0; k < d.rows(); ++k) {
-      std::array<double, V::kStates> x, dx;
-      std::array<double, V::kInputs> u;
-      for (int i = 0; i < V::kStates; ++i) x[i] = d[std::string(V::kStateNames[i])](k);
-      for (int i = 0; i < V::kInputs; ++i) u[i] = d[std::string(V::kInputNames[i])](k);
-      V::template Derivative<double>(x.data(), u.data(), V::kDefaultParams.data(), {}, dx.data());
-      out(k) = dx[index];
-    }
-    return out;
-  }
-
-  static double RelativeError(const Eigen::VectorXd& pred, const Eigen::VectorXd& truth) {
-    return std::sqrt((pred - truth).squaredNorm() / truth.squaredNorm());
   }
 };
 

@@ -13,14 +13,12 @@
 #include <set>
 
 #include "core/error.h"
-#include "maneuvers/maneuver_factory.h"
 #include "methods/expression.h"
 #include "metrics/evaluation.h"
 #include "preprocessing/pipeline.h"
-#include "sensors/noise.h"
-#include "simulation/vessel_simulator.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
+#include "tests/support/synthetic_data.h"
 
 namespace usvid {
 namespace {
@@ -37,30 +35,14 @@ class SindyTest : public ::testing::Test {
  public:
   static Dataset Simulate(const std::string& vessel, const std::string& maneuver, double seconds,
                           double noise, uint64_t seed) {
-    const VesselSimulator& sim = FindVessel(vessel);
-    auto m = MakeManeuver(maneuver, sim.Info().actuation, seconds, seed);
-    Dataset d = sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
-    AddGaussianNoise(d, sim.Info().states, noise, seed);
-    return d;
+    return testing::Simulate(vessel, maneuver, seconds, noise, seed);
   }
-
-  // The vessel's true right-hand side for state `index` at every row of clean data.
   template <typename V>
   static Eigen::VectorXd TrueDerivative(const Dataset& d, int index) {
-    Eigen::VectorXd out(d.rows());
-    for (Eigen::Index k = 0; k < d.rows(); ++k) {
-      std::array<double, V::kStates> x, dx;
-      std::array<double, V::kInputs> u;
-      for (int i = 0; i < V::kStates; ++i) x[i] = d[std::string(V::kStateNames[i])](k);
-      for (int i = 0; i < V::kInputs; ++i) u[i] = d[std::string(V::kInputNames[i])](k);
-      V::template Derivative<double>(x.data(), u.data(), V::kDefaultParams.data(), {}, dx.data());
-      out(k) = dx[index];
-    }
-    return out;
+    return testing::TrueDerivative<V>(d, index);
   }
-
   static double RelativeError(const Eigen::VectorXd& pred, const Eigen::VectorXd& truth) {
-    return std::sqrt((pred - truth).squaredNorm() / truth.squaredNorm());
+    return testing::RelativeError(pred, truth);
   }
 
   static std::set<std::string> TermNames(const std::string& equation) {
