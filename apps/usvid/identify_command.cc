@@ -17,6 +17,8 @@
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/sindy/sindy.h"
+#include "preprocessing/delay_estimation.h"
+#include "simulation/segment_error.h"
 #include "simulation/vessel_simulator.h"
 #include "simulators/odin3dof.h"
 
@@ -45,7 +47,8 @@ struct IdentifyOptions {
 };
 
 // fossen-ceres: the parametric odin3dof model, equation error then multiple shooting.
-nlohmann::json IdentifyFossen(const IdentifyOptions& o, const PreparedData& prepared) {
+nlohmann::json IdentifyFossen(const IdentifyOptions& o, const Dataset& data,
+                              const PreparedData& prepared) {
   fossen::FossenOptions fo;
   fo.segment_s = o.segment_s;
   fo.robust = o.robust;
@@ -66,6 +69,21 @@ nlohmann::json IdentifyFossen(const IdentifyOptions& o, const PreparedData& prep
     sd[name] = fit.sd[i];
     eq_params[name] = eq.params[i];
   }
+  nlohmann::json refined = nullptr;
+  if (prepared.delay_estimate) {
+    // The delay to a fraction of a sample: NLopt (DIRECT-L, then Sbplx) on the segmented
+    // simulation error of the fitted model on the data as recorded.
+    const VesselSimulator& sim = FindVessel("odin3dof");
+    const std::vector<double> p(fit.params.begin(), fit.params.end());
+    auto cost = [&](const std::vector<double>& d) {
+      EffectValues<double> e;
+      e.delay_s = d[0];
+      return SegmentedSimulationError(sim, p, e, data, {"u", "v", "r"}, o.segment_s);
+    };
+    const DelayEstimate d = ContinuousDelay(cost, 1, o.pre.max_delay_s, {prepared.delay_s}, 60);
+    refined = d.delay_s;
+    std::cerr << "usvid identify: delay refined on the simulation error: " << d.delay_s << " s\n";
+  }
   return {{"parameters", params},
           {"equations", fossen::Equations(fit.params)},
           {"fossen",
@@ -79,7 +97,8 @@ nlohmann::json IdentifyFossen(const IdentifyOptions& o, const PreparedData& prep
             {"initial_cost", fit.initial_cost},
             {"final_cost", fit.final_cost},
             {"iterations", fit.iterations},
-            {"equation_error_parameters", eq_params}}}};
+            {"equation_error_parameters", eq_params},
+            {"delay_refined_s", refined}}}};
 }
 
 // The vessel's states less `excluded`, in order.
@@ -147,7 +166,7 @@ void RunIdentify(const IdentifyOptions& o) {
                             {"step_breaks", pre.step_breaks},
                             {"notes", prepared.notes}}}};
   if (o.method == "fossen-ceres") {
-    model.update(IdentifyFossen(o, prepared));
+    model.update(IdentifyFossen(o, data, prepared));
   } else if (o.method == "sindy") {
     const sindy::SindyIdentification id =
         sindy::IdentifyWithSindy(prepared, states, variables, inputs, sindy::SindyOptions{});
