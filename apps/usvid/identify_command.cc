@@ -14,6 +14,7 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "methods/eb_lr/eb_lr.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/sindy/sindy.h"
@@ -130,6 +131,18 @@ void RunIdentify(const IdentifyOptions& o) {
   }
   if (states.empty() || inputs.empty())
     throw InputError("identify: give --vessel, or --states and --inputs");
+  if (o.method == "eb-lr") {
+    // The Eriksen-Breivik 2-DOF form: speed U and rate r, driven by thrust and yaw inputs.
+    if (!o.vessel.empty() && o.states.empty()) {
+      const Actuation& a = FindVessel(o.vessel).Info().actuation;
+      if (a.thrust_input < 0)
+        throw InputError("--method eb-lr: vessel " + o.vessel + " has no thrust input");
+      states = variables = {"U", "r"};
+      inputs = {a.input_names[a.thrust_input], a.input_names[a.yaw_input]};
+    }
+    if (states.size() != 2 || inputs.size() != 2)
+      throw InputError("--method eb-lr: needs --states SPEED,RATE and --inputs THRUST,YAW");
+  }
   if (o.method == "fossen-ceres" && (states != std::vector<std::string>{"u", "v", "r"} ||
                                      inputs != std::vector<std::string>{"tau_x", "tau_y", "tau_n"}))
     throw InputError(
@@ -165,7 +178,13 @@ void RunIdentify(const IdentifyOptions& o) {
                             {"derivative", pre.derivative.Spec()},
                             {"step_breaks", pre.step_breaks},
                             {"notes", prepared.notes}}}};
-  if (o.method == "fossen-ceres") {
+  if (o.method == "eb-lr") {
+    const eb_lr::EbLrIdentification id =
+        eb_lr::IdentifyWithEbLr(data, states[0], states[1], inputs[0], inputs[1], {});
+    model["parameters"] = id.parameters;
+    model["equations"] = id.equations;
+    model["eb_lr"] = id.details;
+  } else if (o.method == "fossen-ceres") {
     model.update(IdentifyFossen(o, data, prepared));
   } else if (o.method == "sindy") {
     const sindy::SindyIdentification id =
@@ -212,10 +231,11 @@ void AddIdentifyCommand(CLI::App& app) {
   auto o = std::make_shared<IdentifyOptions>();
   CLI::App* cmd = app.add_subcommand("identify", "Fit one identification method to data");
   cmd->add_option("--method", o->method,
-                  "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge) "
-                  "or fossen-ceres (parametric Fossen 3-DOF of odin3dof, Ceres)")
+                  "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge), "
+                  "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data) or fossen-ceres "
+                  "(parametric Fossen 3-DOF of odin3dof, Ceres)")
       ->required()
-      ->check(CLI::IsMember({"gp", "sindy", "fossen-ceres"}));
+      ->check(CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres"}));
   cmd->add_option("--data", o->data, "Training data CSV")->required();
   cmd->add_option("--vessel", o->vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->states, "States to find equations for")->delimiter(',');

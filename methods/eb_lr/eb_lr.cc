@@ -1,0 +1,316 @@
+#include "methods/eb_lr/eb_lr.h"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/parse_number.h"
+#include "methods/eb_lr/output_error.h"
+#include "preprocessing/derivative.h"
+
+namespace usvid::eb_lr {
+namespace {
+
+using Basis = std::vector<Monomial>;
+using Span = SteadyWindow;  // samples [first, last]
+
+// Index 0 is the speed equation (and state, and input), 1 the rate equation.
+struct Signals {
+  Eigen::VectorXd t;
+  std::array<Eigen::VectorXd, 2> x, s, u;  // raw states, smoothed states, inputs
+};
+
+// One row of M(x) x' + sigma(x) = tau: its bases, coefficients and fit residuals.
+struct Equation {
+  std::string state, input;
+  const Basis* sigma_basis = nullptr;
+  const Basis* mass_basis = nullptr;
+  std::vector<std::string> sigma_terms, mass_terms;
+  Eigen::VectorXd sigma, mass, sigma_residual, mass_residual;
+  double output_error_rms = -1.0;
+  int output_error_iterations = 0;
+};
+
+void CheckOptions(const EbLrOptions& o) {
+  const std::pair<const Basis*, const char*> bases[] = {{&o.sigma_speed_basis, "sigma_speed_basis"},
+                                                        {&o.sigma_rate_basis, "sigma_rate_basis"},
+                                                        {&o.mass_speed_basis, "mass_speed_basis"},
+                                                        {&o.mass_rate_basis, "mass_rate_basis"}};
+  for (const auto& [basis, name] : bases) {
+    if (basis->empty()) throw InputError(std::string("eb-lr option ") + name + ": empty basis");
+    for (const Monomial& m : *basis)
+      if (m.speed_power < 0 || m.rate_power < 0 || (m.abs_rate && m.rate_power < 1))
+        throw InputError(std::string("eb-lr option ") + name + ": bad term " + m.Text("U", "r"));
+  }
+  if (!(o.transient_window_s > 0.0 && std::isfinite(o.transient_window_s)))
+    throw InputError("eb-lr option transient_window_s: must be positive, got " +
+                     FormatNumber(o.transient_window_s));
+  if (!(o.transient_margin_s >= 0.0 && std::isfinite(o.transient_margin_s)))
+    throw InputError("eb-lr option transient_margin_s: must be >= 0, got " +
+                     FormatNumber(o.transient_margin_s));
+  if (o.refinements < 0 || o.refinements > 100)
+    throw InputError("eb-lr option refinements: must be 0 to 100, got " +
+                     std::to_string(o.refinements));
+}
+
+Eigen::VectorXd Column(const Dataset& data, const std::string& name, const std::string& role) {
+  const Channel* c = data.Find(name);
+  if (c == nullptr) throw InputError("eb-lr: the data have no " + role + " channel '" + name + "'");
+  if (!c->FullySampled() || !c->values.allFinite())
+    throw InputError("eb-lr: channel '" + name +
+                     "' is not fully sampled with finite values (resample multi-rate data first)");
+  return c->values;
+}
+
+// Least squares a c = b, columns divided by `scale` for conditioning; a term the rows do not
+// separate from the others (numerical rank) is bad input, named in the message.
+Eigen::VectorXd Solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
+                      const Eigen::VectorXd& scale, const std::vector<std::string>& terms,
+                      const std::string& what) {
+  for (Eigen::Index j = 0; j < a.cols(); ++j)
+    if (!(scale(j) > 0.0))
+      throw InputError("eb-lr: " + what + ": the data do not excite the term " + terms[j]);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a * scale.cwiseInverse().asDiagonal());
+  qr.setThreshold(1e-9);
+  if (qr.rank() < a.cols()) {
+    std::string names;
+    for (Eigen::Index j = qr.rank(); j < a.cols(); ++j)
+      names += (names.empty() ? "" : ", ") + terms[qr.colsPermutation().indices()(j)];
+    throw InputError("eb-lr: " + what + ": the data do not separate the term(s) " + names +
+                     " from the others (too few or too similar steady states)");
+  }
+  return qr.solve(b).cwiseQuotient(scale);
+}
+
+// Trapezoid sum of f(k) (x_{k+1} - x_k) over the span.
+template <typename F>
+double Stieltjes(const Eigen::VectorXd& x, const Span& span, F f) {
+  double sum = 0.0;
+  for (Eigen::Index k = span.first; k < span.last; ++k)
+    sum += 0.5 * (f(k) + f(k + 1)) * (x(k + 1) - x(k));
+  return sum;
+}
+
+// The runs of samples outside the windows, each reaching `margin` samples (at most half a
+// window) into the windows around it.
+std::vector<Span> TransientRuns(Eigen::Index n, const std::vector<Span>& windows,
+                                Eigen::Index margin) {
+  std::vector<int> window_of(n, -1);
+  for (size_t w = 0; w < windows.size(); ++w)
+    for (Eigen::Index k = windows[w].first; k <= windows[w].last; ++k)
+      window_of[k] = static_cast<int>(w);
+  std::vector<Span> runs;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (window_of[k] >= 0) continue;
+    Span run{k, k};
+    while (run.last + 1 < n && window_of[run.last + 1] < 0) ++run.last;
+    k = run.last;
+    if (run.first > 0) {
+      const Span& w = windows[window_of[run.first - 1]];
+      run.first = std::max(w.last - margin, (w.first + w.last) / 2);
+    }
+    if (run.last + 1 < n) {
+      const Span& w = windows[window_of[run.last + 1]];
+      run.last = std::min(w.first + margin, (w.first + w.last) / 2);
+    }
+    if (run.last > run.first) runs.push_back(run);
+  }
+  return runs;
+}
+
+// sigma from the steady windows, each corrected by what it still accelerates under the mass.
+void FitSigma(const Signals& s, int i, const std::vector<Span>& windows, Equation& eq) {
+  const Basis& basis = *eq.sigma_basis;
+  const auto cols = static_cast<Eigen::Index>(basis.size());
+  const auto rows = static_cast<Eigen::Index>(windows.size());
+  Eigen::MatrixXd a(rows, cols);
+  Eigen::VectorXd b(rows), scale(cols);
+  for (Eigen::Index w = 0; w < rows; ++w) {
+    const Span& span = windows[w];
+    const Eigen::Index len = span.last - span.first + 1;
+    const double speed = s.x[0].segment(span.first, len).mean();
+    const double rate = s.x[1].segment(span.first, len).mean();
+    for (Eigen::Index j = 0; j < cols; ++j) a(w, j) = basis[j].Evaluate(speed, rate);
+    const double accelerating = Stieltjes(s.s[i], span, [&](Eigen::Index k) {
+      return Combination(*eq.mass_basis, eq.mass, s.s[0](k), s.s[1](k));
+    });
+    b(w) =
+        s.u[i].segment(span.first, len).mean() - accelerating / (s.t(span.last) - s.t(span.first));
+  }
+  const double speed_max = s.x[0].cwiseAbs().maxCoeff(), rate_max = s.x[1].cwiseAbs().maxCoeff();
+  for (Eigen::Index j = 0; j < cols; ++j)
+    scale(j) = std::abs(basis[j].Evaluate(speed_max, rate_max));
+  eq.sigma = Solve(a, b, scale, eq.sigma_terms, "sigma_" + eq.state);
+  eq.sigma_residual = b - a * eq.sigma;
+}
+
+// M from the transient pieces: sum_j c_j int mu_j dx = int (tau - sigma) dt.
+void FitMass(const Signals& s, int i, const std::vector<Span>& pieces, Equation& eq) {
+  const Basis& basis = *eq.mass_basis;
+  const auto cols = static_cast<Eigen::Index>(basis.size());
+  const auto rows = static_cast<Eigen::Index>(pieces.size());
+  Eigen::MatrixXd a(rows, cols);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(rows);
+  for (Eigen::Index p = 0; p < rows; ++p) {
+    const Span& span = pieces[p];
+    for (Eigen::Index j = 0; j < cols; ++j)
+      a(p, j) = Stieltjes(s.s[i], span,
+                          [&](Eigen::Index k) { return basis[j].Evaluate(s.s[0](k), s.s[1](k)); });
+    for (Eigen::Index k = span.first; k < span.last; ++k) {
+      const double sigma0 = Combination(*eq.sigma_basis, eq.sigma, s.s[0](k), s.s[1](k));
+      const double sigma1 = Combination(*eq.sigma_basis, eq.sigma, s.s[0](k + 1), s.s[1](k + 1));
+      b(p) += (s.u[i](k) - 0.5 * (sigma0 + sigma1)) * (s.t(k + 1) - s.t(k));
+    }
+  }
+  eq.mass = Solve(a, b, a.colwise().norm().transpose(), eq.mass_terms, "m_" + eq.state);
+  eq.mass_residual = b - a * eq.mass;
+}
+
+std::string Sum(const Basis& basis, const Eigen::VectorXd& c, const std::string& speed,
+                const std::string& rate) {
+  std::string s;
+  for (size_t j = 0; j < basis.size(); ++j) {
+    const std::string term = basis[j].Text(speed, rate);
+    const std::string value = FormatNumber(s.empty() ? c(j) : std::abs(c(j)));
+    s += s.empty() ? "" : (c(j) < 0 ? " - " : " + ");
+    s += term == "1" ? value : value + "*" + term;
+  }
+  return s;
+}
+
+double Rms(const Eigen::VectorXd& v) {
+  return v.size() ? std::sqrt(v.squaredNorm() / static_cast<double>(v.size())) : 0.0;
+}
+
+}  // namespace
+
+EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& speed,
+                                    const std::string& rate, const std::string& thrust_input,
+                                    const std::string& yaw_input, const EbLrOptions& options) {
+  CheckOptions(options);
+  Signals s;
+  s.t = data.t();
+  s.x = {Column(data, speed, "speed"), Column(data, rate, "rate")};
+  s.u = {Column(data, thrust_input, "thrust input"), Column(data, yaw_input, "yaw input")};
+  const Eigen::Index n = s.t.size();
+  if (n < 20) throw InputError("eb-lr: the data have " + std::to_string(n) + " rows; need 20");
+  const double dt = (s.t(n - 1) - s.t(0)) / static_cast<double>(n - 1);
+  for (Eigen::Index k = 1; k < n; ++k)
+    if (std::abs(s.t(k) - s.t(k - 1) - dt) > 1e-3 * dt)
+      throw InputError("eb-lr: the time grid is not uniform at t = " + FormatNumber(s.t(k)) +
+                       " s (resample first)");
+  std::array<Equation, 2> eq;
+  eq[0].state = speed;
+  eq[1].state = rate;
+  eq[0].input = thrust_input;
+  eq[1].input = yaw_input;
+  eq[0].sigma_basis = &options.sigma_speed_basis;
+  eq[1].sigma_basis = &options.sigma_rate_basis;
+  eq[0].mass_basis = &options.mass_speed_basis;
+  eq[1].mass_basis = &options.mass_rate_basis;
+  const std::vector<Eigen::Index> breaks =
+      StepBreaks({s.u[0], s.u[1]}, options.steady.input_tolerance);
+  for (int i = 0; i < 2; ++i) {
+    if (s.u[i].maxCoeff() == s.u[i].minCoeff())
+      throw InputError("eb-lr: the input '" + eq[i].input +
+                       "' is constant; a step grid steps both inputs");
+    s.s[i] = SmoothAndDifferentiate(s.x[i], dt, DerivativeMethod{}, breaks).value;
+    for (const Monomial& m : *eq[i].sigma_basis) eq[i].sigma_terms.push_back(m.Text(speed, rate));
+    for (const Monomial& m : *eq[i].mass_basis) eq[i].mass_terms.push_back(m.Text(speed, rate));
+    eq[i].mass = Eigen::VectorXd::Zero(eq[i].mass_terms.size());
+  }
+
+  const SteadyWindowReport steady =
+      DetectSteadyWindows(s.t, {s.x[0], s.x[1]}, {s.u[0], s.u[1]}, options.steady);
+  const std::vector<Span>& windows = steady.windows;
+  for (const Equation& e : eq)
+    if (windows.size() < e.sigma_terms.size())
+      throw InputError("eb-lr: found " + std::to_string(windows.size()) +
+                       " steady windows; sigma_" + e.state + " on " + BasisText(*e.sigma_basis) +
+                       " needs at least " + std::to_string(e.sigma_terms.size()) +
+                       " (hold more input steps to steady state, or relax min_window_s or "
+                       "max_relative_rate)");
+  const std::vector<Span> runs = TransientRuns(
+      n, windows, static_cast<Eigen::Index>(std::round(options.transient_margin_s / dt)));
+  std::vector<Span> pieces;
+  const auto piece = std::max<Eigen::Index>(
+      1, static_cast<Eigen::Index>(std::round(options.transient_window_s / dt)));
+  for (const Span& run : runs)
+    for (Eigen::Index a = run.first; a < run.last;) {
+      Eigen::Index b = std::min(run.last, a + piece);
+      if (run.last - b < piece / 2) b = run.last;
+      pieces.push_back({a, b});
+      a = b;
+    }
+  for (const Equation& e : eq)
+    if (pieces.size() < e.mass_terms.size())
+      throw InputError("eb-lr: " + std::to_string(pieces.size()) + " transient pieces; m_" +
+                       e.state + " on " + BasisText(*e.mass_basis) + " needs at least " +
+                       std::to_string(e.mass_terms.size()));
+
+  for (int pass = 0; pass <= options.refinements; ++pass)
+    for (int i = 0; i < 2; ++i) {
+      FitSigma(s, i, windows, eq[i]);
+      FitMass(s, i, pieces, eq[i]);
+      if (!options.output_error_mass) continue;
+      const MassOutputErrorFit fit =
+          FitMassByOutputError({s.t, s.s[0], s.s[1], s.x[i], s.u[i], i, *eq[i].sigma_basis,
+                                eq[i].sigma, *eq[i].mass_basis, runs},
+                               eq[i].mass);
+      eq[i].mass = fit.mass;
+      eq[i].output_error_rms = fit.rms;
+      eq[i].output_error_iterations = fit.iterations;
+    }
+
+  EbLrIdentification out;
+  nlohmann::json& info = out.details;
+  info["warnings"] = nlohmann::json::array();
+  nlohmann::json list = nlohmann::json::array();
+  for (size_t w = 0; w < windows.size(); ++w) {
+    const Eigen::Index f = windows[w].first, len = windows[w].last - f + 1;
+    list.push_back({{"start_s", s.t(f)},
+                    {"end_s", s.t(windows[w].last)},
+                    {speed, s.x[0].segment(f, len).mean()},
+                    {rate, s.x[1].segment(f, len).mean()},
+                    {thrust_input, s.u[0].segment(f, len).mean()},
+                    {yaw_input, s.u[1].segment(f, len).mean()},
+                    {"residual_" + speed, eq[0].sigma_residual(w)},
+                    {"residual_" + rate, eq[1].sigma_residual(w)}});
+  }
+  info["steady_windows"] = list;
+  info["input_stretches"] = steady.stretches;
+  info["windows_refused_drifting_input"] = steady.drifting;
+  info["transient_runs"] = runs.size();
+  info["transient_pieces"] = pieces.size();
+  info["refinements"] = options.refinements;
+  info["mass_fit"] = options.output_error_mass ? "output error" : "equation error";
+  for (int i = 0; i < 2; ++i) {
+    const Equation& e = eq[i];
+    info["noise_sd"][e.state] = steady.noise_sd[i];
+    info["fit"]["sigma_" + e.state] = {{"basis", BasisText(*e.sigma_basis)},
+                                       {"rms", Rms(e.sigma_residual)}};
+    info["fit"]["m_" + e.state] = {{"basis", BasisText(*e.mass_basis)},
+                                   {"rms", Rms(e.mass_residual)}};
+    if (options.output_error_mass) {
+      info["fit"]["m_" + e.state]["output_error_rms"] = e.output_error_rms;
+      info["fit"]["m_" + e.state]["output_error_iterations"] = e.output_error_iterations;
+    }
+    for (size_t j = 0; j < e.sigma_terms.size(); ++j)
+      out.parameters["sigma_" + e.state + "." + e.sigma_terms[j]] = e.sigma(j);
+    for (size_t j = 0; j < e.mass_terms.size(); ++j)
+      out.parameters["m_" + e.state + "." + e.mass_terms[j]] = e.mass(j);
+    out.equations[e.state] = "(" + e.input + " - (" + Sum(*e.sigma_basis, e.sigma, speed, rate) +
+                             ")) / (" + Sum(*e.mass_basis, e.mass, speed, rate) + ")";
+    double least = INFINITY;
+    for (Eigen::Index k = 0; k < n; ++k)
+      least = std::min(least, Combination(*e.mass_basis, e.mass, s.x[0](k), s.x[1](k)));
+    if (!(least > 0.0))
+      info["warnings"].push_back("m_" + e.state + " reaches " + FormatNumber(least) +
+                                 " over the data: the mass must be positive");
+  }
+  return out;
+}
+
+}  // namespace usvid::eb_lr

@@ -1,0 +1,70 @@
+// Eriksen & Breivik (2017) linear regression of the 2-DOF high-speed model (domain.md 2.3),
+// method `eb-lr`. State x = [U r] (speed [m/s], rate of turn [rad/s]), input tau = [tau_m
+// tau_delta] (thrust and yaw commands in the data's units, e.g. throttle [-], nozzle [rad]):
+//   M(x) x' + sigma(x) = tau,   M(x) = diag(m_U(x), m_r(x)),
+//   sigma_U = sum_j a_j phi_j(U, r),   sigma_r = sum_j b_j psi_j(U, r),
+//   m_U     = sum_j c_j mu_j(U, r),    m_r     = sum_j d_j nu_j(U, r),
+// each basis function a monomial (monomial.h). Defaults are eb2dof's form: sigma_U on U, U^2,
+// U^3, r^2; sigma_r on r, U r, r^3; m_U and m_r on 1, U. Units of the coefficients follow.
+//
+// Data: raw measurements, fully sampled on a uniform grid (resample multi-rate logs first and
+// shift the inputs by a known delay; do not smooth: the method averages and estimates the noise
+// itself). Inputs are zero-order held from each sample (the command of row k acts until row
+// k + 1). A step grid (maneuvers/step_grid.h) is the intended experiment.
+//  1. Steady windows, from the data alone (steady_windows.h): stretches of constant input where
+//     the local slopes of U and r are within their noise or below a relative rate.
+//  2. sigma: each window gives one row at its mean state,
+//        sigma(x_mean) = mean tau - (1/T) int M(x) dx,
+//     the last term (what a not quite settled window still accelerates) 0 on the first pass;
+//     linear least squares per equation.
+//  3. M: each run of samples outside the windows, reaching transient_margin_s into the windows
+//     around it, is cut into pieces of transient_window_s; each piece is a row
+//        sum_j c_j int mu_j(x) dU = int (tau_m - sigma_U(x)) dt        (and so for r),
+//     the integral form of M(x) x' = tau - sigma(x) (the equation error averaged over a piece,
+//     so no pointwise derivatives), on the states smoothed by the spline with the inputs' step
+//     breaks (preprocessing/derivative.h); linear least squares. With output_error_mass the
+//     result then starts a Gauss-Newton fit of the same coefficients to the measured state over
+//     those runs, each simulated from its start (RK4, the other state from the smoothed data):
+//     noise on the regressors biases and scatters equation error, not output error.
+//  4. Steps 2 and 3 are repeated `refinements` times.
+// Equations (contract section 5): speed -> "(tau_m - (a1*U + ...)) / (c1 + c2*U)", and so for r.
+// A mass that is not positive over the data is reported in details.warnings, not thrown.
+//
+// Throws InputError: a missing, not fully sampled or non-finite channel; a non-uniform time
+// grid; a constant input; a bad option (named); fewer steady windows than a sigma basis has
+// terms, or windows that do not separate a term (named); fewer transient pieces than M terms.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+#include "methods/eb_lr/monomial.h"
+#include "methods/eb_lr/steady_windows.h"
+
+namespace usvid::eb_lr {
+
+struct EbLrOptions {
+  std::vector<Monomial> sigma_speed_basis = {{1, 0}, {2, 0}, {3, 0}, {0, 2}};
+  std::vector<Monomial> sigma_rate_basis = {{0, 1}, {1, 1}, {0, 3}};
+  std::vector<Monomial> mass_speed_basis = {{0, 0}, {1, 0}};
+  std::vector<Monomial> mass_rate_basis = {{0, 0}, {1, 0}};
+  SteadyWindowOptions steady;       // step 1
+  double transient_window_s = 2.0;  // [s] step 3
+  double transient_margin_s = 1.0;  // [s] step 3
+  bool output_error_mass = false;   // step 3
+  int refinements = 2;              // step 4
+};
+
+struct EbLrIdentification {                              // the shape of gp::GpIdentification
+  nlohmann::json equations = nlohmann::json::object();   // state -> expression of its derivative
+  nlohmann::json parameters = nlohmann::json::object();  // "sigma_U.U*U", "m_r.1", ... -> value
+  nlohmann::json details = nlohmann::json::object();     // steady windows, residuals, noise
+};
+
+EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& speed,
+                                    const std::string& rate, const std::string& thrust_input,
+                                    const std::string& yaw_input, const EbLrOptions& options);
+
+}  // namespace usvid::eb_lr
