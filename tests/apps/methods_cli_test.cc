@@ -1,0 +1,78 @@
+// Every method, through the binary: `usvid identify` writes model.json with equations for each
+// state (contract section 5), and `usvid evaluate` free-runs it on other data and writes
+// metrics.json with fit %, NRMSE, RMSE, derivative R^2 and divergence, without NaN.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/json_file.h"
+#include "tests/apps/run_usvid.h"
+
+namespace usvid {
+namespace {
+
+using testing::FreshTempDir;
+using testing::RunUsvid;
+
+class MethodsCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = FreshTempDir(); }
+
+  // Identify with `method` on `train`, evaluate on `test`; returns metrics.json.
+  nlohmann::json IdentifyAndEvaluate(const std::string& method, const std::string& vessel,
+                                     const std::string& train, const std::string& test,
+                                     const std::string& extra = "") {
+    const auto dir = dir_ / method;
+    std::filesystem::create_directories(dir);
+    const std::string model = (dir / "model.json").string();
+    const auto id = RunUsvid("identify --method " + method + " --vessel " + vessel + " --data " +
+                             train + " " + extra + " --out " + model);
+    EXPECT_EQ(id.exit_code, 0) << id.err;
+    const nlohmann::json m = ReadJsonFile(model);
+    for (const auto& s : m.at("states"))
+      EXPECT_TRUE(m.at("equations").contains(s.get<std::string>())) << method << " " << s;
+    const auto ev = RunUsvid("evaluate --model " + model + " --data " + test + " --out " +
+                             (dir / "eval").string());
+    EXPECT_EQ(ev.exit_code, 0) << ev.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "eval" / "free_run.svg"));
+    const nlohmann::json metrics = ReadJsonFile((dir / "eval" / "metrics.json").string());
+    EXPECT_EQ(metrics.dump().find("null"), std::string::npos);  // JSON's NaN
+    return metrics;
+  }
+  // `usvid simulate ARGS` into a file of this test's directory.
+  std::string Simulate(const std::string& name, const std::string& args) {
+    const std::string out = (dir_ / (name + ".csv")).string();
+    EXPECT_EQ(RunUsvid("simulate " + args + " --out " + out).exit_code, 0) << args;
+    return out;
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(MethodsCliTest, OdinMethodsWriteModelsThatFreeRun) {
+  const std::string train = Simulate(
+      "train", "--vessel odin3dof --maneuver random-steps --duration 300 --noise 0.005 --seed 5");
+  const std::string test =
+      Simulate("test", "--vessel odin3dof --maneuver multisine --duration 120 --seed 1");
+  for (const std::string method : {"sindy", "fossen-ceres"}) {
+    const nlohmann::json m = IdentifyAndEvaluate(method, "odin3dof", train, test);
+    EXPECT_GT(m.at("u").at("fit_percent").get<double>(), 90.0) << method;
+    EXPECT_FALSE(m.at("diverged").get<bool>()) << method;
+  }
+  const nlohmann::json gp = IdentifyAndEvaluate(
+      "gp", "odin3dof", train, test, "--operators +,-,*,abs --population 500 --generations 20");
+  EXPECT_TRUE(gp.contains("derivative_r2"));
+}
+
+TEST_F(MethodsCliTest, EbLrOnAStepGrid) {
+  const std::string train =
+      Simulate("train", "--vessel eb2dof --maneuver stepgrid:5/3 --noise 0.001 --seed 2");
+  const std::string test =
+      Simulate("test", "--vessel eb2dof --maneuver random-steps --duration 300 --seed 3");
+  const nlohmann::json m = IdentifyAndEvaluate("eb-lr", "eb2dof", train, test);
+  EXPECT_GT(m.at("U").at("fit_percent").get<double>(), 95.0);
+  EXPECT_GT(m.at("r").at("fit_percent").get<double>(), 95.0);
+}
+
+}  // namespace
+}  // namespace usvid
