@@ -1,0 +1,206 @@
+#include "methods/identify.h"
+
+#include <chrono>
+#include <cstdio>
+#include <set>
+
+#include "core/error.h"
+#include "methods/eb_lr/eb_lr.h"
+#include "methods/fossen_ceres/fossen_fit.h"
+#include "methods/gp/gp_identify.h"
+#include "methods/sindy/sindy.h"
+#include "preprocessing/delay_estimation.h"
+#include "simulation/segment_error.h"
+#include "simulation/vessel_simulator.h"
+#include "simulators/odin3dof.h"
+
+namespace usvid {
+namespace {
+
+using Logger = std::function<void(const std::string&)>;
+
+void Log(const Logger& log, const std::string& line) {
+  if (log) log(line);
+}
+
+// fossen-ceres: the parametric odin3dof model, equation error then multiple shooting.
+nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
+                              const PreparedData& prepared, const Logger& log) {
+  fossen::FossenOptions fo;
+  fo.segment_s = o.segment_s;
+  fo.robust = o.robust;
+  fo.threads = o.threads > 0 ? o.threads : 1;
+  const fossen::FossenFit eq = fossen::FitEquationError(prepared, fo);
+  Log(log, "equation-error fit: " + eq.termination);
+  fossen::FossenFit fit = eq;
+  if (o.fossen_mode == "simulation") {
+    fit = fossen::FitSimulationError(prepared, eq.params, fo);
+    Log(log, "simulation-error fit (multiple shooting): " + fit.termination);
+  }
+  nlohmann::json params = nlohmann::json::object(), sd = nlohmann::json::object(),
+                 eq_params = nlohmann::json::object();
+  for (int i = 0; i < Odin3Dof::kParams; ++i) {
+    const std::string name(Odin3Dof::kParamNames[i]);
+    params[name] = fit.params[i];
+    sd[name] = fit.sd[i];
+    eq_params[name] = eq.params[i];
+  }
+  nlohmann::json refined = nullptr;
+  if (prepared.delay_estimate) {
+    // The delay to a fraction of a sample: NLopt (DIRECT-L, then Sbplx) on the segmented
+    // simulation error of the fitted model on the data as recorded.
+    const VesselSimulator& sim = FindVessel("odin3dof");
+    const std::vector<double> p(fit.params.begin(), fit.params.end());
+    auto cost = [&](const std::vector<double>& d) {
+      EffectValues<double> e;
+      e.delay_s = d[0];
+      return SegmentedSimulationError(sim, p, e, data, {"u", "v", "r"}, o.segment_s);
+    };
+    const DelayEstimate d =
+        ContinuousDelay(cost, 1, o.preprocess.max_delay_s, {prepared.delay_s}, 60);
+    refined = d.delay_s;
+    Log(log, "delay refined on the simulation error: " + std::to_string(d.delay_s) + " s");
+  }
+  return {{"parameters", params},
+          {"equations", fossen::Equations(fit.params)},
+          {"fossen",
+           {{"mode", o.fossen_mode},
+            {"segment_s", o.segment_s},
+            {"robust", o.robust},
+            {"parameter_sd", sd},
+            {"covariance_ok", fit.covariance_ok},
+            {"termination", fit.termination},
+            {"converged", fit.converged},
+            {"initial_cost", fit.initial_cost},
+            {"final_cost", fit.final_cost},
+            {"iterations", fit.iterations},
+            {"equation_error_parameters", eq_params},
+            {"delay_refined_s", refined}}}};
+}
+
+// The vessel's states less `excluded`, in order.
+std::vector<std::string> StatesExcept(const VesselInfo& info,
+                                      const std::set<std::string>& excluded) {
+  std::vector<std::string> out;
+  for (const std::string& s : info.states)
+    if (!excluded.contains(s)) out.push_back(s);
+  return out;
+}
+
+// Positions and heading follow from the kinematics and need no equation; the dynamics do not
+// depend on them either, except the msd's spring on x. Actuator feedback is left out.
+const std::set<std::string> kNotVariables = {"north",        "east",           "psi", "chi", "rpm",
+                                             "nozzle_angle", "bucket_position"};
+
+}  // namespace
+
+nlohmann::json Identify(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
+  if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" && o.method != "fossen-ceres")
+    throw InputError("--method '" + o.method +
+                     "': unknown method (known: gp, sindy, eb-lr, fossen-ceres)");
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::string> states = o.states, variables = o.states, inputs = o.inputs;
+  if (!o.vessel.empty()) {
+    const VesselInfo& info = FindVessel(o.vessel).Info();
+    if (states.empty()) {
+      variables = StatesExcept(info, kNotVariables);
+      std::set<std::string> no_equation = kNotVariables;
+      no_equation.insert("x");
+      states = StatesExcept(info, no_equation);
+    }
+    if (inputs.empty()) inputs = info.inputs;
+  }
+  if (states.empty() || inputs.empty())
+    throw InputError("identify: give --vessel, or --states and --inputs");
+  if (o.method == "eb-lr") {
+    // The Eriksen-Breivik 2-DOF form: speed U and rate r, driven by thrust and yaw inputs.
+    if (!o.vessel.empty() && o.states.empty()) {
+      const Actuation& a = FindVessel(o.vessel).Info().actuation;
+      if (a.thrust_input < 0)
+        throw InputError("--method eb-lr: vessel " + o.vessel + " has no thrust input");
+      states = variables = {"U", "r"};
+      inputs = {a.input_names[a.thrust_input], a.input_names[a.yaw_input]};
+    }
+    if (states.size() != 2 || inputs.size() != 2)
+      throw InputError("--method eb-lr: needs --states SPEED,RATE and --inputs THRUST,YAW");
+  }
+  if (o.method == "fossen-ceres" && (states != std::vector<std::string>{"u", "v", "r"} ||
+                                     inputs != std::vector<std::string>{"tau_x", "tau_y", "tau_n"}))
+    throw InputError(
+        "--method fossen-ceres: fits the Fossen 3-DOF model of odin3dof, states "
+        "u,v,r and inputs tau_x,tau_y,tau_n (use --vessel odin3dof)");
+  if (o.population < 4 || o.generations < 1 || o.max_depth < 2 || o.max_depth > 17)
+    throw InputError("identify: --population >= 4, --generations >= 1, --max-depth in [2, 17]");
+  if (!(o.ols_threshold >= 0 && o.ols_threshold < 1))
+    throw InputError("--ols-threshold: must be in [0, 1)");
+  gp::GpOptions gpo;
+  gpo.functions = gp::ParseOperators(o.operators);
+  gpo.population = o.population;
+  gpo.generations = o.generations;
+  gpo.max_depth = o.max_depth;
+  gpo.ols_threshold = o.ols_threshold;
+  gpo.fitness_mse = o.fitness == "mse";
+  gpo.fit_rows = o.fit_rows;
+  gpo.seed = o.seed;
+  gpo.threads = o.threads;
+  const PreprocessOptions& pre = o.preprocess;
+  const PreparedData prepared = Preprocess(data, variables, inputs, pre);
+  for (const std::string& note : prepared.notes) Log(log, note);
+  nlohmann::json model = {{"method", o.method},
+                          {"vessel", o.vessel},
+                          {"states", states},
+                          {"variables", variables},
+                          {"inputs", inputs},
+                          {"seed", o.seed},
+                          {"preprocessing",
+                           {{"delay_s", prepared.delay_s},
+                            {"derivative", pre.derivative.Spec()},
+                            {"step_breaks", pre.step_breaks},
+                            {"notes", prepared.notes}}}};
+  if (o.method == "eb-lr") {
+    const eb_lr::EbLrIdentification id =
+        eb_lr::IdentifyWithEbLr(data, states[0], states[1], inputs[0], inputs[1], {});
+    model["parameters"] = id.parameters;
+    model["equations"] = id.equations;
+    model["eb_lr"] = id.details;
+  } else if (o.method == "fossen-ceres") {
+    model.update(IdentifyFossen(o, data, prepared, log));
+  } else if (o.method == "sindy") {
+    const sindy::SindyIdentification id =
+        sindy::IdentifyWithSindy(prepared, states, variables, inputs, sindy::SindyOptions{});
+    model["parameters"] = id.parameters;
+    model["equations"] = id.equations;
+    model["sindy"] = id.details;
+  } else {
+    const gp::GpIdentification gp = gp::IdentifyWithGp(
+        prepared, states, variables, inputs, gpo,
+        [&](const std::string& state, const gp::GenerationLog& g) {
+          char line[200];
+          std::snprintf(line, sizeof line,
+                        "%s' generation %d: best r2 %.6f, size %zu, fitness %.6f, "
+                        "%.3g node evaluations/s",
+                        state.c_str(), g.generation, g.best_r2, g.best_size, g.best_fitness,
+                        g.node_evals_per_second);
+          Log(log, line);
+        });
+    model["parameters"] = gp.parameters;
+    model["equations"] = gp.equations;
+    model["gp"] = {{"operators", gp::OperatorList(gpo.functions)},
+                   {"population", gpo.population},
+                   {"generations", gpo.generations},
+                   {"max_depth", gpo.max_depth},
+                   {"crossover", gpo.crossover},
+                   {"mutation", gpo.mutation},
+                   {"ols_threshold", gpo.ols_threshold},
+                   {"fitness", o.fitness},
+                   {"fit_rows", gpo.fit_rows},
+                   {"node_evaluations", gp.node_evaluations},
+                   {"equations", gp.details}};
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  model["train"] = {{"data", o.data_name}, {"samples", prepared.data.rows()}, {"seconds", seconds}};
+  return model;
+}
+
+}  // namespace usvid

@@ -1,0 +1,44 @@
+// One identification, whatever the method: states and inputs chosen (from a vessel or given),
+// the data preprocessed, the method fitted, and the model JSON of contract section 5 returned
+// (method, vessel, states, variables, inputs, parameters, equations, seed, preprocessing, train,
+// and the method's own details). Used by `usvid identify` and by the comparison harness.
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+#include "preprocessing/pipeline.h"
+
+namespace usvid {
+
+struct IdentifyRequest {
+  std::string method;  // gp, sindy, eb-lr, fossen-ceres
+  std::string vessel;  // states and inputs from it (when not given)
+  std::vector<std::string> states, inputs;
+  std::string data_name;  // for model.json's train.data
+  PreprocessOptions preprocess;
+  // gp
+  std::string operators = "+,-,*";
+  int population = 2000;
+  int generations = 50;
+  int max_depth = 6;
+  double ols_threshold = 0.05;
+  std::string fitness = "r2";
+  long fit_rows = 4000;
+  uint64_t seed = 1;
+  int threads = 0;
+  // fossen-ceres
+  std::string fossen_mode = "simulation";
+  double segment_s = 10.0;
+  bool robust = false;
+};
+
+// Throws InputError for an unknown method or a combination it cannot fit. `log` receives
+// progress lines (may be empty).
+nlohmann::json Identify(const Dataset& data, const IdentifyRequest& request,
+                        const std::function<void(const std::string&)>& log = {});
+
+}  // namespace usvid
