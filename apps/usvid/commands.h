@@ -13,5 +13,6 @@ void AddVesselCommand(CLI::App& app);
 void AddPreprocessCommand(CLI::App& app);
 void AddIdentifyCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
+void AddCompareCommand(CLI::App& app);
 
 }  // namespace usvid

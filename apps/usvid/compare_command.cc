@@ -1,0 +1,60 @@
+// usvid compare [--suite S.json | --quick] [--threads N] --out DIR
+// The whole benchmark: every method fitted on every training maneuver and scored in free run on
+// held-out test maneuvers; writes DIR/results.json, DIR/results.csv and DIR/summary.md.
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include "apps/usvid/commands.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/json_file.h"
+#include "harness/results.h"
+#include "harness/run_suite.h"
+
+namespace usvid {
+namespace {
+
+struct CompareOptions {
+  std::string suite;
+  bool quick = false;
+  int threads = 0;
+  std::string out;
+};
+
+void RunCompare(const CompareOptions& o) {
+  if (!o.suite.empty() && o.quick) throw InputError("compare: give --suite or --quick, not both");
+  const Suite suite =
+      o.suite.empty() ? DefaultSuite(o.quick) : ParseSuite(ReadJsonFile(o.suite), o.suite);
+  EnsureOutputDirectory(o.out);
+  const auto start = std::chrono::steady_clock::now();
+  std::cerr << "usvid compare: suite '" << suite.name << "', " << FitJobs(suite).size()
+            << " fits x " << suite.test_maneuvers.size() << " test maneuvers\n";
+  const std::vector<ResultRow> rows = RunSuite(suite, o.threads, [](const std::string& line) {
+    std::cerr << "usvid compare: " << line << '\n';
+  });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  WriteJsonFile(o.out + "/results.json", ResultsJson(suite, rows, seconds));
+  WriteFileAtomically(o.out + "/results.csv", ResultsCsv(rows));
+  WriteFileAtomically(o.out + "/summary.md", SummaryMarkdown(suite, rows, seconds));
+  std::cerr << "usvid compare: wrote results.json, results.csv and summary.md to " << o.out << " ("
+            << seconds << " s)\n";
+}
+
+}  // namespace
+
+void AddCompareCommand(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare", "The benchmark: methods x maneuvers x vessels x noise x seeds, held-out scores");
+  cmd->add_option("--suite", o->suite, "Suite JSON (default: the embedded default suite)");
+  cmd->add_flag("--quick", o->quick, "The default suite, smaller: about a minute");
+  cmd->add_option("--threads", o->threads, "Fits in parallel (0: all cores)");
+  cmd->add_option("--out", o->out, "Directory for results.json, results.csv, summary.md")
+      ->required();
+  cmd->callback([o] { RunCompare(*o); });
+}
+
+}  // namespace usvid

@@ -1,0 +1,171 @@
+#include "harness/results.h"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/parse_number.h"
+
+namespace usvid {
+namespace {
+
+struct Stats {
+  double mean = 0.0, sd = 0.0;
+  int n = 0;
+};
+
+Stats Of(const std::vector<double>& v) {
+  Stats s;
+  s.n = static_cast<int>(v.size());
+  if (v.empty()) return s;
+  for (double x : v) s.mean += x / s.n;
+  for (double x : v) s.sd += (x - s.mean) * (x - s.mean) / std::max(1, s.n - 1);
+  s.sd = std::sqrt(s.sd);
+  return s;
+}
+
+std::string Cell(const Stats& s) {
+  if (s.n == 0) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.1f ± %.1f", s.mean, s.sd);
+  return buf;
+}
+
+template <typename Key>
+std::map<Key, std::vector<double>> Group(const std::vector<ResultRow>& rows,
+                                         const std::function<bool(const ResultRow&)>& keep,
+                                         const std::function<Key(const ResultRow&)>& key) {
+  std::map<Key, std::vector<double>> g;
+  for (const ResultRow& r : rows)
+    if (r.status == "ok" && keep(r)) g[key(r)].push_back(r.mean_fit_percent);
+  return g;
+}
+
+}  // namespace
+
+nlohmann::json ResultsJson(const Suite& suite, const std::vector<ResultRow>& rows, double seconds) {
+  nlohmann::json r = nlohmann::json::array();
+  for (const ResultRow& row : rows) r.push_back(row.ToJson());
+  return {{"suite", SuiteToJson(suite)}, {"seconds", seconds}, {"rows", r}};
+}
+
+std::string ResultsCsv(const std::vector<ResultRow>& rows) {
+  std::set<std::string> states;
+  for (const ResultRow& r : rows)
+    for (const auto& [s, _] : r.fit_percent) states.insert(s);
+  std::ostringstream out;
+  out << "vessel,train_maneuver,test_maneuver,method,noise,seed,test_seed,status,diverged,"
+         "fit_seconds,mean_fit_percent";
+  for (const std::string& s : states) out << ",fit_percent_" << s;
+  out << '\n';
+  for (const ResultRow& r : rows) {
+    const bool ok = r.status == "ok";
+    std::string status = ok ? "ok" : "failed";
+    out << r.vessel << ',' << r.train_maneuver << ',' << r.test_maneuver << ',' << r.method << ','
+        << FormatNumber(r.noise) << ',' << r.seed << ',' << r.test_seed << ',' << status << ','
+        << (ok ? (r.diverged ? "true" : "false") : "") << ','
+        << (ok ? FormatNumber(r.fit_seconds) : "") << ','
+        << (ok ? FormatNumber(r.mean_fit_percent) : "");
+    for (const std::string& s : states) {
+      out << ',';
+      const auto it = r.fit_percent.find(s);
+      if (ok && it != r.fit_percent.end()) out << FormatNumber(it->second);
+    }
+    out << '\n';
+  }
+  return out.str();
+}
+
+std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& rows,
+                            double seconds) {
+  std::ostringstream md;
+  md << "# usvid compare: " << suite.name << "\n\n";
+  int failed = 0, diverged = 0;
+  for (const ResultRow& r : rows) {
+    failed += r.status != "ok";
+    diverged += r.status == "ok" && r.diverged;
+  }
+  md << rows.size() << " scores (" << failed << " failed, " << diverged << " diverged) in "
+     << std::lround(seconds) << " s. Numbers: free-run fit % on held-out data (another maneuver, "
+     << "or the same with another seed), mean over the identified states, then mean ± sd over "
+        "seeds and noise levels.\n\n";
+  std::set<std::string> methods, vessels;
+  for (const ResultRow& r : rows) {
+    methods.insert(r.method);
+    vessels.insert(r.vessel);
+  }
+  for (const std::string& vessel : vessels) {
+    md << "## " << vessel << "\n\n### Method x test maneuver\n\n| method |";
+    for (const std::string& t : suite.test_maneuvers) md << ' ' << t << " |";
+    md << "\n| --- |";
+    for (size_t i = 0; i < suite.test_maneuvers.size(); ++i) md << " --- |";
+    md << '\n';
+    const auto g = Group<std::pair<std::string, std::string>>(
+        rows, [&](const ResultRow& r) { return r.vessel == vessel; },
+        [](const ResultRow& r) { return std::make_pair(r.method, r.test_maneuver); });
+    for (const std::string& m : methods) {
+      bool any = false;
+      for (const std::string& t : suite.test_maneuvers) any = any || g.count({m, t});
+      if (!any) continue;
+      md << "| " << m << " |";
+      for (const std::string& t : suite.test_maneuvers) {
+        const auto it = g.find({m, t});
+        md << ' ' << Cell(it == g.end() ? Stats{} : Of(it->second)) << " |";
+      }
+      md << '\n';
+    }
+    md << "\n### Training x test maneuver, per method (generalisation)\n\n";
+    for (const std::string& m : methods) {
+      const auto gm = Group<std::pair<std::string, std::string>>(
+          rows, [&](const ResultRow& r) { return r.vessel == vessel && r.method == m; },
+          [](const ResultRow& r) { return std::make_pair(r.train_maneuver, r.test_maneuver); });
+      if (gm.empty()) continue;
+      md << "**" << m << "**\n\n| trained on \\ tested on |";
+      for (const std::string& t : suite.test_maneuvers) md << ' ' << t << " |";
+      md << "\n| --- |";
+      for (size_t i = 0; i < suite.test_maneuvers.size(); ++i) md << " --- |";
+      md << '\n';
+      std::string best;
+      double best_other = -INFINITY;
+      for (const std::string& train : suite.train_maneuvers) {
+        bool any = false;
+        for (const std::string& t : suite.test_maneuvers) any = any || gm.count({train, t});
+        if (!any) continue;
+        md << "| " << train << " |";
+        std::vector<double> others;
+        for (const std::string& t : suite.test_maneuvers) {
+          const auto it = gm.find({train, t});
+          md << ' ' << Cell(it == gm.end() ? Stats{} : Of(it->second)) << " |";
+          if (it != gm.end() && t != train)
+            others.insert(others.end(), it->second.begin(), it->second.end());
+        }
+        md << '\n';
+        const Stats o = Of(others);
+        if (o.n > 0 && o.mean > best_other) {
+          best_other = o.mean;
+          best = train;
+        }
+      }
+      if (!best.empty()) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.1f", best_other);
+        md << "\nBest training maneuver for " << m << " on " << vessel << ": **" << best
+           << "** (mean fit " << buf << " % on the other maneuvers).\n";
+      }
+      md << '\n';
+    }
+  }
+  if (failed > 0) {
+    md << "## Failed\n\n";
+    std::set<std::string> seen;
+    for (const ResultRow& r : rows)
+      if (r.status != "ok" && seen.insert(r.vessel + r.train_maneuver + r.method + r.status).second)
+        md << "- " << r.vessel << " / " << r.train_maneuver << " / " << r.method << ": " << r.status
+           << '\n';
+  }
+  return md.str();
+}
+
+}  // namespace usvid

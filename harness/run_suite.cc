@@ -1,0 +1,135 @@
+#include "harness/run_suite.h"
+
+#include <omp.h>
+
+#include <chrono>
+
+#include "maneuvers/maneuver_factory.h"
+#include "methods/identify.h"
+#include "metrics/evaluation.h"
+#include "sensors/noise.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+namespace {
+
+Dataset Simulate(const std::string& vessel, const std::string& maneuver, double seconds,
+                 double noise, uint64_t seed) {
+  const VesselSimulator& sim = FindVessel(vessel);
+  // A step grid runs until its grid is done.
+  const double duration = maneuver.starts_with("stepgrid") ? 0.0 : seconds;
+  auto m = MakeManeuver(maneuver, sim.Info().actuation, duration, seed);
+  Dataset d = sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
+  std::vector<std::string> measured = sim.Info().states;
+  measured.insert(measured.end(), sim.Info().derived.begin(), sim.Info().derived.end());
+  AddGaussianNoise(d, measured, noise, seed);
+  return d;
+}
+
+IdentifyRequest RequestFor(const FitJob& job) {
+  IdentifyRequest r;
+  r.method = job.method.method;
+  r.vessel = job.vessel;
+  r.seed = job.seed;
+  r.threads = 1;  // the suite runs jobs in parallel
+  r.data_name = job.vessel + "/" + job.train_maneuver;
+  const nlohmann::json& o = job.method.options;
+  r.operators = o.value("operators", r.operators);
+  r.population = o.value("population", r.population);
+  r.generations = o.value("generations", r.generations);
+  r.max_depth = o.value("max_depth", r.max_depth);
+  r.ols_threshold = o.value("ols_threshold", r.ols_threshold);
+  r.fossen_mode = o.value("fit", r.fossen_mode);
+  r.segment_s = o.value("segment_s", r.segment_s);
+  return r;
+}
+
+}  // namespace
+
+nlohmann::json ResultRow::ToJson() const {
+  nlohmann::json j = {{"vessel", vessel},
+                      {"train_maneuver", train_maneuver},
+                      {"test_maneuver", test_maneuver},
+                      {"method", method},
+                      {"noise", noise},
+                      {"seed", seed},
+                      {"test_seed", test_seed},
+                      {"status", status}};
+  if (status == "ok") {
+    j["fit_percent"] = fit_percent;
+    j["nrmse"] = nrmse;
+    j["mean_fit_percent"] = mean_fit_percent;
+    j["diverged"] = diverged;
+    j["fit_seconds"] = fit_seconds;
+  }
+  return j;
+}
+
+std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
+                                const std::function<void(const std::string&)>& progress) {
+  const std::vector<FitJob> jobs = FitJobs(suite);
+  std::vector<std::vector<ResultRow>> rows(jobs.size());
+  if (threads > 0) omp_set_num_threads(threads);
+  int done = 0;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (size_t j = 0; j < jobs.size(); ++j) {
+    const FitJob& job = jobs[j];
+    ResultRow base;
+    base.vessel = job.vessel;
+    base.train_maneuver = job.train_maneuver;
+    base.method = job.method.Label();
+    base.noise = job.noise;
+    base.seed = job.seed;
+    base.test_seed = job.seed + 1000;
+    // No exception leaves the parallel region: a failure is a row.
+    nlohmann::json model;
+    std::string failure;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      const Dataset train =
+          Simulate(job.vessel, job.train_maneuver, suite.train_seconds, job.noise, job.seed);
+      model = Identify(train, RequestFor(job));
+    } catch (const std::exception& e) {
+      failure = std::string("failed: ") + e.what();
+    }
+    base.fit_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (const std::string& test : suite.test_maneuvers) {
+      ResultRow row = base;
+      row.test_maneuver = test;
+      if (!failure.empty()) {
+        row.status = failure;
+        rows[j].push_back(row);
+        continue;
+      }
+      try {
+        const Dataset held =
+            Simulate(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
+        const Evaluation e = EvaluateModel(model, held);
+        double sum = 0.0;
+        for (const auto& [state, _] : model.at("equations").items()) {
+          row.fit_percent[state] = e.metrics.at(state).at("fit_percent").get<double>();
+          row.nrmse[state] = e.metrics.at(state).at("nrmse").get<double>();
+          sum += row.fit_percent[state];
+        }
+        row.mean_fit_percent = sum / static_cast<double>(row.fit_percent.size());
+        row.diverged = e.metrics.at("diverged").get<bool>();
+      } catch (const std::exception& e) {
+        row.status = std::string("failed: ") + e.what();
+      }
+      rows[j].push_back(row);
+    }
+#pragma omp critical
+    {
+      ++done;
+      if (progress)
+        progress("[" + std::to_string(done) + "/" + std::to_string(jobs.size()) + "] " + job.Id() +
+                 (failure.empty() ? "" : " " + failure));
+    }
+  }
+  std::vector<ResultRow> out;
+  for (auto& r : rows) out.insert(out.end(), r.begin(), r.end());
+  return out;
+}
+
+}  // namespace usvid

@@ -1,0 +1,35 @@
+// Runs a comparison suite: every fit job (suite.h) trains its method on simulated data, and the
+// model is scored in free run on every test maneuver simulated with another seed (seed + 1000),
+// so no score is on data the model was fitted on. Jobs run in parallel (OpenMP, one thread per
+// job, each deterministic from its seed), rows come out in job order, so results do not depend
+// on the thread count. A job that fails is a row saying why, not a stopped run.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "harness/suite.h"
+
+namespace usvid {
+
+struct ResultRow {
+  std::string vessel, train_maneuver, test_maneuver, method;
+  double noise = 0.0;
+  uint64_t seed = 1, test_seed = 1;
+  std::map<std::string, double> fit_percent;  // per identified state
+  std::map<std::string, double> nrmse;
+  double mean_fit_percent = 0.0;
+  bool diverged = false;
+  double fit_seconds = 0.0;
+  std::string status = "ok";  // or "failed: why"
+
+  nlohmann::json ToJson() const;
+};
+
+std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
+                                const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace usvid

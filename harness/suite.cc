@@ -1,0 +1,153 @@
+#include "harness/suite.h"
+
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+namespace {
+
+template <typename T>
+std::vector<T> ListOf(const nlohmann::json& v, const std::string& where) {
+  if (!v.is_array() || v.empty()) throw InputError(where + ": expected a non-empty array");
+  std::vector<T> out;
+  for (const auto& item : v) {
+    try {
+      out.push_back(item.get<T>());
+    } catch (const nlohmann::json::exception&) {
+      throw InputError(where + ": element " + item.dump() + " has the wrong type");
+    }
+  }
+  return out;
+}
+
+const std::set<std::string> kMethods = {"gp", "sindy", "eb-lr", "fossen-ceres"};
+
+}  // namespace
+
+std::string SuiteMethod::Label() const {
+  if (method == "gp" && options.contains("operators"))
+    return "gp[" + options.at("operators").get<std::string>() + "]";
+  return method;
+}
+
+std::string FitJob::Id() const {
+  std::ostringstream s;
+  s << vessel << "/" << train_maneuver << "/" << method.Label() << "/noise=" << noise
+    << "/seed=" << seed;
+  return s.str();
+}
+
+Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
+  if (!v.is_object()) throw InputError(file + ": a suite is a JSON object");
+  static const std::set<std::string> kFields = {
+      "name",  "vessels", "train_maneuvers", "test_maneuvers", "methods",
+      "noise", "seeds",   "train_seconds",   "test_seconds"};
+  for (const auto& [key, _] : v.items())
+    if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
+  for (const char* required : {"vessels", "train_maneuvers", "test_maneuvers", "methods"})
+    if (!v.contains(required)) throw InputError(file + ": missing field '" + required + "'");
+  Suite s;
+  if (v.contains("name")) {
+    if (!v["name"].is_string()) throw InputError(file + ": 'name' must be a string");
+    s.name = v["name"].get<std::string>();
+  }
+  s.vessels = ListOf<std::string>(v["vessels"], file + ": vessels");
+  for (const std::string& vessel : s.vessels) FindVessel(vessel);  // throws on unknown names
+  s.train_maneuvers = ListOf<std::string>(v["train_maneuvers"], file + ": train_maneuvers");
+  s.test_maneuvers = ListOf<std::string>(v["test_maneuvers"], file + ": test_maneuvers");
+  if (!v["methods"].is_array() || v["methods"].empty())
+    throw InputError(file + ": methods: expected a non-empty array");
+  for (const auto& m : v["methods"]) {
+    SuiteMethod sm;
+    if (m.is_string()) {
+      sm.method = m.get<std::string>();
+      sm.options = nlohmann::json::object();
+    } else if (m.is_object() && m.contains("method") && m["method"].is_string()) {
+      sm.method = m["method"].get<std::string>();
+      sm.options = m;
+      sm.options.erase("method");
+    } else {
+      throw InputError(file + ": methods: each is a name or an object with \"method\"");
+    }
+    if (!kMethods.contains(sm.method))
+      throw InputError(file + ": methods: unknown method '" + sm.method +
+                       "' (known: gp, sindy, eb-lr, fossen-ceres)");
+    s.methods.push_back(sm);
+  }
+  s.noise = v.contains("noise") ? ListOf<double>(v["noise"], file + ": noise")
+                                : std::vector<double>{0.005};
+  for (double n : s.noise)
+    if (!(n >= 0 && n < 1)) throw InputError(file + ": noise: levels must be in [0, 1)");
+  s.seeds = v.contains("seeds") ? ListOf<uint64_t>(v["seeds"], file + ": seeds")
+                                : std::vector<uint64_t>{1};
+  for (const char* key : {"train_seconds", "test_seconds"}) {
+    if (!v.contains(key)) continue;
+    if (!v[key].is_number() || !(v[key].get<double>() > 0))
+      throw InputError(file + ": '" + key + "' must be a positive number");
+    (std::string(key) == "train_seconds" ? s.train_seconds : s.test_seconds) = v[key].get<double>();
+  }
+  return s;
+}
+
+Suite DefaultSuite(bool quick) {
+  const nlohmann::json gp = {{"method", "gp"},
+                             {"operators", "+,-,*,abs"},
+                             {"population", quick ? 300 : 1000},
+                             {"generations", quick ? 10 : 30},
+                             {"ols_threshold", 0.001}};
+  nlohmann::json suite = {{"name", quick ? "default-quick" : "default"},
+                          {"vessels", quick ? nlohmann::json{"odin3dof", "odin-hs"}
+                                            : nlohmann::json{"odin3dof", "odin-hs"}},
+                          {"train_maneuvers", {"zigzag:20/20", "stepgrid", "random-steps"}},
+                          {"test_maneuvers", {"zigzag:20/20", "stepgrid", "random-steps"}},
+                          {"methods", {gp, "sindy", "fossen-ceres", "eb-lr"}},
+                          {"noise", quick ? nlohmann::json{0.005} : nlohmann::json{0.005, 0.02}},
+                          {"seeds", quick ? nlohmann::json{1} : nlohmann::json{1, 2, 3}},
+                          {"train_seconds", quick ? 150 : 300},
+                          {"test_seconds", quick ? 90 : 180}};
+  return ParseSuite(suite, "default suite");
+}
+
+nlohmann::json SuiteToJson(const Suite& s) {
+  nlohmann::json methods = nlohmann::json::array();
+  for (const SuiteMethod& m : s.methods) {
+    nlohmann::json j = m.options;
+    j["method"] = m.method;
+    methods.push_back(j);
+  }
+  return {{"name", s.name},
+          {"vessels", s.vessels},
+          {"train_maneuvers", s.train_maneuvers},
+          {"test_maneuvers", s.test_maneuvers},
+          {"methods", methods},
+          {"noise", s.noise},
+          {"seeds", s.seeds},
+          {"train_seconds", s.train_seconds},
+          {"test_seconds", s.test_seconds}};
+}
+
+std::vector<FitJob> FitJobs(const Suite& s) {
+  std::vector<FitJob> jobs;
+  for (const std::string& vessel : s.vessels) {
+    const VesselInfo& info = FindVessel(vessel).Info();
+    const bool has_speed =
+        info.StateIndex("U") >= 0 ||
+        std::find(info.derived.begin(), info.derived.end(), "U") != info.derived.end();
+    for (const std::string& train : s.train_maneuvers) {
+      if (train.starts_with("zigzag") || train.starts_with("turning"))
+        if (info.actuation.heading_state < 0) continue;
+      for (const SuiteMethod& m : s.methods) {
+        if (m.method == "fossen-ceres" && vessel != "odin3dof") continue;
+        if (m.method == "eb-lr" && (!has_speed || !train.starts_with("stepgrid"))) continue;
+        for (double noise : s.noise)
+          for (uint64_t seed : s.seeds) jobs.push_back({vessel, train, m, noise, seed});
+      }
+    }
+  }
+  return jobs;
+}
+
+}  // namespace usvid

@@ -1,0 +1,53 @@
+// A comparison suite (usvid compare --suite S.json): vessels x training maneuvers x test
+// maneuvers x methods x noise levels x seeds. Every score is on data the model was not fitted
+// on: another maneuver, or the same maneuver with another seed. JSON form:
+//   {"name": "...", "vessels": ["odin3dof"], "train_maneuvers": ["random-steps"],
+//    "test_maneuvers": ["multisine"], "methods": [{"method": "gp", "operators": "+,-,*,abs"}],
+//    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180}
+// Unknown fields, wrong types and unknown names are errors naming the file and field.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace usvid {
+
+struct SuiteMethod {
+  std::string method;      // gp, sindy, eb-lr, fossen-ceres
+  nlohmann::json options;  // method options (gp: operators, population, generations, ...)
+  std::string Label() const;
+};
+
+struct Suite {
+  std::string name = "suite";
+  std::vector<std::string> vessels;
+  std::vector<std::string> train_maneuvers, test_maneuvers;
+  std::vector<SuiteMethod> methods;
+  std::vector<double> noise;
+  std::vector<uint64_t> seeds;
+  double train_seconds = 300.0;
+  double test_seconds = 180.0;
+};
+
+// One fit: a method trained on one vessel's maneuver at a noise level and seed.
+struct FitJob {
+  std::string vessel, train_maneuver;
+  SuiteMethod method;
+  double noise = 0.0;
+  uint64_t seed = 1;
+  std::string Id() const;
+};
+
+Suite ParseSuite(const nlohmann::json& value, const std::string& file);
+// The embedded default: odin3dof and odin-hs; zig-zag, step grid and random steps; every
+// method; two noise levels; three seeds. `quick`: one vessel's worth, smaller GP, one seed.
+Suite DefaultSuite(bool quick);
+nlohmann::json SuiteToJson(const Suite& suite);
+
+// The fits a suite needs, skipping combinations a method cannot fit (fossen-ceres only
+// odin3dof; eb-lr needs a speed state and a step grid; maneuvers needing a heading).
+std::vector<FitJob> FitJobs(const Suite& suite);
+
+}  // namespace usvid

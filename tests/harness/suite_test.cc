@@ -1,0 +1,114 @@
+// Suites (issue 7): JSON suites are read strictly, the fit jobs skip what a method cannot fit,
+// and a run gives one row per fit and test maneuver, each on held-out data, the same at 1 and
+// 2 threads, with failures as rows.
+#include "harness/suite.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "harness/results.h"
+#include "harness/run_suite.h"
+
+namespace usvid {
+namespace {
+
+using ::testing::HasSubstr;
+
+class SuiteTest : public ::testing::Test {
+ protected:
+  static nlohmann::json Small() {
+    return {{"name", "small"},
+            {"vessels", {"odin3dof", "msd"}},
+            {"train_maneuvers", {"random-steps", "zigzag:20/20"}},
+            {"test_maneuvers", {"multisine"}},
+            {"methods", {"sindy", "fossen-ceres", "eb-lr"}},
+            {"noise", {0.005}},
+            {"seeds", {1}},
+            {"train_seconds", 120},
+            {"test_seconds", 60}};
+  }
+};
+
+// Bad suites name the file and the field at fault.
+TEST_F(SuiteTest, BadSuitesAreRefused) {
+  auto expect = [](nlohmann::json suite, const std::string& what) {
+    try {
+      ParseSuite(suite, "s.json");
+      FAIL() << what;
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("s.json"));
+      EXPECT_THAT(e.what(), HasSubstr(what));
+    }
+  };
+  nlohmann::json s = Small();
+  s["colour"] = "blue";
+  expect(s, "unknown field 'colour'");
+  s = Small();
+  s.erase("methods");
+  expect(s, "missing field 'methods'");
+  s = Small();
+  s["methods"] = {"magic"};
+  expect(s, "unknown method 'magic'");
+  s = Small();
+  s["noise"] = {"high"};
+  expect(s, "noise");
+  s = Small();
+  s["seeds"] = nlohmann::json::array();
+  expect(s, "seeds");
+  s = Small();
+  s["train_seconds"] = -5;
+  expect(s, "train_seconds");
+  EXPECT_THROW(ParseSuite(nlohmann::json{{"vessels", {"titanic"}},
+                                         {"train_maneuvers", {"prbs"}},
+                                         {"test_maneuvers", {"prbs"}},
+                                         {"methods", {"sindy"}}},
+                          "s.json"),
+               InputError);
+}
+
+// fossen-ceres only on odin3dof, eb-lr only on step grids of vessels with a speed state, no
+// zig-zag for the headingless msd.
+TEST_F(SuiteTest, FitJobsSkipWhatAMethodCannotFit) {
+  const std::vector<FitJob> jobs = FitJobs(ParseSuite(Small(), "s.json"));
+  for (const FitJob& j : jobs) {
+    if (j.method.method == "fossen-ceres") {
+      EXPECT_EQ(j.vessel, "odin3dof");
+    }
+    EXPECT_NE(j.method.method, "eb-lr");
+    if (j.vessel == "msd") {
+      EXPECT_NE(j.train_maneuver, "zigzag:20/20");
+    }
+  }
+  // odin3dof: 2 trains x (sindy, fossen); msd: 1 train x sindy.
+  EXPECT_EQ(jobs.size(), 5u);
+}
+
+// A small suite: one row per fit and test maneuver, each scored on another seed, the same at
+// 1 and 2 threads, and no NaN in the outputs.
+TEST_F(SuiteTest, RunGivesTheSameRowsAtAnyThreadCount) {
+  const Suite suite = ParseSuite(Small(), "s.json");
+  const std::vector<ResultRow> one = RunSuite(suite, 1), two = RunSuite(suite, 2);
+  ASSERT_EQ(one.size(), 5u);
+  for (size_t i = 0; i < one.size(); ++i) {
+    nlohmann::json a = one[i].ToJson(), b = two[i].ToJson();
+    a.erase("fit_seconds");  // wall time, the one thing that may differ
+    b.erase("fit_seconds");
+    EXPECT_EQ(a, b) << i;
+  }
+  for (const ResultRow& r : one) {
+    EXPECT_EQ(r.status, "ok") << r.status;
+    EXPECT_NE(r.test_seed, r.seed);  // held out
+    EXPECT_TRUE(std::isfinite(r.mean_fit_percent));
+  }
+  EXPECT_EQ(ResultsJson(suite, one, 1.0).dump().find("null"), std::string::npos);
+  const std::string md = SummaryMarkdown(suite, one, 1.0);
+  EXPECT_THAT(md, HasSubstr("## odin3dof"));
+  EXPECT_THAT(md, HasSubstr("Best training maneuver"));
+  EXPECT_EQ(ResultsCsv(one).substr(0, 6), "vessel");
+}
+
+}  // namespace
+}  // namespace usvid
