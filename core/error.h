@@ -12,6 +12,12 @@ class InputError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// A comparison found results worse than its baseline (usvid compare --baseline): exit code 3.
+class RegressionFound : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // "file:line:column: what" (line and column are 1-based; 0 leaves them out).
 std::string Located(const std::string& file, int line, int column, const std::string& what);
 

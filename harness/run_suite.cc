@@ -11,10 +11,10 @@
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
-namespace {
+namespace {}  // namespace
 
-Dataset Simulate(const std::string& vessel, const std::string& maneuver, double seconds,
-                 double noise, uint64_t seed) {
+Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
+                         double noise, uint64_t seed) {
   const VesselSimulator& sim = FindVessel(vessel);
   // A step grid runs until its grid is done.
   const double duration = maneuver.starts_with("stepgrid") ? 0.0 : seconds;
@@ -25,6 +25,8 @@ Dataset Simulate(const std::string& vessel, const std::string& maneuver, double 
   AddGaussianNoise(d, measured, noise, seed);
   return d;
 }
+
+namespace {
 
 IdentifyRequest RequestFor(const FitJob& job) {
   IdentifyRequest r;
@@ -86,8 +88,8 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
     std::string failure;
     const auto start = std::chrono::steady_clock::now();
     try {
-      const Dataset train =
-          Simulate(job.vessel, job.train_maneuver, suite.train_seconds, job.noise, job.seed);
+      const Dataset train = SimulateForSuite(job.vessel, job.train_maneuver, suite.train_seconds,
+                                             job.noise, job.seed);
       model = Identify(train, RequestFor(job));
     } catch (const std::exception& e) {
       failure = std::string("failed: ") + e.what();
@@ -97,6 +99,7 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
     for (const std::string& test : suite.test_maneuvers) {
       ResultRow row = base;
       row.test_maneuver = test;
+      row.model = model;
       if (!failure.empty()) {
         row.status = failure;
         rows[j].push_back(row);
@@ -104,7 +107,7 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
       }
       try {
         const Dataset held =
-            Simulate(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
+            SimulateForSuite(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
         const Evaluation e = EvaluateModel(model, held);
         double sum = 0.0;
         for (const auto& [state, _] : model.at("equations").items()) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/dataset.h"
 #include "harness/suite.h"
 
 namespace usvid {
@@ -25,9 +26,15 @@ struct ResultRow {
   bool diverged = false;
   double fit_seconds = 0.0;
   std::string status = "ok";  // or "failed: why"
+  nlohmann::json model;       // the fitted model (kept in memory for the report, not written)
 
   nlohmann::json ToJson() const;
 };
+
+// The data a suite trains or tests on: `maneuver` on `vessel` (step grids run to the end of
+// their grid), noise on every measured channel, all from `seed`.
+Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
+                         double noise, uint64_t seed);
 
 std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
                                 const std::function<void(const std::string&)>& progress = {});

@@ -1,4 +1,4 @@
-// usvid compare [--suite S.json | --quick] [--threads N] --out DIR
+// usvid compare [--suite S.json | --quick] [--threads N] [--baseline PREV/results.json] --out DIR
 // The whole benchmark: every method fitted on every training maneuver and scored in free run on
 // held-out test maneuvers; writes DIR/results.json, DIR/results.csv and DIR/summary.md.
 
@@ -10,6 +10,8 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "harness/regression.h"
+#include "harness/report.h"
 #include "harness/results.h"
 #include "harness/run_suite.h"
 
@@ -18,6 +20,7 @@ namespace {
 
 struct CompareOptions {
   std::string suite;
+  std::string baseline;
   bool quick = false;
   int threads = 0;
   std::string out;
@@ -38,9 +41,22 @@ void RunCompare(const CompareOptions& o) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   WriteJsonFile(o.out + "/results.json", ResultsJson(suite, rows, seconds));
   WriteFileAtomically(o.out + "/results.csv", ResultsCsv(rows));
-  WriteFileAtomically(o.out + "/summary.md", SummaryMarkdown(suite, rows, seconds));
-  std::cerr << "usvid compare: wrote results.json, results.csv and summary.md to " << o.out << " ("
-            << seconds << " s)\n";
+  std::string summary = SummaryMarkdown(suite, rows, seconds);
+  int worse = 0;
+  if (!o.baseline.empty()) {
+    const RegressionReport r = CompareWithBaseline(rows, ReadJsonFile(o.baseline), o.baseline);
+    WriteJsonFile(o.out + "/regressions.json", {{"baseline", o.baseline}, {"groups", r.groups}});
+    summary += "\n" + r.Markdown();
+    worse = r.worse;
+  }
+  WriteFileAtomically(o.out + "/summary.md", summary);
+  WriteReport(suite, rows, summary, o.out);
+  std::cerr << "usvid compare: wrote results.json, results.csv, summary.md, plots and report.html "
+               "to "
+            << o.out << " (" << seconds << " s)\n";
+  if (worse > 0)
+    throw RegressionFound("compare: " + std::to_string(worse) + " groups worse than the baseline " +
+                          o.baseline + " (see " + o.out + "/regressions.json)");
 }
 
 }  // namespace
@@ -51,6 +67,9 @@ void AddCompareCommand(CLI::App& app) {
       "compare", "The benchmark: methods x maneuvers x vessels x noise x seeds, held-out scores");
   cmd->add_option("--suite", o->suite, "Suite JSON (default: the embedded default suite)");
   cmd->add_flag("--quick", o->quick, "The default suite, smaller: about a minute");
+  cmd->add_option("--baseline", o->baseline,
+                  "A previous results.json: mark groups that got worse beyond the spread over "
+                  "seeds, and exit 3 when any did");
   cmd->add_option("--threads", o->threads, "Fits in parallel (0: all cores)");
   cmd->add_option("--out", o->out, "Directory for results.json, results.csv, summary.md")
       ->required();

@@ -1,6 +1,6 @@
 // usvid: identification of high-speed USV dynamics, and a benchmark of the methods.
 // Exit codes: 0 success, 2 bad input or usage (one line naming the file, line or option),
-// 1 an internal failure.
+// 3 `compare --baseline` found results worse than the baseline, 1 an internal failure.
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
   } catch (const usvid::InputError& e) {
     std::cerr << "usvid: error: " << e.what() << '\n';
     return 2;
+  } catch (const usvid::RegressionFound& e) {
+    std::cerr << "usvid: " << e.what() << '\n';
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "usvid: internal error: " << e.what() << '\n';
     return 1;

@@ -1,0 +1,99 @@
+// `usvid compare` as a user runs it (issue 7): every output written, no NaN, a report.html that
+// holds its figures inline, and regression tracking against a baseline (exit 3 when worse).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/csv_tokenizer.h"
+#include "core/json_file.h"
+#include "tests/apps/run_usvid.h"
+
+namespace usvid {
+namespace {
+
+using testing::FreshTempDir;
+using ::testing::HasSubstr;
+using testing::RunUsvid;
+using testing::WriteText;
+namespace fs = std::filesystem;
+
+class CompareCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = FreshTempDir();
+    suite_ = (dir_ / "suite.json").string();
+    WriteText(suite_, nlohmann::json{{"name", "cli"},
+                                     {"vessels", {"odin3dof", "eb2dof"}},
+                                     {"train_maneuvers", {"random-steps", "stepgrid:3/1"}},
+                                     {"test_maneuvers", {"multisine", "random-steps"}},
+                                     {"methods", {"sindy", "fossen-ceres", "eb-lr"}},
+                                     {"noise", {0.005}},
+                                     {"seeds", {1, 2}},
+                                     {"train_seconds", 120},
+                                     {"test_seconds", 60}}
+                          .dump());
+  }
+  fs::path dir_;
+  std::string suite_;
+};
+
+TEST_F(CompareCliTest, WritesEveryOutputAndAReportWithFigures) {
+  const auto out = dir_ / "run";
+  const auto r = RunUsvid("compare --suite " + suite_ + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"results.json", "results.csv", "summary.md", "report.html",
+                        "fit_odin3dof.svg", "fit_eb2dof.svg"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const nlohmann::json results = ReadJsonFile((out / "results.json").string());
+  EXPECT_EQ(results.dump().find("null"), std::string::npos);
+  for (const auto& row : results.at("rows")) {
+    EXPECT_TRUE(row.contains("train_maneuver") && row.contains("test_maneuver") &&
+                row.contains("seed"));
+    EXPECT_EQ(row.at("status"), "ok") << row.dump();
+  }
+  const std::string html = ReadTextFile((out / "report.html").string());
+  long svgs = 0;
+  for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1))
+    ++svgs;
+  EXPECT_GE(svgs, 4);  // a heat map and a run figure per vessel, inline
+  EXPECT_EQ(html.find("src=\""), std::string::npos);  // self-contained
+  EXPECT_THAT(ReadTextFile((out / "summary.md").string()), HasSubstr("Best training maneuver"));
+}
+
+TEST_F(CompareCliTest, BaselineMarksWhatGotWorse) {
+  const auto first = dir_ / "first";
+  ASSERT_EQ(RunUsvid("compare --suite " + suite_ + " --out " + first.string()).exit_code, 0);
+  // Against itself: nothing worse.
+  const auto same =
+      RunUsvid("compare --suite " + suite_ + " --baseline " + (first / "results.json").string() +
+               " --out " + (dir_ / "same").string());
+  EXPECT_EQ(same.exit_code, 0) << same.err;
+  // Against a baseline whose fits were 30 points better: every group whose spread over seeds
+  // is smaller than that is worse, and the run exits 3.
+  nlohmann::json better = ReadJsonFile((first / "results.json").string());
+  for (auto& row : better["rows"])
+    row["mean_fit_percent"] = row["mean_fit_percent"].get<double>() + 30;
+  const std::string better_path = (dir_ / "better.json").string();
+  WriteText(better_path, better.dump());
+  const auto worse = RunUsvid("compare --suite " + suite_ + " --baseline " + better_path +
+                              " --out " + (dir_ / "worse").string());
+  EXPECT_EQ(worse.exit_code, 3);
+  EXPECT_THAT(worse.err, HasSubstr("worse than the baseline"));
+  const nlohmann::json reg = ReadJsonFile((dir_ / "worse" / "regressions.json").string());
+  int worse_groups = 0;
+  for (const auto& g : reg.at("groups")) {
+    if (g.at("spread").get<double>() < 30.0) {
+      EXPECT_EQ(g.at("verdict"), "worse fit") << g.dump();
+    }
+    worse_groups += g.at("verdict") == "worse fit";
+  }
+  EXPECT_GT(worse_groups, 0);
+  // Not a results.json: exit 2.
+  const auto bad = RunUsvid("compare --suite " + suite_ + " --baseline " + suite_ + " --out " +
+                            (dir_ / "bad").string());
+  EXPECT_EQ(bad.exit_code, 2);
+}
+
+}  // namespace
+}  // namespace usvid
