@@ -46,8 +46,9 @@ Suite ParseSuite(const nlohmann::json& value, const std::string& file);
 Suite DefaultSuite(bool quick);
 nlohmann::json SuiteToJson(const Suite& suite);
 
-// The fits a suite needs, skipping combinations a method cannot fit (fossen-ceres only
-// odin3dof; eb-lr needs a speed state and a step grid; maneuvers needing a heading).
+// The fits a suite needs: every method on every training maneuver of every vessel that can run
+// it (a zig-zag needs a heading, a step grid a thrust input). Combinations a method cannot fit
+// become rows saying why.
 std::vector<FitJob> FitJobs(const Suite& suite);
 
 }  // namespace usvid

@@ -50,7 +50,10 @@ TEST_F(CompareCliTest, WritesEveryOutputAndAReportWithFigures) {
   for (const auto& row : results.at("rows")) {
     EXPECT_TRUE(row.contains("train_maneuver") && row.contains("test_maneuver") &&
                 row.contains("seed"));
-    EXPECT_EQ(row.at("status"), "ok") << row.dump();
+    // A combination a method cannot fit is a row that says why, with no numbers.
+    const std::string status = row.at("status");
+    EXPECT_TRUE(status == "ok" || status.starts_with("failed: ")) << status;
+    EXPECT_EQ(row.contains("mean_fit_percent"), status == "ok");
   }
   const std::string html = ReadTextFile((out / "report.html").string());
   long svgs = 0;

@@ -69,21 +69,17 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
                InputError);
 }
 
-// fossen-ceres only on odin3dof, eb-lr only on step grids of vessels with a speed state, no
-// zig-zag for the headingless msd.
-TEST_F(SuiteTest, FitJobsSkipWhatAMethodCannotFit) {
+// Every method is tried on every maneuver a vessel can run; the headingless msd runs no
+// zig-zag.
+TEST_F(SuiteTest, FitJobsCoverEveryMethodOnEveryManeuver) {
   const std::vector<FitJob> jobs = FitJobs(ParseSuite(Small(), "s.json"));
   for (const FitJob& j : jobs) {
-    if (j.method.method == "fossen-ceres") {
-      EXPECT_EQ(j.vessel, "odin3dof");
-    }
-    EXPECT_NE(j.method.method, "eb-lr");
     if (j.vessel == "msd") {
       EXPECT_NE(j.train_maneuver, "zigzag:20/20");
     }
   }
-  // odin3dof: 2 trains x (sindy, fossen); msd: 1 train x sindy.
-  EXPECT_EQ(jobs.size(), 5u);
+  // odin3dof: 2 trains x 3 methods; msd: 1 train x 3 methods.
+  EXPECT_EQ(jobs.size(), 9u);
 }
 
 // A small suite: one row per fit and test maneuver, each scored on another seed, the same at
@@ -91,18 +87,26 @@ TEST_F(SuiteTest, FitJobsSkipWhatAMethodCannotFit) {
 TEST_F(SuiteTest, RunGivesTheSameRowsAtAnyThreadCount) {
   const Suite suite = ParseSuite(Small(), "s.json");
   const std::vector<ResultRow> one = RunSuite(suite, 1), two = RunSuite(suite, 2);
-  ASSERT_EQ(one.size(), 5u);
+  ASSERT_EQ(one.size(), 9u);
   for (size_t i = 0; i < one.size(); ++i) {
     nlohmann::json a = one[i].ToJson(), b = two[i].ToJson();
     a.erase("fit_seconds");  // wall time, the one thing that may differ
     b.erase("fit_seconds");
     EXPECT_EQ(a, b) << i;
   }
+  int failed = 0;
   for (const ResultRow& r : one) {
-    EXPECT_EQ(r.status, "ok") << r.status;
     EXPECT_NE(r.test_seed, r.seed);  // held out
+    if (r.status != "ok") {
+      // What cannot be fitted says why: fossen-ceres off odin3dof, eb-lr without steady states.
+      EXPECT_TRUE(r.method == "eb-lr" || (r.method == "fossen-ceres" && r.vessel == "msd"))
+          << r.method << " " << r.vessel << " " << r.status;
+      ++failed;
+      continue;
+    }
     EXPECT_TRUE(std::isfinite(r.mean_fit_percent));
   }
+  EXPECT_GT(failed, 0);
   EXPECT_EQ(ResultsJson(suite, one, 1.0).dump().find("null"), std::string::npos);
   const std::string md = SummaryMarkdown(suite, one, 1.0);
   EXPECT_THAT(md, HasSubstr("## odin3dof"));
