@@ -29,7 +29,11 @@ Stats Of(const std::vector<double>& v) {
 std::string Cell(const Stats& s) {
   if (s.n == 0) return "n/a";
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.1f ± %.1f", s.mean, s.sd);
+  if (std::abs(s.mean) < 10 && s.mean != std::round(s.mean)) {
+    std::snprintf(buf, sizeof buf, "%.2f ± %.2f", s.mean, s.sd);
+  } else {
+    std::snprintf(buf, sizeof buf, "%.1f ± %.1f", s.mean, s.sd);
+  }
   return buf;
 }
 
@@ -57,7 +61,7 @@ std::string ResultsCsv(const std::vector<ResultRow>& rows) {
     for (const auto& [s, _] : r.fit_percent) states.insert(s);
   std::ostringstream out;
   out << "vessel,train_maneuver,test_maneuver,method,noise,seed,test_seed,status,diverged,"
-         "fit_seconds,mean_fit_percent";
+         "fit_seconds,mean_fit_percent,terms,structure_precision,structure_recall,parameter_error";
   for (const std::string& s : states) out << ",fit_percent_" << s;
   out << '\n';
   for (const ResultRow& r : rows) {
@@ -67,7 +71,11 @@ std::string ResultsCsv(const std::vector<ResultRow>& rows) {
         << FormatNumber(r.noise) << ',' << r.seed << ',' << r.test_seed << ',' << status << ','
         << (ok ? (r.diverged ? "true" : "false") : "") << ','
         << (ok ? FormatNumber(r.fit_seconds) : "") << ','
-        << (ok ? FormatNumber(r.mean_fit_percent) : "");
+        << (ok ? FormatNumber(r.mean_fit_percent) : "") << ','
+        << (ok ? std::to_string(r.terms) : "") << ','
+        << (ok && r.precision ? FormatNumber(*r.precision) : "") << ','
+        << (ok && r.recall ? FormatNumber(*r.recall) : "") << ','
+        << (ok && r.parameter_error ? FormatNumber(*r.parameter_error) : "");
     for (const std::string& s : states) {
       out << ',';
       const auto it = r.fit_percent.find(s);
@@ -116,6 +124,21 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
       }
       md << '\n';
     }
+    // Structure and complexity per method, over every scored row of this vessel.
+    std::map<std::string, std::vector<double>> prec, rec, terms, perr;
+    for (const ResultRow& r : rows) {
+      if (r.vessel != vessel || r.status != "ok") continue;
+      terms[r.method].push_back(r.terms);
+      if (r.precision) prec[r.method].push_back(*r.precision);
+      if (r.recall) rec[r.method].push_back(*r.recall);
+      if (r.parameter_error) perr[r.method].push_back(100.0 * *r.parameter_error);
+    }
+    md << "\n### Structure (term precision / recall against the true equations), size, "
+          "parameter error\n\n| method | precision | recall | terms | worst parameter error % |\n"
+          "| --- | --- | --- | --- | --- |\n";
+    for (const auto& [m, t] : terms)
+      md << "| " << m << " | " << Cell(Of(prec[m])) << " | " << Cell(Of(rec[m])) << " | "
+         << Cell(Of(t)) << " | " << Cell(Of(perr[m])) << " |\n";
     md << "\n### Training x test maneuver, per method (generalisation)\n\n";
     for (const std::string& m : methods) {
       const auto gm = Group<std::pair<std::string, std::string>>(

@@ -7,6 +7,7 @@
 #include "maneuvers/maneuver_factory.h"
 #include "methods/identify.h"
 #include "metrics/evaluation.h"
+#include "metrics/structure.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
 
@@ -27,6 +28,36 @@ Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver,
 }
 
 namespace {
+
+// Complexity, structure recovery against the true terms, and parameter error against the
+// simulator's parameters where the model names them.
+void ScoreModel(const std::string& vessel, const nlohmann::json& model, ResultRow& row) {
+  double precision = 0.0, recall = 0.0;
+  int known = 0;
+  row.terms = 0;
+  for (const auto& [state, eq] : model.at("equations").items()) {
+    const std::string text = eq.get<std::string>();
+    row.terms += TermCount(text);
+    if (const auto truth = TrueTerms(vessel, state)) {
+      const StructureScore s = ScoreStructure(text, *truth);
+      precision += s.precision;
+      recall += s.recall;
+      ++known;
+    }
+  }
+  if (known > 0) {
+    row.precision = precision / known;
+    row.recall = recall / known;
+  }
+  const VesselInfo& info = FindVessel(vessel).Info();
+  double worst = -1.0;
+  for (size_t i = 0; i < info.params.size(); ++i) {
+    if (!model.contains("parameters") || !model["parameters"].contains(info.params[i])) continue;
+    const double p = model["parameters"][info.params[i]].get<double>();
+    worst = std::max(worst, std::abs(p / info.default_params[i] - 1.0));
+  }
+  if (worst >= 0) row.parameter_error = worst;
+}
 
 IdentifyRequest RequestFor(const FitJob& job) {
   IdentifyRequest r;
@@ -63,6 +94,10 @@ nlohmann::json ResultRow::ToJson() const {
     j["mean_fit_percent"] = mean_fit_percent;
     j["diverged"] = diverged;
     j["fit_seconds"] = fit_seconds;
+    j["terms"] = terms;
+    if (precision) j["structure_precision"] = *precision;
+    if (recall) j["structure_recall"] = *recall;
+    if (parameter_error) j["parameter_error"] = *parameter_error;
   }
   return j;
 }
@@ -116,6 +151,7 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
           sum += row.fit_percent[state];
         }
         row.mean_fit_percent = sum / static_cast<double>(row.fit_percent.size());
+        ScoreModel(job.vessel, model, row);
         row.diverged = e.metrics.at("diverged").get<bool>();
       } catch (const std::exception& e) {
         row.status = std::string("failed: ") + e.what();

@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,12 @@ struct ResultRow {
   double mean_fit_percent = 0.0;
   bool diverged = false;
   double fit_seconds = 0.0;
-  std::string status = "ok";  // or "failed: why"
-  nlohmann::json model;       // the fitted model (kept in memory for the report, not written)
+  int terms = 0;                          // complexity: additive terms over all equations
+  std::optional<double> precision;        // structure recovery, mean over states, where the true
+  std::optional<double> recall;           //   terms are known (msd, odin3dof)
+  std::optional<double> parameter_error;  // largest relative error of named true parameters
+  std::string status = "ok";              // or "failed: why"
+  nlohmann::json model;  // the fitted model (kept in memory for the report, not written)
 
   nlohmann::json ToJson() const;
 };

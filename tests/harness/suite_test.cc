@@ -105,6 +105,15 @@ TEST_F(SuiteTest, RunGivesTheSameRowsAtAnyThreadCount) {
       continue;
     }
     EXPECT_TRUE(std::isfinite(r.mean_fit_percent));
+    EXPECT_GT(r.terms, 0);
+    // Structure recovery where the true terms are known; parameter error where the model names
+    // the simulator's parameters (fossen-ceres on odin3dof, trained on random steps: near 0).
+    EXPECT_TRUE(r.precision.has_value() && r.recall.has_value()) << r.vessel;
+    if (r.method == "fossen-ceres" && r.train_maneuver == "random-steps") {
+      ASSERT_TRUE(r.parameter_error.has_value());
+      EXPECT_LT(*r.parameter_error, 0.05);
+      EXPECT_EQ(*r.recall, 1.0);
+    }
   }
   EXPECT_GT(failed, 0);
   EXPECT_EQ(ResultsJson(suite, one, 1.0).dump().find("null"), std::string::npos);
