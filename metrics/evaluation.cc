@@ -1,6 +1,7 @@
 #include "metrics/evaluation.h"
 
 #include <cmath>
+#include <map>
 
 #include "methods/expression.h"
 #include "metrics/fit_metrics.h"
@@ -42,6 +43,33 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& data) {
                {"diverged", e.run.diverged},
                {"samples", data.rows()},
                {"seconds", data.duration()}};
+  // k-step-ahead: from every k-th measured state, k steps of the model; the error at the end.
+  nlohmann::json k_step = nlohmann::json::object();
+  for (const int k : {10, 40}) {
+    if (data.rows() < 3 * k) continue;
+    std::map<std::string, std::vector<double>> measured, predicted;
+    for (Eigen::Index start = 0; start + k < data.rows(); start += k) {
+      std::vector<bool> keep(data.rows(), false);
+      for (Eigen::Index i = start; i <= start + k; ++i) keep[i] = true;
+      Dataset window = data;
+      window.KeepRows(keep);
+      const FreeRun run = FreeRunModel(model, window);
+      for (const std::string& c : run.channels)
+        if (data.Has(c)) {
+          measured[c].push_back(window[c](k));
+          predicted[c].push_back(run.simulated[c](k));
+        }
+    }
+    nlohmann::json per = nlohmann::json::object();
+    for (const auto& [c, m] : measured) {
+      const Eigen::VectorXd a = Eigen::Map<const Eigen::VectorXd>(m.data(), m.size());
+      const Eigen::VectorXd b = Eigen::Map<const Eigen::VectorXd>(predicted[c].data(), m.size());
+      per[c] = ScoreChannel(a, b).nrmse;
+    }
+    k_step[std::to_string(k)] = per;
+  }
+  e.metrics["k_step_nrmse"] = k_step;
+
   // Flat per-channel fields too, as the contract lists them per state channel.
   for (const auto& [c, s] : channels.items()) e.metrics[c] = s;
   if (e.run.diverged) e.metrics["diverged_at_s"] = e.run.diverged_at_s;

@@ -54,6 +54,9 @@ TEST_F(EvaluationTest, TrueEquationsReproduceTheSimulator) {
     EXPECT_GT(e.metrics.at(c).at("fit_percent").get<double>(), 99.99) << c;
   EXPECT_LT(e.metrics.at("position_drift_m").get<double>(), 0.01);
   EXPECT_GT(e.metrics.at("derivative_r2").at("u").get<double>(), 0.99);
+  // k steps ahead from measured states: the true model stays on the data.
+  for (const char* k : {"10", "40"})
+    EXPECT_LT(e.metrics.at("k_step_nrmse").at(k).at("r").get<double>(), 1e-3) << k;
   // Scores per speed regime, over the rows measured in each (odin3dof reaches all three).
   const auto& regimes = e.metrics.at("regimes");
   EXPECT_FALSE(regimes.empty());
@@ -74,6 +77,9 @@ TEST_F(EvaluationTest, DivergentModelIsStoppedAndScored) {
   EXPECT_GT(e.metrics.at("diverged_at_s").get<double>(), 0.0);
   for (const char* c : {"u", "v", "r"})
     EXPECT_TRUE(std::isfinite(e.metrics.at(c).at("fit_percent").get<double>())) << c;
+  // Short horizons from measured states still score it, and worse than the truth would.
+  EXPECT_GT(e.metrics.at("k_step_nrmse").at("40").at("u").get<double>(), 1e-2);
+  EXPECT_EQ(e.metrics.dump().find("null"), std::string::npos);
 }
 
 // A broken equation or a missing channel is bad input that names itself.
