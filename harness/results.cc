@@ -180,6 +180,37 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
       md << '\n';
     }
   }
+  // The maneuver design question per speed regime: which training maneuver gives the best
+  // held-out fit on the rows of the other test maneuvers in each regime.
+  md << "## Best training maneuver per speed regime\n\n| vessel | method | displacement | "
+        "semi-displacement | planing |\n| --- | --- | --- | --- | --- |\n";
+  for (const std::string& vessel : vessels)
+    for (const std::string& m : methods) {
+      std::map<std::string, std::map<std::string, std::vector<double>>> by;  // regime, train
+      for (const ResultRow& r : rows)
+        if (r.vessel == vessel && r.method == m && r.status == "ok" &&
+            r.train_maneuver != r.test_maneuver)
+          for (const auto& [regime, fit] : r.regime_fit_percent)
+            by[regime][r.train_maneuver].push_back(fit);
+      if (by.empty()) continue;
+      md << "| " << vessel << " | " << m << " |";
+      for (const char* regime : {"displacement", "semi-displacement", "planing"}) {
+        std::string best = "n/a";
+        double best_fit = -INFINITY;
+        for (const auto& [train, fits] : by[regime]) {
+          const Stats st = Of(fits);
+          if (st.mean > best_fit) {
+            best_fit = st.mean;
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "%s (%.1f)", train.c_str(), st.mean);
+            best = buf;
+          }
+        }
+        md << ' ' << best << " |";
+      }
+      md << '\n';
+    }
+  md << '\n';
   if (failed > 0) {
     md << "## Failed\n\n";
     std::set<std::string> seen;

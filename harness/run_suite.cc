@@ -95,6 +95,7 @@ nlohmann::json ResultRow::ToJson() const {
     j["diverged"] = diverged;
     j["fit_seconds"] = fit_seconds;
     j["terms"] = terms;
+    if (!regime_fit_percent.empty()) j["regime_fit_percent"] = regime_fit_percent;
     if (precision) j["structure_precision"] = *precision;
     if (recall) j["structure_recall"] = *recall;
     if (parameter_error) j["parameter_error"] = *parameter_error;
@@ -151,6 +152,14 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
           sum += row.fit_percent[state];
         }
         row.mean_fit_percent = sum / static_cast<double>(row.fit_percent.size());
+        if (e.metrics.contains("regimes"))
+          for (const auto& [regime, scores] : e.metrics["regimes"].items()) {
+            double regime_sum = 0.0;
+            for (const auto& [state, _] : row.fit_percent)
+              regime_sum += scores.at(state).at("fit_percent").get<double>();
+            row.regime_fit_percent[regime] =
+                regime_sum / static_cast<double>(row.fit_percent.size());
+          }
         ScoreModel(job.vessel, model, row);
         row.diverged = e.metrics.at("diverged").get<bool>();
       } catch (const std::exception& e) {

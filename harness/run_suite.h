@@ -24,6 +24,7 @@ struct ResultRow {
   std::map<std::string, double> fit_percent;  // per identified state
   std::map<std::string, double> nrmse;
   double mean_fit_percent = 0.0;
+  std::map<std::string, double> regime_fit_percent;  // mean over states, per speed regime
   bool diverged = false;
   double fit_seconds = 0.0;
   int terms = 0;                          // complexity: additive terms over all equations
