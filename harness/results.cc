@@ -11,6 +11,10 @@
 namespace usvid {
 namespace {
 
+// In the tables a fit below -100 % counts as -100 %: such a free run is useless either way, and
+// one diverged run at -1e5 % would otherwise swamp every mean. results.json keeps the raw values.
+constexpr double kFitFloor = -100.0;
+
 struct Stats {
   double mean = 0.0, sd = 0.0;
   int n = 0;
@@ -43,7 +47,7 @@ std::map<Key, std::vector<double>> Group(const std::vector<ResultRow>& rows,
                                          const std::function<Key(const ResultRow&)>& key) {
   std::map<Key, std::vector<double>> g;
   for (const ResultRow& r : rows)
-    if (r.status == "ok" && keep(r)) g[key(r)].push_back(r.mean_fit_percent);
+    if (r.status == "ok" && keep(r)) g[key(r)].push_back(std::max(r.mean_fit_percent, kFitFloor));
   return g;
 }
 
@@ -98,7 +102,8 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
   md << rows.size() << " scores (" << failed << " failed, " << diverged << " diverged) in "
      << std::lround(seconds) << " s. Numbers: free-run fit % on held-out data (another maneuver, "
      << "or the same with another seed), mean over the identified states, then mean ± sd over "
-        "seeds and noise levels.\n\n";
+        "seeds and noise levels; fits below -100 % count as -100 % in the tables (results.json "
+        "has the raw values).\n\n";
   std::set<std::string> methods, vessels;
   for (const ResultRow& r : rows) {
     methods.insert(r.method);
@@ -191,7 +196,7 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
         if (r.vessel == vessel && r.method == m && r.status == "ok" &&
             r.train_maneuver != r.test_maneuver)
           for (const auto& [regime, fit] : r.regime_fit_percent)
-            by[regime][r.train_maneuver].push_back(fit);
+            by[regime][r.train_maneuver].push_back(std::max(fit, kFitFloor));
       if (by.empty()) continue;
       md << "| " << vessel << " | " << m << " |";
       for (const char* regime : {"displacement", "semi-displacement", "planing"}) {
