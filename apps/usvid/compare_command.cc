@@ -66,12 +66,13 @@ void AddCompareCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "compare", "The benchmark: methods x maneuvers x vessels x noise x seeds, held-out scores");
   cmd->add_option("--suite", o->suite, "Suite JSON (default: the embedded default suite)");
-  cmd->add_flag("--quick", o->quick, "The default suite, smaller: about a minute");
+  cmd->add_flag("--quick", o->quick, "The default suite, smaller: seconds, not minutes");
   cmd->add_option("--baseline", o->baseline,
                   "A previous results.json: mark groups that got worse beyond the spread over "
                   "seeds, and exit 3 when any did");
   cmd->add_option("--threads", o->threads, "Fits in parallel (0: all cores)");
-  cmd->add_option("--out", o->out, "Directory for results.json, results.csv, summary.md")
+  cmd->add_option("--out", o->out,
+                  "Directory for results.json, results.csv, summary.md, plots, report.html")
       ->required();
   cmd->callback([o] { RunCompare(*o); });
 }
