@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <set>
 
+#include "core/derived_channels.h"
 #include "core/error.h"
 #include "methods/eb_lr/eb_lr.h"
 #include "methods/fossen_ceres/fossen_fit.h"
@@ -94,7 +95,10 @@ const std::set<std::string> kNotVariables = {"north",        "east",           "
 
 }  // namespace
 
-nlohmann::json Identify(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
+nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const Logger& log) {
+  // Speed and course where only body velocities were logged (the 2-DOF models need them).
+  Dataset data = recorded;
+  AddSpeedAndCourse(data);
   if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" && o.method != "fossen-ceres")
     throw InputError("--method '" + o.method +
                      "': unknown method (known: gp, sindy, eb-lr, fossen-ceres)");

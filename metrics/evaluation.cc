@@ -3,13 +3,16 @@
 #include <cmath>
 #include <map>
 
+#include "core/derived_channels.h"
 #include "methods/expression.h"
 #include "metrics/fit_metrics.h"
 #include "preprocessing/pipeline.h"
 
 namespace usvid {
 
-Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& data) {
+Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
+  Dataset data = recorded;
+  AddSpeedAndCourse(data);  // for models in speed and course (2-DOF)
   Evaluation e;
   e.run = FreeRunModel(model, data);
   nlohmann::json channels = nlohmann::json::object();
