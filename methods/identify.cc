@@ -3,11 +3,13 @@
 #include <chrono>
 #include <cstdio>
 #include <set>
+#include <type_traits>
 
 #include "core/derived_channels.h"
 #include "core/error.h"
 #include "methods/eb_lr/eb_lr.h"
 #include "methods/fossen_ceres/fossen_fit.h"
+#include "methods/fossen_ceres/fossen_models.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/sindy/sindy.h"
 #include "preprocessing/delay_estimation.h"
@@ -24,30 +26,49 @@ void Log(const Logger& log, const std::string& line) {
   if (log) log(line);
 }
 
-// fossen-ceres: the parametric odin3dof model, equation error then multiple shooting.
+// fossen-ceres: a parametric Fossen 3-DOF model (odin3dof's, or the same driven through the
+// waterjet input map), equation error then multiple shooting.
+template <typename Model>
 nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
                               const PreparedData& prepared, const Logger& log) {
+  constexpr bool kWaterjet = std::is_same_v<Model, fossen::WaterjetModel>;
   fossen::FossenOptions fo;
   fo.segment_s = o.segment_s;
   fo.robust = o.robust;
   fo.threads = o.threads > 0 ? o.threads : 1;
-  const fossen::FossenFit eq = fossen::FitEquationError(prepared, fo);
+  auto fit_equation = [&] {
+    if constexpr (kWaterjet)
+      return fossen::FitWaterjetEquationError(prepared, fo);
+    else
+      return fossen::FitEquationError(prepared, fo);
+  };
+  const auto eq = fit_equation();
   Log(log, "equation-error fit: " + eq.termination);
-  fossen::FossenFit fit = eq;
+  auto fit = eq;
   if (o.fossen_mode == "simulation") {
-    fit = fossen::FitSimulationError(prepared, eq.params, fo);
+    if constexpr (kWaterjet)
+      fit = fossen::FitWaterjetSimulationError(prepared, eq.params, fo);
+    else
+      fit = fossen::FitSimulationError(prepared, eq.params, fo);
     Log(log, "simulation-error fit (multiple shooting): " + fit.termination);
   }
   nlohmann::json params = nlohmann::json::object(), sd = nlohmann::json::object(),
                  eq_params = nlohmann::json::object();
-  for (int i = 0; i < Odin3Dof::kParams; ++i) {
-    const std::string name(Odin3Dof::kParamNames[i]);
+  for (int i = 0; i < Model::kParams; ++i) {
+    const std::string name(Model::kParamNames[i]);
     params[name] = fit.params[i];
     sd[name] = fit.sd[i];
     eq_params[name] = eq.params[i];
   }
+  nlohmann::json equations;
+  if constexpr (kWaterjet)
+    equations = fossen::WaterjetEquations(fit.params);
+  else
+    equations = fossen::Equations(fit.params);
   nlohmann::json refined = nullptr;
-  if (prepared.delay_estimate) {
+  if (kWaterjet && prepared.delay_estimate) {
+    Log(log, "delay not refined: the waterjet model is no registered vessel");
+  } else if (prepared.delay_estimate) {
     // The delay to a fraction of a sample: NLopt (DIRECT-L, then Sbplx) on the segmented
     // simulation error of the fitted model on the data as recorded.
     const VesselSimulator& sim = FindVessel("odin3dof");
@@ -63,9 +84,10 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
     Log(log, "delay refined on the simulation error: " + std::to_string(d.delay_s) + " s");
   }
   return {{"parameters", params},
-          {"equations", fossen::Equations(fit.params)},
+          {"equations", equations},
           {"fossen",
-           {{"mode", o.fossen_mode},
+           {{"model", std::string(Model::kName)},
+            {"mode", o.fossen_mode},
             {"segment_s", o.segment_s},
             {"robust", o.robust},
             {"parameter_sd", sd},
@@ -128,11 +150,14 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     if (states.size() != 2 || inputs.size() != 2)
       throw InputError("--method eb-lr: needs --states SPEED,RATE and --inputs THRUST,YAW");
   }
+  const std::vector<std::string> kForces = {"tau_x", "tau_y", "tau_n"},
+                                 kWaterjets = {"throttle", "nozzle", "bucket"};
   if (o.method == "fossen-ceres" && (states != std::vector<std::string>{"u", "v", "r"} ||
-                                     inputs != std::vector<std::string>{"tau_x", "tau_y", "tau_n"}))
+                                     (inputs != kForces && inputs != kWaterjets)))
     throw InputError(
-        "--method fossen-ceres: fits the Fossen 3-DOF model of odin3dof, states "
-        "u,v,r and inputs tau_x,tau_y,tau_n (use --vessel odin3dof)");
+        "--method fossen-ceres: fits the Fossen 3-DOF model, states u,v,r with inputs "
+        "tau_x,tau_y,tau_n (--vessel odin3dof) or throttle,nozzle,bucket through a waterjet map "
+        "(--vessel odin-hs)");
   if (o.population < 4 || o.generations < 1 || o.max_depth < 2 || o.max_depth > 17)
     throw InputError("identify: --population >= 4, --generations >= 1, --max-depth in [2, 17]");
   if (!(o.ols_threshold >= 0 && o.ols_threshold < 1))
@@ -168,7 +193,9 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     model["equations"] = id.equations;
     model["eb_lr"] = id.details;
   } else if (o.method == "fossen-ceres") {
-    model.update(IdentifyFossen(o, data, prepared, log));
+    model.update(inputs == kWaterjets
+                     ? IdentifyFossen<fossen::WaterjetModel>(o, data, prepared, log)
+                     : IdentifyFossen<fossen::Odin3DofModel>(o, data, prepared, log));
   } else if (o.method == "sindy") {
     const sindy::SindyIdentification id =
         sindy::IdentifyWithSindy(prepared, states, variables, inputs, sindy::SindyOptions{});

@@ -44,7 +44,7 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--method", o->request.method,
                   "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge), "
                   "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data) or fossen-ceres "
-                  "(parametric Fossen 3-DOF of odin3dof, Ceres)")
+                  "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet input map)")
       ->required()
       ->check(CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres"}));
   cmd->add_option("--data", o->data, "Training data CSV")->required();

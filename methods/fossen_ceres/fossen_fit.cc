@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
+#include "methods/fossen_ceres/fossen_models.h"
 #include "simulation/input_track.h"
 #include "simulation/open_loop.h"
 #include "simulators/odin3dof.h"
@@ -14,22 +15,31 @@
 namespace usvid::fossen {
 namespace {
 
-constexpr int kParams = Odin3Dof::kParams;
-
 double Sd(const Eigen::VectorXd& v) {
   const double sd = std::sqrt((v.array() - v.mean()).square().mean());
   return sd > 0 ? sd : 1.0;
 }
 
-// One sample's equation error: M nu' + C(nu) nu + D(nu) nu - tau, normalised.
+// One sample's equation error, normalised: M nu' + C(nu) nu + D(nu) nu - tau(in; p) (forces), or
+// nu' - M^-1 (tau(in; p) - C(nu) nu - D(nu) nu) (accelerations) when tau is not measured.
+template <typename Model>
 struct EquationResidual {
-  double u, v, r, du, dv, dr, tx, ty, tn, sx, sy, sn;
+  double u, v, r, du, dv, dr;
+  std::array<double, 3> in, scale;
   template <typename T>
   bool operator()(const T* p, T* res) const {
     using std::abs;
-    res[0] = (p[0] * du - p[1] * v * r + (p[3] + p[4] * abs(u)) * u - tx) / sx;
-    res[1] = (p[1] * dv + p[0] * u * r + (p[5] + p[6] * abs(v)) * v - ty) / sy;
-    res[2] = (p[2] * dr + (p[1] - p[0]) * u * v + p[7] * v + (p[8] + p[9] * abs(r)) * r - tn) / sn;
+    T tau[3];
+    const T input[3] = {T(in[0]), T(in[1]), T(in[2])};
+    Model::Forces(p, input, tau);
+    // C(nu) nu + D(nu) nu.
+    const T h[3] = {-p[1] * v * r + (p[3] + p[4] * abs(u)) * u,
+                    p[0] * u * r + (p[5] + p[6] * abs(v)) * v,
+                    (p[1] - p[0]) * u * v + p[7] * v + (p[8] + p[9] * abs(r)) * r};
+    const double rate[3] = {du, dv, dr};
+    for (int i = 0; i < 3; ++i)
+      res[i] = Model::kAccelerationResidual ? (rate[i] - (tau[i] - h[i]) / p[i]) / scale[i]
+                                            : (p[i] * rate[i] + h[i] - tau[i]) / scale[i];
     return true;
   }
 };
@@ -37,6 +47,7 @@ struct EquationResidual {
 // One shooting segment: rows [begin, end] simulated from the free initial velocities x0; the
 // residuals are the normalised errors of u, v, r at every row after the first, then the
 // weighted continuity error between the simulated end and the next segment's start.
+template <typename Model>
 struct SegmentResidual {
   const InputTrack* track;
   std::vector<double> times;
@@ -48,23 +59,23 @@ struct SegmentResidual {
 
   template <typename T>
   bool operator()(const T* p, const T* x0, const T* next, T* res) const {
-    constexpr int N = Plant<Odin3Dof>::kStates;
+    constexpr int N = Plant<Model>::kStates;
     std::array<T, N> start;
     start.fill(T(0));
     start[3] = x0[0];
     start[4] = x0[1];
     start[5] = x0[2];
     const double* u0 = track->At(times[0]);
-    for (int i = 0; i < Odin3Dof::kInputs; ++i) start[Odin3Dof::kStates + i] = T(u0[i]);
+    for (int i = 0; i < Model::kInputs; ++i) start[Model::kStates + i] = T(u0[i]);
     OpenLoopSetup setup;
     setup.inputs = track;
     setup.times = times;
     setup.max_step = times.size() > 1 ? (times[1] - times[0]) * 1.0000001 : 1.0;
     std::vector<T> out(times.size() * N);
-    std::array<double, 3> limits;
+    std::array<double, Model::kInputs> limits;
     limits.fill(INFINITY);
     const size_t rows =
-        RolloutOpenLoop<Odin3Dof, T>(setup, start.data(), p, EffectValues<T>{}, limits, out.data());
+        RolloutOpenLoop<Model, T>(setup, start.data(), p, EffectValues<T>{}, limits, out.data());
     int k = 0;
     for (size_t row = 1; row < times.size(); ++row)
       for (int c = 0; c < 3; ++c) {
@@ -79,16 +90,23 @@ struct SegmentResidual {
   }
 };
 
+// Positive lower bounds; the scale-fixing parameter (if any) held constant.
+template <typename Model>
 void Bound(ceres::Problem& problem, double* p) {
-  for (int i = 0; i < kParams; ++i) problem.SetParameterLowerBound(p, i, 1e-6);
+  for (int i = 0; i < Model::kParams; ++i) problem.SetParameterLowerBound(p, i, 1e-6);
+  if constexpr (Model::kFixedParam >= 0)
+    problem.SetManifold(p, new ceres::SubsetManifold(Model::kParams, {Model::kFixedParam}));
 }
 
-void Solve(ceres::Problem& problem, const FossenOptions& o, double* p, FossenFit& fit) {
+template <typename Model>
+void Solve(ceres::Problem& problem, const FossenOptions& o, double* p,
+           BasicFossenFit<Model::kParams>& fit) {
+  constexpr int kParams = Model::kParams;
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   so.max_num_iterations = o.max_iterations;
   so.num_threads = o.threads;
-  so.function_tolerance = 1e-12;
+  so.function_tolerance = o.function_tolerance;
   so.parameter_tolerance = 1e-12;
   so.gradient_tolerance = 1e-14;
   ceres::Solver::Summary summary;
@@ -116,43 +134,69 @@ void Solve(ceres::Problem& problem, const FossenOptions& o, double* p, FossenFit
   }
 }
 
+template <typename Model>
 void Require(const PreparedData& prepared) {
-  for (const char* c : {"u", "v", "r", "u_dot", "v_dot", "r_dot", "u_raw", "v_raw", "r_raw",
-                        "tau_x", "tau_y", "tau_n"})
+  std::vector<std::string> channels = {"u",     "v",     "r",     "u_dot", "v_dot",
+                                       "r_dot", "u_raw", "v_raw", "r_raw"};
+  std::string inputs;
+  for (const std::string_view in : Model::kInputNames) {
+    channels.emplace_back(in);
+    inputs += (inputs.empty() ? "" : ", ") + std::string(in);
+  }
+  for (const std::string& c : channels)
     if (!prepared.data.Has(c))
-      throw InputError(std::string("fossen-ceres: the data need channel '") + c +
-                       "' (odin3dof: states u, v, r; inputs tau_x, tau_y, tau_n)");
+      throw InputError("fossen-ceres: the data need channel '" + c + "' (" +
+                       std::string(Model::kName) + ": states u, v, r; inputs " + inputs + ")");
 }
 
-}  // namespace
-
-FossenFit FitEquationError(const PreparedData& prepared, const FossenOptions& options) {
-  Require(prepared);
+template <typename Model>
+BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
+                                                  const FossenOptions& options) {
+  constexpr int kParams = Model::kParams;
+  Require<Model>(prepared);
   const Dataset& d = prepared.data;
-  std::array<double, kParams> p = {1000, 1000, 1000, 1, 1, 1, 1, 1, 1, 1};
+  std::array<double, kParams> p = Model::kStart;
   ceres::Problem problem;
-  const double sx = Sd(d["tau_x"]), sy = Sd(d["tau_y"]), sn = Sd(d["tau_n"]);
+  std::array<std::string, 3> in;
+  for (int i = 0; i < 3; ++i) in[i] = std::string(Model::kInputNames[i]);
+  std::array<double, 3> scale;
+  for (int i = 0; i < 3; ++i) {
+    const std::string normaliser =
+        Model::kAccelerationResidual ? std::string(Odin3Dof::kStateNames[3 + i]) + "_dot" : in[i];
+    scale[i] = Sd(d[normaliser]);
+  }
   ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
   for (Eigen::Index k = 0; k < d.rows(); ++k) {
-    auto* cost = new ceres::AutoDiffCostFunction<EquationResidual, 3, kParams>(new EquationResidual{
-        d["u"](k), d["v"](k), d["r"](k), d["u_dot"](k), d["v_dot"](k), d["r_dot"](k), d["tau_x"](k),
-        d["tau_y"](k), d["tau_n"](k), sx, sy, sn});
+    auto* cost = new ceres::AutoDiffCostFunction<EquationResidual<Model>, 3, kParams>(
+        new EquationResidual<Model>{d["u"](k),
+                                    d["v"](k),
+                                    d["r"](k),
+                                    d["u_dot"](k),
+                                    d["v_dot"](k),
+                                    d["r_dot"](k),
+                                    {d[in[0]](k), d[in[1]](k), d[in[2]](k)},
+                                    scale});
     problem.AddResidualBlock(cost, loss, p.data());
   }
-  Bound(problem, p.data());
-  FossenFit fit;
-  Solve(problem, options, p.data(), fit);
+  Bound<Model>(problem, p.data());
+  BasicFossenFit<kParams> fit;
+  Solve<Model>(problem, options, p.data(), fit);
   return fit;
 }
 
-FossenFit FitSimulationError(const PreparedData& prepared, const std::array<double, 10>& start,
-                             const FossenOptions& options) {
-  Require(prepared);
+template <typename Model>
+BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared,
+                                                    const std::array<double, Model::kParams>& start,
+                                                    const FossenOptions& options) {
+  constexpr int kParams = Model::kParams;
+  Require<Model>(prepared);
   const Dataset& d = prepared.data;
   if (!(options.segment_s > 0)) throw InputError("fossen-ceres: segment length must be positive");
   InputTrack track(3);
+  std::array<std::string, 3> in;
+  for (int i = 0; i < 3; ++i) in[i] = std::string(Model::kInputNames[i]);
   for (Eigen::Index k = 0; k < d.rows(); ++k) {
-    const double u[3] = {d["tau_x"](k), d["tau_y"](k), d["tau_n"](k)};
+    const double u[3] = {d[in[0]](k), d[in[1]](k), d[in[2]](k)};
     track.Append(d.t()(k), u);
   }
   const std::array<double, 3> scale = {Sd(d["u_raw"]), Sd(d["v_raw"]), Sd(d["r_raw"])};
@@ -173,7 +217,7 @@ FossenFit FitSimulationError(const PreparedData& prepared, const std::array<doub
   ceres::Problem problem;
   ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
   for (size_t j = 0; j < segments; ++j) {
-    auto* seg = new SegmentResidual;
+    auto* seg = new SegmentResidual<Model>;
     seg->track = &track;
     for (Eigen::Index k = bounds[j]; k <= bounds[j + 1]; ++k) seg->times.push_back(d.t()(k));
     seg->measured.resize(static_cast<Eigen::Index>(seg->times.size()), 3);
@@ -182,25 +226,57 @@ FossenFit FitSimulationError(const PreparedData& prepared, const std::array<doub
     seg->scale = scale;
     seg->continuity = j + 1 < segments ? options.continuity_weight : 0.0;
     const int residuals = seg->Residuals();
-    auto* cost = new ceres::AutoDiffCostFunction<SegmentResidual, ceres::DYNAMIC, kParams, 3, 3>(
-        seg, residuals);
+    auto* cost =
+        new ceres::AutoDiffCostFunction<SegmentResidual<Model>, ceres::DYNAMIC, kParams, 3, 3>(
+            seg, residuals);
     problem.AddResidualBlock(cost, loss, p.data(), x0[j].data(), x0[j + 1].data());
   }
   problem.SetParameterBlockConstant(x0[segments].data());
-  Bound(problem, p.data());
-  FossenFit fit;
-  Solve(problem, options, p.data(), fit);
+  Bound<Model>(problem, p.data());
+  BasicFossenFit<kParams> fit;
+  Solve<Model>(problem, options, p.data(), fit);
   return fit;
 }
 
-nlohmann::json Equations(const std::array<double, 10>& p) {
+template <typename Model>
+nlohmann::json EquationsOf(const std::array<double, Model::kParams>& p) {
   auto n = [](double v) { return FormatNumber(v); };
-  return {{"u", "(tau_x + " + n(p[1]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) + "*abs(u))*u) / " +
-                    n(p[0])},
-          {"v", "(tau_y - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) + "*abs(v))*v) / " +
-                    n(p[1])},
-          {"r", "(tau_n - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - " + n(p[7]) + "*v - (" +
+  const auto f = [&](int i) { return Model::ForceText(i, p.data()); };
+  return {{"u", "(" + f(0) + " + " + n(p[1]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) +
+                    "*abs(u))*u) / " + n(p[0])},
+          {"v", "(" + f(1) + " - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) +
+                    "*abs(v))*v) / " + n(p[1])},
+          {"r", "(" + f(2) + " - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - " + n(p[7]) + "*v - (" +
                     n(p[8]) + " + " + n(p[9]) + "*abs(r))*r) / " + n(p[2])}};
+}
+
+}  // namespace
+
+FossenFit FitEquationError(const PreparedData& prepared, const FossenOptions& options) {
+  return FitEquationErrorOf<Odin3DofModel>(prepared, options);
+}
+
+FossenFit FitSimulationError(const PreparedData& prepared, const std::array<double, 10>& start,
+                             const FossenOptions& options) {
+  return FitSimulationErrorOf<Odin3DofModel>(prepared, start, options);
+}
+
+nlohmann::json Equations(const std::array<double, 10>& params) {
+  return EquationsOf<Odin3DofModel>(params);
+}
+
+WaterjetFit FitWaterjetEquationError(const PreparedData& prepared, const FossenOptions& options) {
+  return FitEquationErrorOf<WaterjetModel>(prepared, options);
+}
+
+WaterjetFit FitWaterjetSimulationError(const PreparedData& prepared,
+                                       const std::array<double, 13>& start,
+                                       const FossenOptions& options) {
+  return FitSimulationErrorOf<WaterjetModel>(prepared, start, options);
+}
+
+nlohmann::json WaterjetEquations(const std::array<double, 13>& params) {
+  return EquationsOf<WaterjetModel>(params);
 }
 
 }  // namespace usvid::fossen

@@ -1,8 +1,11 @@
 // `fossen-ceres`: the parametric Fossen 3-DOF model of odin3dof (domain.md section 2.2: M, C(nu)
 // from M, D(nu) with linear and quadratic terms; 10 parameters m11 m22 m33 Xu Xuu Yv Yvv Nv Nr
-// Nrr) fitted with Ceres in two modes:
+// Nrr), and the same model driven through a waterjet input map (13 parameters, inputs throttle,
+// nozzle, bucket; see fossen_models.h), fitted with Ceres in two modes:
 //  - equation error: on estimated derivatives, residual_k = (M nu' + C(nu) nu + D(nu) nu - tau)_k
-//    per sample, each force or moment divided by its input's standard deviation;
+//    per sample, each force or moment divided by its input's standard deviation; for the
+//    waterjet model (tau not measured) in accelerations, nu'_k - (M^-1 (tau - C nu - D nu))_k,
+//    each divided by the standard deviation of nu'_k;
 //  - simulation error by multiple shooting: the data cut into segments of segment_s seconds;
 //    each segment is simulated by the templated plant (RK4, one step per sample) from its own
 //    free initial velocities, residuals are the simulated minus measured u, v, r (divided by
@@ -31,12 +34,14 @@ struct FossenOptions {
   double continuity_weight = 10.0;
   bool robust = false;  // Huber loss (scale 1 in normalised units)
   int max_iterations = 100;
+  double function_tolerance = 1e-12;  // Ceres: stop when |cost change| / cost falls below
   int threads = 1;
 };
 
-struct FossenFit {
-  std::array<double, 10> params{};
-  std::array<double, 10> sd{};  // from ceres::Covariance (0 where not available)
+template <int N>
+struct BasicFossenFit {
+  std::array<double, N> params{};
+  std::array<double, N> sd{};  // from ceres::Covariance (0 where not available)
   bool covariance_ok = false;
   std::string termination;  // Ceres' termination type and message
   bool converged = false;
@@ -44,6 +49,8 @@ struct FossenFit {
   int iterations = 0;
   double seconds = 0.0;
 };
+using FossenFit = BasicFossenFit<10>;    // odin3dof: m11 .. Nrr
+using WaterjetFit = BasicFossenFit<13>;  // odin-hs: m11 .. Nrr, Tx, Ty, Tn
 
 // prepared: from Preprocess with states u, v, r (smoothed, "_dot" derivatives) and inputs
 // tau_x, tau_y, tau_n; raw states "<s>_raw" are what the simulation error compares against.
@@ -53,5 +60,14 @@ FossenFit FitSimulationError(const PreparedData& prepared, const std::array<doub
 
 // The model written out as equations in channel names (contract section 5).
 nlohmann::json Equations(const std::array<double, 10>& params);
+
+// The waterjet model: prepared with states u, v, r and inputs throttle, nozzle, bucket. m11 stays
+// at its starting value (5000 kg in the equation-error fit, start[0] in the simulation-error
+// one): the model is invariant to scaling all parameters together.
+WaterjetFit FitWaterjetEquationError(const PreparedData& prepared, const FossenOptions& options);
+WaterjetFit FitWaterjetSimulationError(const PreparedData& prepared,
+                                       const std::array<double, 13>& start,
+                                       const FossenOptions& options);
+nlohmann::json WaterjetEquations(const std::array<double, 13>& params);
 
 }  // namespace usvid::fossen
