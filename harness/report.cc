@@ -1,5 +1,6 @@
 #include "harness/report.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <sstream>
@@ -21,7 +22,9 @@ std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
     if (r.vessel != vessel) continue;
     if (std::find(methods.begin(), methods.end(), r.method) == methods.end())
       methods.push_back(r.method);
-    if (r.status == "ok") fits[{r.method, r.test_maneuver}].push_back(r.mean_fit_percent);
+    // As in summary.md: below -100 % counts as -100 % (one diverged run would swamp the mean).
+    if (r.status == "ok")
+      fits[{r.method, r.test_maneuver}].push_back(std::max(r.mean_fit_percent, -100.0));
   }
   Eigen::MatrixXd values(methods.size(), suite.test_maneuvers.size());
   for (size_t m = 0; m < methods.size(); ++m)
@@ -35,7 +38,7 @@ std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
       values(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(t)) = mean;
     }
   HeatMap map(methods, suite.test_maneuvers, values);
-  map.SetTitle(vessel + ": held-out free-run fit")
+  map.SetTitle(vessel + ": held-out free-run fit (below -100 % counted as -100 %)")
       .SetAxisLabels("method", "test maneuver")
       .SetValueLabel("fit", "%")
       .SetValueRange(0.0, 100.0)
@@ -70,8 +73,9 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
     p.SetYLabel(c).AddSeries("measured", held.t(), held[c]);
     for (const auto& [method, e] : runs)
       if (e.run.simulated.Has(c))
-        p.AddSeries(method + " (trained on " + chosen[method]->train_maneuver + ")", held.t(),
-                    e.run.simulated[c], SeriesStyle::Dashed());
+        p.AddSeries(method + " (trained on " + chosen[method]->train_maneuver + ")" +
+                        (e.run.diverged ? ", diverged" : ""),
+                    held.t(), e.run.simulated[c], SeriesStyle::Dashed());
     grid.Add(std::move(p));
   }
   return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));

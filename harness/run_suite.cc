@@ -74,6 +74,7 @@ IdentifyRequest RequestFor(const FitJob& job) {
   r.ols_threshold = o.value("ols_threshold", r.ols_threshold);
   r.fossen_mode = o.value("fit", r.fossen_mode);
   r.segment_s = o.value("segment_s", r.segment_s);
+  r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
   return r;
 }
 

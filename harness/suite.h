@@ -3,6 +3,8 @@
 // on: another maneuver, or the same maneuver with another seed. JSON form:
 //   {"name": "...", "vessels": ["odin3dof"], "train_maneuvers": ["random-steps"],
 //    "test_maneuvers": ["multisine"], "methods": [{"method": "gp", "operators": "+,-,*,abs"}],
+//    (method options: gp's operators, population, generations, max_depth, ols_threshold;
+//    fossen-ceres' fit and segment_s; any method's rate, the Hz its data are resampled to)
 //    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180}
 // Unknown fields, wrong types and unknown names are errors naming the file and field.
 #pragma once
