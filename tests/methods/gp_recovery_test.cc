@@ -19,20 +19,12 @@
 namespace usvid {
 namespace {
 
+using testing::RelativeError;
+using testing::Simulate;
+using testing::TrueDerivative;
+
 class GpRecoveryTest : public ::testing::Test {
  public:
-  static Dataset Simulate(const std::string& vessel, const std::string& maneuver, double seconds,
-                          double noise, uint64_t seed) {
-    return testing::Simulate(vessel, maneuver, seconds, noise, seed);
-  }
-  template <typename V>
-  static Eigen::VectorXd TrueDerivative(const Dataset& d, int index) {
-    return testing::TrueDerivative<V>(d, index);
-  }
-  static double RelativeError(const Eigen::VectorXd& pred, const Eigen::VectorXd& truth) {
-    return testing::RelativeError(pred, truth);
-  }
-
   static gp::GpProblem Problem(const Dataset& d, const std::vector<std::string>& vars,
                                const Eigen::VectorXd& target) {
     gp::GpProblem p;
@@ -77,9 +69,9 @@ const Odin3DofRun& RunOdin3Dof(const std::vector<gp::Op>& functions) {
   const std::string key = gp::Symbol(functions.back());
   if (cache.count(key)) return cache.at(key);
   const std::vector<std::string> vars = {"u", "v", "r", "tau_x", "tau_y", "tau_n"};
-  const Dataset train = GpRecoveryTest::Simulate("odin3dof", "random-steps", 600, 0.005, 5);
+  const Dataset train = Simulate("odin3dof", "random-steps", 600, 0.005, 5);
   const PreparedData prep = Preprocess(train, {"u", "v", "r"}, {"tau_x", "tau_y", "tau_n"}, {});
-  const Dataset held = GpRecoveryTest::Simulate("odin3dof", "multisine", 300, 0.0, 77);
+  const Dataset held = Simulate("odin3dof", "multisine", 300, 0.0, 77);
   std::vector<Eigen::VectorXd> held_vars;
   for (const std::string& v : vars) held_vars.push_back(held[v]);
   gp::GpOptions opt;
@@ -91,8 +83,8 @@ const Odin3DofRun& RunOdin3Dof(const std::vector<gp::Op>& functions) {
   for (const std::string state : {"u", "v", "r"}) {
     const gp::GpResult r =
         gp::RunGp(GpRecoveryTest::Problem(prep.data, vars, prep.data[state + "_dot"]), opt);
-    const double err = GpRecoveryTest::RelativeError(
-        gp::Predict(r.best, held_vars), GpRecoveryTest::TrueDerivative<Odin3Dof>(held, index++));
+    const double err =
+        RelativeError(gp::Predict(r.best, held_vars), TrueDerivative<Odin3Dof>(held, index++));
     std::cout << "[" << key << "] " << state << "' = " << r.best.Equation(vars)
               << "\n  held-out error " << err << " (" << r.seconds << " s, " << r.log.size()
               << " generations, " << r.stop_reason << ")\n";

@@ -23,6 +23,10 @@
 namespace usvid {
 namespace {
 
+using testing::RelativeError;
+using testing::Simulate;
+using testing::TrueDerivative;
+
 using sindy::IdentifyWithSindy;
 using sindy::PredictWithSindy;
 using sindy::SindyIdentification;
@@ -33,18 +37,6 @@ const std::vector<std::string> kOdinInputs = {"tau_x", "tau_y", "tau_n"};
 
 class SindyTest : public ::testing::Test {
  public:
-  static Dataset Simulate(const std::string& vessel, const std::string& maneuver, double seconds,
-                          double noise, uint64_t seed) {
-    return testing::Simulate(vessel, maneuver, seconds, noise, seed);
-  }
-  template <typename V>
-  static Eigen::VectorXd TrueDerivative(const Dataset& d, int index) {
-    return testing::TrueDerivative<V>(d, index);
-  }
-  static double RelativeError(const Eigen::VectorXd& pred, const Eigen::VectorXd& truth) {
-    return testing::RelativeError(pred, truth);
-  }
-
   static std::set<std::string> TermNames(const std::string& equation) {
     std::set<std::string> names;
     for (const auto& [term, coefficient] : Expression::Parse(equation).Terms()) names.insert(term);
