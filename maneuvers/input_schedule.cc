@@ -28,6 +28,16 @@ struct Steps {
   }
 };
 
+// The schedule holding each excited input at its steps, the others at cruise.
+std::unique_ptr<Maneuver> StepSchedule(const std::string& spec, const Actuation& act,
+                                       double duration_s, std::vector<Steps> steps) {
+  const std::vector<double> initial = CruiseCommand(act);
+  auto command = [act, steps = std::move(steps), initial](double t, std::span<double> u) {
+    for (int i = 0; i < act.inputs(); ++i) u[i] = Excited(act, i) ? steps[i].At(t) : initial[i];
+  };
+  return std::make_unique<InputSchedule>(spec, duration_s, act.inputs(), command);
+}
+
 }  // namespace
 
 std::unique_ptr<Maneuver> MakeRandomSteps(const Actuation& act, double hold_s, double duration_s,
@@ -44,11 +54,7 @@ std::unique_ptr<Maneuver> MakeRandomSteps(const Actuation& act, double hold_s, d
       steps[i].levels.push_back(level(rng));
     }
   }
-  const std::vector<double> initial = CruiseCommand(act);
-  auto command = [act, steps, initial](double t, std::span<double> u) {
-    for (int i = 0; i < act.inputs(); ++i) u[i] = Excited(act, i) ? steps[i].At(t) : initial[i];
-  };
-  return std::make_unique<InputSchedule>("random-steps", duration_s, act.inputs(), command);
+  return StepSchedule("random-steps", act, duration_s, std::move(steps));
 }
 
 std::unique_ptr<Maneuver> MakePrbs(const Actuation& act, double clock_s, double duration_s,
@@ -69,11 +75,7 @@ std::unique_ptr<Maneuver> MakePrbs(const Actuation& act, double clock_s, double 
       steps[i].levels.push_back(bit ? high : low);
     }
   }
-  const std::vector<double> initial = CruiseCommand(act);
-  auto command = [act, steps, initial](double t, std::span<double> u) {
-    for (int i = 0; i < act.inputs(); ++i) u[i] = Excited(act, i) ? steps[i].At(t) : initial[i];
-  };
-  return std::make_unique<InputSchedule>("prbs", duration_s, act.inputs(), command);
+  return StepSchedule("prbs", act, duration_s, std::move(steps));
 }
 
 std::unique_ptr<Maneuver> MakeMultisine(const Actuation& act, double f_max_hz, double duration_s,

@@ -11,24 +11,13 @@
 #include <random>
 
 #include "core/error.h"
+#include "tests/support/test_signals.h"
 
 namespace usvid {
 namespace {
 
-struct Signal {
-  Eigen::VectorXd x, dx;  // samples and their true derivative
-};
-
-Signal Sines(int n, double dt) {
-  Signal s{Eigen::VectorXd(n), Eigen::VectorXd(n)};
-  for (int i = 0; i < n; ++i) {
-    const double t = i * dt;
-    s.x(i) = std::sin(0.7 * t) + 0.5 * std::sin(1.9 * t + 1.0) + 0.3 * std::sin(3.1 * t + 2.0);
-    s.dx(i) =
-        0.7 * std::cos(0.7 * t) + 0.95 * std::cos(1.9 * t + 1.0) + 0.93 * std::cos(3.1 * t + 2.0);
-  }
-  return s;
-}
+using testing::Signal;
+using testing::Sines;
 
 // x' = -0.5 x + u, u held 2-8 s at random levels: x' jumps whenever u does.
 Signal StepResponse(int n, double dt, uint64_t seed) {

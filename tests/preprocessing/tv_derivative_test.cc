@@ -15,13 +15,13 @@
 #include <vector>
 
 #include "core/error.h"
+#include "tests/support/test_signals.h"
 
 namespace usvid {
 namespace {
 
-struct Signal {
-  Eigen::VectorXd x, dx;  // samples and their true derivative
-};
+using testing::Signal;
+using testing::Sines;
 
 // Slopes held between kinks that fall between samples: the derivative is piecewise constant, with
 // jumps of 2 to 4.
@@ -40,17 +40,6 @@ Signal PiecewiseLinear(int n, double dt) {
     }
     s.x(i) = x + slopes[k] * (t - t_prev);
     s.dx(i) = slopes[k];
-  }
-  return s;
-}
-
-Signal Sines(int n, double dt) {
-  Signal s{Eigen::VectorXd(n), Eigen::VectorXd(n)};
-  for (int i = 0; i < n; ++i) {
-    const double t = i * dt;
-    s.x(i) = std::sin(0.7 * t) + 0.5 * std::sin(1.9 * t + 1.0) + 0.3 * std::sin(3.1 * t + 2.0);
-    s.dx(i) =
-        0.7 * std::cos(0.7 * t) + 0.95 * std::cos(1.9 * t + 1.0) + 0.93 * std::cos(3.1 * t + 2.0);
   }
   return s;
 }
