@@ -14,5 +14,6 @@ void AddPreprocessCommand(CLI::App& app);
 void AddIdentifyCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
 void AddCompareCommand(CLI::App& app);
+void AddDiagnoseCommand(CLI::App& app);
 
 }  // namespace usvid

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   usvid::AddIdentifyCommand(app);
   usvid::AddEvaluateCommand(app);
   usvid::AddCompareCommand(app);
+  usvid::AddDiagnoseCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     const auto subcommands = app.get_subcommands({});
     if (std::none_of(subcommands.begin(), subcommands.end(),

@@ -1,0 +1,91 @@
+// usvid diagnose --data F.csv --vessel V [--params P.json] --out DIR
+// What the nominal simulation gets wrong on F, the cause (an effect of the catalogue, or none),
+// the extended model and the gain on held-out data: DIR/diagnosis.json, DIR/model.json and
+// DIR/report.html with its plots.
+
+#include <iostream>
+#include <memory>
+
+#include <omp.h>
+
+#include "apps/usvid/commands.h"
+#include "core/atomic_file.h"
+#include "core/csv_dataset.h"
+#include "core/error.h"
+#include "core/json_file.h"
+#include "diagnosis/diagnose.h"
+#include "diagnosis/diagnosis_json.h"
+#include "diagnosis/diagnosis_report.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+namespace {
+
+struct DiagnoseCliOptions {
+  std::string data;
+  std::string vessel;
+  std::string params;
+  std::string out;
+  diagnosis::DiagnoseOptions options;
+  int threads = 0;
+};
+
+void RunDiagnose(const DiagnoseCliOptions& o) {
+  const VesselSimulator& sim = FindVessel(o.vessel);
+  std::vector<double> params = sim.Info().default_params;
+  if (!o.params.empty()) {
+    const nlohmann::json j = ReadJsonFile(o.params);
+    try {
+      params = sim.Info().ParamsFrom(j.is_object() && j.contains("parameters") ? j.at("parameters") : j);
+    } catch (const InputError& e) {
+      throw InputError(o.params + ": " + e.what());
+    }
+  }
+  if (o.threads < 0) throw InputError("--threads must be 0 (all cores) or more");
+  const Dataset data = ReadDatasetCsv(o.data);
+  EnsureOutputDirectory(o.out);
+  const diagnosis::Diagnosis d = diagnosis::Diagnose(data, o.vessel, params, o.options, &std::cerr);
+  diagnosis::WriteDiagnosisReport(d, o.out);
+  WriteJsonFile(o.out + "/model.json", diagnosis::ExtendedModelJson(d));
+  WriteJsonFile(o.out + "/diagnosis.json", diagnosis::DiagnosisToJson(d));
+  std::cerr << "usvid diagnose: cause " << d.cause << ", held-out error reduction "
+            << d.heldout_error_reduction << " (" << d.seconds << " s); wrote " << o.out
+            << "/diagnosis.json, model.json, report.html\n";
+}
+
+}  // namespace
+
+void AddDiagnoseCommand(CLI::App& app) {
+  auto o = std::make_shared<DiagnoseCliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "diagnose",
+      "What the nominal simulation gets wrong on measured data, its cause, the extended model "
+      "and the held-out gain");
+  cmd->add_option("--data", o->data, "Measured data CSV (the vessel's inputs and states)")
+      ->required();
+  cmd->add_option("--vessel", o->vessel, "Nominal simulator: " + [] {
+    std::string names;
+    for (const std::string& n : VesselNames()) names += (names.empty() ? "" : ", ") + n;
+    return names;
+  }())->required();
+  cmd->add_option("--params", o->params,
+                  "JSON of nominal parameter overrides, or a truth/model file's \"parameters\"");
+  cmd->add_option("--out", o->out, "Directory for diagnosis.json, model.json, report.html")
+      ->required();
+  cmd->add_option("--segment", o->options.split.segment_s,
+                  "Segment length [s]: each segment starts from the measured state")
+      ->capture_default_str();
+  cmd->add_option("--heldout", o->options.split.heldout_fraction,
+                  "Fraction of the record (its end) held out for scoring")
+      ->capture_default_str();
+  cmd->add_option("--dt", o->options.split.max_step, "Largest integration step [s]")
+      ->capture_default_str();
+  cmd->add_option("--threads", o->threads, "OpenMP threads (0: all cores)");
+  cmd->callback([o] {
+    if (!(o->options.split.max_step > 0)) throw InputError("--dt must be positive");
+    if (o->threads > 0) omp_set_num_threads(o->threads);
+    RunDiagnose(*o);
+  });
+}
+
+}  // namespace usvid

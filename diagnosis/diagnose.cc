@@ -1,0 +1,143 @@
+#include "diagnosis/diagnose.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "diagnosis/residual_discovery.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid::diagnosis {
+namespace {
+
+double Seconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// E of measurement noise alone: each channel's noise variance over its scale squared.
+double NoiseFloor(const MeasuredData& d) {
+  double sum = 0.0;
+  for (size_t c = 0; c < d.channels.size(); ++c) sum += std::pow(d.noise_sd[c] / d.scale[c], 2);
+  return sum / static_cast<double>(d.channels.size());
+}
+
+long SampledCount(const MeasuredData& d, const Part& part) {
+  return static_cast<long>(d.sampled.middleRows(part.begin, part.end - part.begin).count());
+}
+
+// Channels of a part as the model predicts them (measured + residual x scale).
+std::map<std::string, Eigen::VectorXd> ModelSeries(const MeasuredData& d, const Part& part,
+                                                   const Eigen::VectorXd& residual) {
+  std::map<std::string, Eigen::VectorXd> out;
+  const auto channels = static_cast<Eigen::Index>(d.channels.size());
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    Eigen::VectorXd v(part.end - part.begin);
+    for (Eigen::Index k = part.begin; k < part.end; ++k)
+      v(k - part.begin) = d.sampled(k, c)
+                              ? d.measured(k, c) + residual((k - part.begin) * channels + c) * d.scale[c]
+                              : NAN;
+    out[d.channels[c]] = v;
+  }
+  return out;
+}
+
+}  // namespace
+
+Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::vector<double>& params,
+                   const DiagnoseOptions& options, std::ostream* log) {
+  const auto start = std::chrono::steady_clock::now();
+  const VesselSimulator& sim = FindVessel(vessel);
+  const EffectFitter& fitter = FindEffectFitter(vessel);
+  const MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
+
+  Diagnosis out;
+  out.vessel = vessel;
+  if (auto s = data.metadata().find("source"); s != data.metadata().end()) out.source = s->second;
+  out.param_names = sim.Info().params;
+  out.params = params;
+  out.channels = d.channels;
+  out.segment_s = options.split.segment_s;
+  out.train_s = d.times[d.train.end - 1] - d.times[d.train.begin];
+  out.heldout_s = d.times[d.heldout.end - 1] - d.times[d.heldout.begin];
+
+  // 1. Show.
+  const EffectValues<double> neutral;
+  const Eigen::VectorXd nominal_all = fitter.Residuals(d, d.all, params, neutral);
+  const Eigen::VectorXd nominal_held = fitter.Residuals(d, d.heldout, params, neutral);
+  out.nominal_error = MeanSquaredError(d, d.heldout, nominal_held);
+  out.nominal_fit_percent = FitPercentOf(d, d.heldout, nominal_held);
+  out.noise_floor = NoiseFloor(d);
+  out.residuals = AnalyseResiduals(d, nominal_all, sim.Info().inputs, d.fallback_states);
+  for (const ChannelResidual& r : out.residuals)
+    out.nominal_free_run_fit_percent[r.channel] = r.free_run_fit_percent;
+  if (log)
+    *log << "diagnose: " << vessel << ", " << d.rows() << " rows, train " << out.train_s
+         << " s, held out " << out.heldout_s << " s; fitting " << EffectCatalogue().size()
+         << " effects\n";
+
+  // 2. Name.
+  const auto& catalogue = EffectCatalogue();
+  std::vector<Candidate> candidates(catalogue.size());
+  const long n_held = SampledCount(d, d.heldout);
+  const double excess = out.nominal_error - out.noise_floor;
+#pragma omp parallel for schedule(dynamic)
+  for (size_t i = 0; i < catalogue.size(); ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Candidate& c = candidates[i];
+    const EffectSearch search = SearchFor(catalogue[i].kind, d, fitter.YawInput());
+    c.fit = fitter.Fit(d, d.train, params, search);
+    const Eigen::VectorXd held = fitter.Residuals(d, d.heldout, params, ValuesOf({c.fit.effect}));
+    c.heldout_error = MeanSquaredError(d, d.heldout, held);
+    c.heldout_fit_percent = FitPercentOf(d, d.heldout, held);
+    c.score = static_cast<double>(n_held) * std::log(c.heldout_error / out.nominal_error) +
+              2.0 * search.size();
+    c.explained = excess > 0 ? (out.nominal_error - c.heldout_error) / excess : 0.0;
+    c.seconds = Seconds(t0);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+  out.candidates = candidates;
+  if (log)
+    for (const Candidate& c : candidates)
+      *log << "  " << c.fit.effect.name() << ": held-out E " << c.heldout_error << " (nominal "
+           << out.nominal_error << ", floor " << out.noise_floor << "), explained " << c.explained
+           << ", " << c.seconds << " s\n";
+
+  const Candidate& best = out.candidates.front();
+  const bool visible = out.nominal_error > (1.0 + options.min_excess) * out.noise_floor;
+  const bool found = visible && best.score < 0 && best.explained >= options.min_explained;
+
+  // 3. Extend and measure.
+  EffectValues<double> extended;
+  if (found) {
+    out.cause = std::string(best.fit.effect.name());
+    out.cause_effect = best.fit.effect;
+    extended = ValuesOf({best.fit.effect});
+  }
+  const Eigen::VectorXd extended_held = fitter.Residuals(d, d.heldout, params, extended);
+  out.extended_error = MeanSquaredError(d, d.heldout, extended_held);
+  out.extended_fit_percent = FitPercentOf(d, d.heldout, extended_held);
+  out.heldout_error_reduction =
+      out.nominal_error > 0 ? 1.0 - std::sqrt(out.extended_error / out.nominal_error) : 0.0;
+  out.series.t = Eigen::Map<const Eigen::VectorXd>(d.times.data() + d.heldout.begin,
+                                                   d.heldout.end - d.heldout.begin);
+  for (Eigen::Index c = 0; c < static_cast<Eigen::Index>(d.channels.size()); ++c) {
+    Eigen::VectorXd m = d.measured.col(c).segment(d.heldout.begin, d.heldout.end - d.heldout.begin);
+    for (Eigen::Index k = 0; k < m.size(); ++k)
+      if (!d.sampled(d.heldout.begin + k, c)) m(k) = NAN;
+    out.series.measured[d.channels[c]] = m;
+  }
+  out.series.nominal = ModelSeries(d, d.heldout, nominal_held);
+  out.series.extended = ModelSeries(d, d.heldout, extended_held);
+
+  // 4. Beyond the catalogue.
+  if (options.discover && !found && visible &&
+      (out.nominal_error - best.heldout_error) < options.min_explained * excess) {
+    if (log) *log << "diagnose: no effect of the catalogue explains the residual; searching terms\n";
+    out.discovered = DiscoverMissingTerms(data, sim, fitter, params, d);
+  }
+  out.seconds = Seconds(start);
+  return out;
+}
+
+}  // namespace usvid::diagnosis

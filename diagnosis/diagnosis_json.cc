@@ -1,0 +1,98 @@
+#include "diagnosis/diagnosis_json.h"
+
+#include <cmath>
+
+namespace usvid::diagnosis {
+namespace {
+
+// Finite numbers only: a table must never hold NaN (null where there is no number).
+nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+nlohmann::json Fits(const FitPercent& fit) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [channel, value] : fit) j[channel] = Number(value);
+  return j;
+}
+
+nlohmann::json Residual(const ChannelResidual& r) {
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const InputCorrelation& c : r.inputs)
+    inputs.push_back({{"input", c.input}, {"lag_s", Number(c.lag_s)},
+                      {"correlation", Number(c.correlation)}});
+  nlohmann::json regressors = nlohmann::json::object();
+  for (const auto& [name, value] : r.regressors) regressors[name] = Number(value);
+  return {{"free_run_fit_percent", Number(r.free_run_fit_percent)},
+          {"segment_fit_percent", Number(r.segment_fit_percent)},
+          {"bias", Number(r.bias)},
+          {"drift_per_s", Number(r.drift_per_s)},
+          {"lag_s", Number(r.lag_s)},
+          {"input_correlation", inputs},
+          {"regressor_correlation", regressors}};
+}
+
+}  // namespace
+
+nlohmann::json DiagnosisToJson(const Diagnosis& d) {
+  nlohmann::json j;
+  j["vessel"] = d.vessel;
+  j["data"] = d.source;
+  j["split"] = {{"train_s", d.train_s}, {"heldout_s", d.heldout_s}, {"segment_s", d.segment_s},
+                {"scored_channels", d.channels}};
+  j["nominal"] = {{"fit_percent", Fits(d.nominal_fit_percent)},
+                  {"heldout_fit_percent", Fits(d.nominal_fit_percent)},
+                  {"free_run_fit_percent", Fits(d.nominal_free_run_fit_percent)},
+                  {"heldout_error", Number(d.nominal_error)},
+                  {"noise_floor_error", Number(d.noise_floor)}};
+  nlohmann::json residuals = nlohmann::json::object();
+  for (const ChannelResidual& r : d.residuals) residuals[r.channel] = Residual(r);
+  j["residuals"] = residuals;
+  j["cause"] = d.cause;
+  nlohmann::json candidates = nlohmann::json::array();
+  for (const Candidate& c : d.candidates) {
+    nlohmann::json parameters = nlohmann::json::object();
+    for (const auto& [name, value] : c.fit.effect.parameters) parameters[name] = Number(value);
+    nlohmann::json sd = nlohmann::json::object();
+    size_t i = 0;
+    for (const auto& [name, _] : c.fit.effect.parameters)
+      if (i < c.fit.sd.size()) sd[name] = Number(c.fit.sd[i++]);
+    candidates.push_back({{"effect", c.fit.effect.name()},
+                          {"parameters", parameters},
+                          {"parameter_sd", sd},
+                          {"heldout_fit_percent", Fits(c.heldout_fit_percent)},
+                          {"heldout_error", Number(c.heldout_error)},
+                          {"explained", Number(c.explained)},
+                          {"score", Number(c.score)},
+                          {"train_error", Number(c.fit.train_cost)},
+                          {"optimiser", c.fit.message},
+                          {"seconds", Number(c.seconds)}});
+  }
+  j["candidates"] = candidates;
+  j["extended"] = {{"effect", d.cause_effect ? EffectToJson(*d.cause_effect) : nlohmann::json()},
+                   {"heldout_fit_percent", Fits(d.extended_fit_percent)},
+                   {"heldout_error", Number(d.extended_error)}};
+  j["gain"] = {{"heldout_error_reduction", Number(d.heldout_error_reduction)}};
+  nlohmann::json discovered = nlohmann::json::array();
+  for (const DiscoveredTerms& t : d.discovered)
+    discovered.push_back({{"state", t.state},
+                          {"missing_derivative", t.expression},
+                          {"heldout_r2", Number(t.heldout_r2)}});
+  j["discovered"] = discovered;
+  j["seconds"] = Number(d.seconds);
+  return j;
+}
+
+nlohmann::json ExtendedModelJson(const Diagnosis& d) {
+  nlohmann::json parameters = nlohmann::json::object();
+  for (size_t i = 0; i < d.params.size(); ++i) parameters[d.param_names[i]] = d.params[i];
+  nlohmann::json effects = nlohmann::json::array();
+  if (d.cause_effect) effects.push_back(EffectToJson(*d.cause_effect));
+  return {{"method", "diagnose"},
+          {"vessel", d.vessel},
+          {"parameters", parameters},
+          {"effects", effects},
+          {"train", {{"data", d.source}, {"seconds", d.train_s}}},
+          {"heldout_fit_percent",
+           {{"nominal", Fits(d.nominal_fit_percent)}, {"extended", Fits(d.extended_fit_percent)}}}};
+}
+
+}  // namespace usvid::diagnosis

@@ -1,0 +1,44 @@
+// Fits one effect of the catalogue to a part of measured data through a vessel's simulator, and
+// computes the segment-reset residuals of any effect values (reset_rollout.h). A runtime
+// interface so that the diagnosis picks the vessel by name; the typed implementation is
+// typed_effect_fitter.h, the list of vessels effect_fitter_registry.cc.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "diagnosis/effect_search.h"
+#include "diagnosis/measured_data.h"
+
+namespace usvid::diagnosis {
+
+struct EffectFit {
+  Effect effect;
+  double train_cost = 0.0;  // mean squared normalised residual on the training part
+  std::vector<double> sd;   // standard deviation of each size (Ceres covariance), empty if none
+  int evaluations = 0;      // rollouts (NLopt) or solver iterations (Ceres)
+  std::string message;      // how the optimiser ended
+};
+
+class EffectFitter {
+ public:
+  virtual ~EffectFitter() = default;
+  // Residuals of `part` (ResidualCount values, row-major rows x channels).
+  virtual Eigen::VectorXd Residuals(const MeasuredData& data, const Part& part,
+                                    const std::vector<double>& params,
+                                    const EffectValues<double>& effects) const = 0;
+  virtual EffectFit Fit(const MeasuredData& data, const Part& train,
+                        const std::vector<double>& params, const EffectSearch& search) const = 0;
+  virtual int YawInput() const = 0;
+  virtual std::string_view Name() const = 0;
+  // The nominal vessel derivative dx = f(x, u; params), no effects.
+  virtual void Derivative(const std::vector<double>& params, const double* x, const double* u,
+                          double* dx) const = 0;
+};
+
+// Throws InputError for a vessel without a fitter.
+const EffectFitter& FindEffectFitter(const std::string& vessel);
+
+}  // namespace usvid::diagnosis

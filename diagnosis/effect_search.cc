@@ -1,0 +1,70 @@
+#include "diagnosis/effect_search.h"
+
+#include <cmath>
+
+namespace usvid::diagnosis {
+
+EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input) {
+  EffectSearch s{kind, true, {}, {}, {}, {}};
+  auto add = [&s](std::string name, double start, double lower, double upper) {
+    s.names.push_back(std::move(name));
+    s.start.push_back(start);
+    s.lower.push_back(lower);
+    s.upper.push_back(upper);
+  };
+  switch (kind) {
+    case EffectKind::kInputDelay:
+      s.smooth = false;
+      add("delay_s", 0.0, 0.0, 3.0);
+      break;
+    case EffectKind::kCurrent:
+      add("current_north", 0.0, -3.0, 3.0);
+      add("current_east", 0.0, -3.0, 3.0);
+      break;
+    case EffectKind::kActuatorLag:
+      add("time_constant_s", 0.5, 0.02, 30.0);
+      break;
+    case EffectKind::kInputBias: {
+      const double peak = std::max(data.peak_command[yaw_input], 1e-9);
+      add("bias", 0.0, -peak, peak);
+      break;
+    }
+    case EffectKind::kSensorBias: {
+      double peak = 0.0;
+      if (data.rate_channel >= 0) peak = data.measured.col(data.rate_channel).cwiseAbs().maxCoeff();
+      add("bias", 0.0, -(peak + 0.1), peak + 0.1);
+      break;
+    }
+    case EffectKind::kInertia:
+      add("scale", 1.0, 0.2, 5.0);
+      break;
+    case EffectKind::kDamping:
+      add("scale", 1.0, 0.2, 5.0);
+      break;
+    case EffectKind::kSaturation:
+      s.smooth = false;
+      add("fraction", 1.0, 0.05, 1.0);
+      break;
+  }
+  return s;
+}
+
+std::vector<std::string> SizeNames(EffectKind kind) {
+  if (kind == EffectKind::kCurrent) return {"current_north", "current_east"};
+  return {std::string(InfoOf(kind).main_parameter)};
+}
+
+Effect EffectOf(EffectKind kind, const std::vector<double>& theta) {
+  Effect e{kind, {}};
+  const std::vector<std::string> names = SizeNames(kind);
+  for (size_t i = 0; i < names.size(); ++i) e.parameters[names[i]] = theta.at(i);
+  return e;
+}
+
+double MainSize(const Effect& effect) {
+  if (effect.kind == EffectKind::kCurrent)
+    return std::hypot(effect.at("current_north"), effect.at("current_east"));
+  return effect.parameters.begin()->second;
+}
+
+}  // namespace usvid::diagnosis

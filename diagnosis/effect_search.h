@@ -1,0 +1,76 @@
+// What is fitted for each effect of the catalogue: the free sizes, their contract names, bounds
+// and starting values, and how they set EffectValues<T>. Smooth effects (current, actuator lag,
+// biases, inertia, damping) are fitted by Ceres through the differentiable rollout; input delay
+// and saturation move signals in time or clip them, so they are found by a bounded NLopt search.
+//   effect        sizes                         bounds
+//   input_delay   delay_s                       [0, 3] s
+//   current       current_north, current_east   +-3 m/s each
+//   actuator_lag  time_constant_s               [0.02, 30] s
+//   input_bias    bias (yaw input units)        +-peak |yaw command|
+//   sensor_bias   bias [rad/s]                  +-(peak |measured rate| + 0.1)
+//   inertia       scale                         [0.2, 5]
+//   damping       scale                         [0.2, 5]
+//   saturation    fraction                      [0.05, 1]
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "diagnosis/measured_data.h"
+#include "effects/effect.h"
+#include "effects/effect_values.h"
+#include "simulators/scalar.h"
+
+namespace usvid::diagnosis {
+
+struct EffectSearch {
+  EffectKind kind;
+  bool smooth = true;  // Ceres (true) or NLopt (false)
+  std::vector<std::string> names;
+  std::vector<double> start, lower, upper;
+  int size() const { return static_cast<int>(names.size()); }
+};
+
+EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input);
+
+// The sizes theta (SearchFor(kind).names order) into effect values; others stay neutral.
+template <typename T>
+void ApplySizes(EffectKind kind, const T* theta, EffectValues<T>& e) {
+  switch (kind) {
+    case EffectKind::kInputDelay:
+      e.delay_s = ValueOf(theta[0]);
+      break;
+    case EffectKind::kCurrent:
+      e.current_north = theta[0];
+      e.current_east = theta[1];
+      break;
+    case EffectKind::kActuatorLag:
+      e.lag_time_constant_s = theta[0];
+      break;
+    case EffectKind::kInputBias:
+      e.input_bias = theta[0];
+      break;
+    case EffectKind::kSensorBias:
+      e.sensor_bias = theta[0];
+      break;
+    case EffectKind::kInertia:
+      e.inertia_scale = theta[0];
+      break;
+    case EffectKind::kDamping:
+      e.damping_scale = theta[0];
+      break;
+    case EffectKind::kSaturation:
+      e.saturation_fraction = ValueOf(theta[0]);
+      break;
+  }
+}
+
+// The contract names of the sizes (contract section 3).
+std::vector<std::string> SizeNames(EffectKind kind);
+
+Effect EffectOf(EffectKind kind, const std::vector<double>& theta);
+
+// The effect's size in one number, as `simulate --effect NAME=VALUE` takes it (current: speed).
+double MainSize(const Effect& effect);
+
+}  // namespace usvid::diagnosis

@@ -1,0 +1,168 @@
+#include "diagnosis/measured_data.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+#include "preprocessing/smoothing_spline.h"
+
+namespace usvid::diagnosis {
+namespace {
+
+std::string Where(const Dataset& data) {
+  const auto source = data.metadata().find("source");
+  return source != data.metadata().end() ? source->second + ": " : "";
+}
+
+// Segment starts from `begin`, one every segment_s seconds, each moved forward to the first row
+// where every channel is sampled.
+Part MakePart(const MeasuredData& d, Eigen::Index begin, Eigen::Index end, double segment_s) {
+  Part part{begin, end, {}};
+  auto all_sampled = [&d](Eigen::Index k) { return d.sampled.row(k).all(); };
+  Eigen::Index k = begin;
+  while (k < end) {
+    while (k < end && !all_sampled(k)) ++k;
+    if (k >= end) break;
+    part.starts.push_back(k);
+    const double t_next = d.times[k] + segment_s;
+    while (k < end && d.times[k] < t_next - 1e-9) ++k;
+  }
+  if (part.starts.empty() || part.starts[0] != begin) part.starts.insert(part.starts.begin(), begin);
+  return part;
+}
+
+}  // namespace
+
+MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim,
+                                 const std::vector<double>& nominal_params,
+                                 const SplitOptions& options) {
+  const VesselInfo& info = sim.Info();
+  const std::string where = Where(data);
+  if (!(options.segment_s > 0)) throw InputError("--segment must be positive");
+  if (!(options.heldout_fraction > 0 && options.heldout_fraction < 1))
+    throw InputError("--heldout must be between 0 and 1");
+  MeasuredData d;
+  d.vessel = info.name;
+  d.times.assign(data.t().data(), data.t().data() + data.rows());
+  d.max_step = options.max_step;
+
+  // Commands, zero-order hold; before an input's first sample its first value holds.
+  const int inputs = static_cast<int>(info.inputs.size());
+  std::vector<const Channel*> in;
+  for (const std::string& name : info.inputs) {
+    const Channel* c = data.Find(name);
+    if (c == nullptr)
+      throw InputError(where + "no input column '" + name + "' for vessel " + info.name);
+    if (!c->sampled.any()) throw InputError(where + "input column '" + name + "' is empty");
+    in.push_back(c);
+  }
+  d.inputs = InputTrack(inputs);
+  std::vector<double> u(inputs, 0.0);
+  for (int i = 0; i < inputs; ++i)
+    for (Eigen::Index k = 0; k < data.rows(); ++k)
+      if (in[i]->sampled(k)) {
+        u[i] = in[i]->values(k);
+        break;
+      }
+  for (Eigen::Index k = 0; k < data.rows(); ++k) {
+    for (int i = 0; i < inputs; ++i)
+      if (in[i]->sampled(k)) u[i] = in[i]->values(k);
+    d.inputs.Append(d.times[k], u);
+  }
+  d.peak_command = d.inputs.PeakAbs();
+
+  // Scored channels: the vessel's states that the data measure.
+  d.state_channel.assign(info.states.size(), -1);
+  for (size_t i = 0; i < info.states.size(); ++i) {
+    const Channel* c = data.Find(info.states[i]);
+    if (c == nullptr || c->sampled.count() < 2) continue;
+    d.state_channel[i] = static_cast<int>(d.channels.size());
+    d.channels.push_back(info.states[i]);
+    d.channel_state.push_back(static_cast<int>(i));
+  }
+  if (d.channels.empty()) {
+    std::string states;
+    for (const std::string& s : info.states) states += (states.empty() ? "" : ", ") + s;
+    throw InputError(where + "no state column of vessel " + info.name + " (" + states + ")");
+  }
+  const auto n = data.rows();
+  const auto channels = static_cast<Eigen::Index>(d.channels.size());
+  d.measured = Eigen::MatrixXd::Zero(n, channels);
+  d.sampled.resize(n, channels);
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    const Channel& ch = data.Get(d.channels[c]);
+    d.sampled.col(c) = ch.sampled;
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (ch.sampled(k)) d.measured(k, c) = ch.values(k);
+  }
+  // Smoothed values for the resets; the heading unwrapped first.
+  d.reset = d.measured;
+  d.noise_sd.assign(channels, 0.0);
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    std::vector<Eigen::Index> rows;
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (d.sampled(k, c)) rows.push_back(k);
+    if (rows.size() < 8) continue;
+    Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
+    for (size_t i = 0; i < rows.size(); ++i) y(static_cast<Eigen::Index>(i)) = d.measured(rows[i], c);
+    const bool angle = info.actuation.heading_state >= 0 &&
+                       d.channel_state[c] == info.actuation.heading_state;
+    if (angle)
+      for (Eigen::Index i = 1; i < y.size(); ++i)
+        y(i) -= 2.0 * std::numbers::pi * std::round((y(i) - y(i - 1)) / (2.0 * std::numbers::pi));
+    const double dt = (d.times[rows.back()] - d.times[rows.front()]) / static_cast<double>(rows.size() - 1);
+    const SmoothingSplineResult s = SmoothingSpline(y, dt);
+    for (size_t i = 0; i < rows.size(); ++i) d.reset(rows[i], c) = s.value(static_cast<Eigen::Index>(i));
+    d.noise_sd[c] = s.noise_sd;
+  }
+  if (info.actuation.rate_state >= 0) d.rate_channel = d.state_channel[info.actuation.rate_state];
+  if (info.actuation.heading_state >= 0)
+    d.heading_channel = d.state_channel[info.actuation.heading_state];
+
+  // Split by time: the last heldout_fraction of the record is held out.
+  const double split_t = d.times.front() + (1.0 - options.heldout_fraction) * data.duration();
+  Eigen::Index split = 0;
+  while (split < n && d.times[split] < split_t) ++split;
+  constexpr Eigen::Index kMinRows = 20;
+  if (split < kMinRows || n - split < kMinRows)
+    throw InputError(where + "too few rows to diagnose (" + std::to_string(n) +
+                     "): need at least " + std::to_string(2 * kMinRows));
+  d.all = MakePart(d, 0, n, options.segment_s);
+  d.train = MakePart(d, 0, split, options.segment_s);
+  d.heldout = MakePart(d, split, n, options.segment_s);
+
+  // Scale: the RMS change of each channel from its segment's first row.
+  d.scale.assign(channels, 0.0);
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    double sum = 0.0, mean_abs = 0.0;
+    long count = 0;
+    for (size_t s = 0; s < d.all.starts.size(); ++s) {
+      const Eigen::Index a = d.all.starts[s];
+      const Eigen::Index b = s + 1 < d.all.starts.size() ? d.all.starts[s + 1] : n;
+      for (Eigen::Index k = a; k < b; ++k) {
+        if (!d.sampled(k, c)) continue;
+        const double change = d.measured(k, c) - d.measured(a, c);
+        sum += change * change;
+        mean_abs += std::abs(d.measured(k, c));
+        ++count;
+      }
+    }
+    const double rms = count > 0 ? std::sqrt(sum / count) : 0.0;
+    const double floor = 1e-6 * (1.0 + (count > 0 ? mean_abs / count : 0.0));
+    d.scale[c] = std::max(rms, floor);
+  }
+
+  // Fallback for unmeasured states: the nominal free run, its last row held if it diverged.
+  RunOptions run;
+  run.dt = options.max_step;
+  const SimulationResult free = sim.RunInputs(data, nominal_params, {}, run);
+  d.fallback_states = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(info.states.size()));
+  for (size_t i = 0; i < info.states.size(); ++i) {
+    const Eigen::VectorXd& x = free.data[info.states[i]];
+    for (Eigen::Index k = 0; k < n; ++k)
+      d.fallback_states(k, static_cast<Eigen::Index>(i)) = x.size() > 0 ? x(std::min(k, x.size() - 1)) : 0.0;
+  }
+  return d;
+}
+
+}  // namespace usvid::diagnosis

@@ -1,0 +1,67 @@
+// Measured data as the diagnosis sees them: the recorded commands as a zero-order-hold input
+// track, the measured vessel states (the scored channels) with their sampled masks, and the
+// data cut into a training part and a held-out part, each into segments of about segment_s
+// seconds. Every segment is simulated from the measured state at its first row (unmeasured
+// states and the actuators' memory run on), so an unstable hull or a wrong initial heading
+// cannot swamp the comparison, while effects that act over seconds to minutes still show.
+// Each channel's error is divided by its scale: the RMS change of that channel within a segment,
+// so that positions, angles and rates weigh alike.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+#include "simulation/input_track.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid::diagnosis {
+
+struct Part {
+  Eigen::Index begin = 0, end = 0;   // rows [begin, end)
+  std::vector<Eigen::Index> starts;  // first row of each segment, ascending, starts[0] == begin
+};
+
+struct MeasuredData {
+  std::string vessel;
+  std::vector<double> times;
+  InputTrack inputs{0};
+  std::vector<double> peak_command;  // max |command| per input over the whole data
+
+  std::vector<std::string> channels;  // scored vessel states present in the data
+  std::vector<int> channel_state;     // channel -> vessel state index
+  std::vector<int> state_channel;     // vessel state -> channel (-1: not measured)
+  Eigen::MatrixXd measured;           // rows x channels (0 where not sampled)
+  Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> sampled;  // rows x channels
+  // Where a segment starts its states are set from a smoothing spline of each channel (auto
+  // lambda, preprocessing/smoothing_spline.h), not from the noisy sample: on an unstable hull
+  // the noise of one sample would otherwise set the whole segment's course.
+  Eigen::MatrixXd reset;              // rows x channels (0 where not sampled)
+  std::vector<double> noise_sd;       // per channel, estimated by the smoother
+  std::vector<double> scale;          // per channel
+  int rate_channel = -1;              // the gyro's channel (sensor_bias), -1 if absent
+  int heading_channel = -1;           // an angle: errors wrapped to (-pi, pi]
+  // A nominal free run of every vessel state over all rows: where a segment starts, states the
+  // data do not measure (jet rpm, nozzle angle) start from it.
+  Eigen::MatrixXd fallback_states;    // rows x vessel states
+
+  Part train, heldout, all;
+  double max_step = 0.01;  // integration substep [s]
+
+  Eigen::Index rows() const { return static_cast<Eigen::Index>(times.size()); }
+};
+
+struct SplitOptions {
+  double segment_s = 10.0;
+  double heldout_fraction = 1.0 / 3.0;  // the last part of the record
+  double max_step = 0.01;
+};
+
+// Throws InputError (naming the file from the data's "source" metadata) when an input column
+// is missing, no state channel of the vessel is measured, or the record is too short to split.
+MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim,
+                                 const std::vector<double>& nominal_params,
+                                 const SplitOptions& options);
+
+}  // namespace usvid::diagnosis

@@ -1,0 +1,23 @@
+// Beyond the catalogue: when no effect explains what the nominal simulation gets wrong, a sparse
+// regression proposes the missing terms. For every measured dynamic state s (not a position or
+// heading), on the preprocessed data (smoothed states, derivatives s_dot):
+//   d_s = s_dot - f_s(x, u; nominal),
+// and SINDy (methods/sindy) fits d_s on the training part with the library of the dynamic states
+// and inputs (constant, products, |x| x, inputs), plus cos psi and sin psi when the heading is
+// measured (earth-fixed forces). A proposal is kept when it explains at least 30 % of d_s's
+// variance on the held-out part.
+#pragma once
+
+#include <vector>
+
+#include "diagnosis/diagnose.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid::diagnosis {
+
+std::vector<DiscoveredTerms> DiscoverMissingTerms(const Dataset& data, const VesselSimulator& sim,
+                                                  const EffectFitter& fitter,
+                                                  const std::vector<double>& params,
+                                                  const MeasuredData& measured);
+
+}  // namespace usvid::diagnosis
