@@ -21,6 +21,32 @@ double NoiseFloor(const MeasuredData& d) {
   return sum / static_cast<double>(d.channels.size());
 }
 
+// The integrated autocorrelation time of the residuals [samples], 1 + 2 sum rho_k over the lags
+// before rho first drops below 0.05, averaged over the channels: N residuals carry about N / tau
+// independent ones.
+double CorrelationTime(const MeasuredData& d, const Part& part, const Eigen::VectorXd& residual) {
+  const auto channels = static_cast<Eigen::Index>(d.channels.size());
+  const Eigen::Index n = part.end - part.begin;
+  double total = 0.0;
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    Eigen::VectorXd e(n);
+    for (Eigen::Index k = 0; k < n; ++k) e(k) = residual(k * channels + c);
+    e.array() -= e.mean();
+    const double var = e.squaredNorm();
+    double tau = 1.0;
+    for (Eigen::Index lag = 1; lag < std::min<Eigen::Index>(n / 4, 400) && var > 0; ++lag) {
+      const double rho = e.head(n - lag).dot(e.tail(n - lag)) / var;
+      if (rho < 0.05) break;
+      tau += 2.0 * rho;
+    }
+    total += tau;
+  }
+  return total / static_cast<double>(channels);
+}
+
+// The chi-square quantile at 0.999 for k = 1, 2 degrees of freedom.
+double ChiSquare999(int k) { return k == 1 ? 10.83 : 13.82; }
+
 long SampledCount(const MeasuredData& d, const Part& part) {
   return static_cast<long>(d.sampled.middleRows(part.begin, part.end - part.begin).count());
 }
@@ -61,9 +87,8 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::ve
   out.heldout_s = d.times[d.heldout.end - 1] - d.times[d.heldout.begin];
 
   // 1. Show.
-  const EffectValues<double> neutral;
-  const Eigen::VectorXd nominal_all = fitter.Residuals(d, d.all, params, neutral);
-  const Eigen::VectorXd nominal_held = fitter.Residuals(d, d.heldout, params, neutral);
+  const Eigen::VectorXd nominal_all = fitter.Residuals(d, d.all, params, std::nullopt);
+  const Eigen::VectorXd nominal_held = fitter.Residuals(d, d.heldout, params, std::nullopt);
   out.nominal_error = MeanSquaredError(d, d.heldout, nominal_held);
   out.nominal_fit_percent = FitPercentOf(d, d.heldout, nominal_held);
   out.noise_floor = NoiseFloor(d);
@@ -78,7 +103,8 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::ve
   // 2. Name.
   const auto& catalogue = EffectCatalogue();
   std::vector<Candidate> candidates(catalogue.size());
-  const long n_held = SampledCount(d, d.heldout);
+  out.correlation_time = CorrelationTime(d, d.heldout, nominal_held);
+  out.effective_samples = static_cast<double>(SampledCount(d, d.heldout)) / out.correlation_time;
   const double excess = out.nominal_error - out.noise_floor;
 #pragma omp parallel for schedule(dynamic)
   for (size_t i = 0; i < catalogue.size(); ++i) {
@@ -86,11 +112,12 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::ve
     Candidate& c = candidates[i];
     const EffectSearch search = SearchFor(catalogue[i].kind, d, fitter.YawInput());
     c.fit = fitter.Fit(d, d.train, params, search);
-    const Eigen::VectorXd held = fitter.Residuals(d, d.heldout, params, ValuesOf({c.fit.effect}));
+    const Eigen::VectorXd held = fitter.Residuals(d, d.heldout, params, c.fit.effect);
     c.heldout_error = MeanSquaredError(d, d.heldout, held);
     c.heldout_fit_percent = FitPercentOf(d, d.heldout, held);
-    c.score = static_cast<double>(n_held) * std::log(c.heldout_error / out.nominal_error) +
-              2.0 * search.size();
+    c.parameters = search.size();
+    c.likelihood_ratio = out.effective_samples * std::log(out.nominal_error / c.heldout_error);
+    c.score = -c.likelihood_ratio + 2.0 * search.size();
     c.explained = excess > 0 ? (out.nominal_error - c.heldout_error) / excess : 0.0;
     c.seconds = Seconds(t0);
   }
@@ -100,21 +127,20 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::ve
   if (log)
     for (const Candidate& c : candidates)
       *log << "  " << c.fit.effect.name() << ": held-out E " << c.heldout_error << " (nominal "
-           << out.nominal_error << ", floor " << out.noise_floor << "), explained " << c.explained
+           << out.nominal_error << ", floor " << out.noise_floor << "), LR " << c.likelihood_ratio
            << ", " << c.seconds << " s\n";
 
   const Candidate& best = out.candidates.front();
+  const bool found = best.likelihood_ratio >= ChiSquare999(best.parameters) &&
+                     best.heldout_error < (1.0 - options.min_reduction) * out.nominal_error;
   const bool visible = out.nominal_error > (1.0 + options.min_excess) * out.noise_floor;
-  const bool found = visible && best.score < 0 && best.explained >= options.min_explained;
 
   // 3. Extend and measure.
-  EffectValues<double> extended;
   if (found) {
     out.cause = std::string(best.fit.effect.name());
     out.cause_effect = best.fit.effect;
-    extended = ValuesOf({best.fit.effect});
   }
-  const Eigen::VectorXd extended_held = fitter.Residuals(d, d.heldout, params, extended);
+  const Eigen::VectorXd extended_held = fitter.Residuals(d, d.heldout, params, out.cause_effect);
   out.extended_error = MeanSquaredError(d, d.heldout, extended_held);
   out.extended_fit_percent = FitPercentOf(d, d.heldout, extended_held);
   out.heldout_error_reduction =

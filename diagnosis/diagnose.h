@@ -4,13 +4,13 @@
 //     (measured_data.h); per channel fit, bias, drift, lag and residual correlations
 //     (residual_analysis.h).
 //  2. Name: every effect fitted on the training part (effect_fitter.h) and scored on the
-//     held-out part. E = mean squared normalised residual; the score is Akaike's criterion
-//     relative to the nominal model, N ln(E / E_nominal) + 2 k (N held-out residuals, k sizes);
-//     candidates ranked by score. The best is the cause when it removes a real part of the
-//     error the noise does not explain:
-//       excess    = E_nominal / E_floor - 1 >= min_excess  (E_floor: measurement noise alone),
-//       explained = (E_nominal - E_best) / (E_nominal - E_floor) >= min_explained;
-//     otherwise the cause is "none".
+//     held-out part, each segment's initial state estimated. E = mean squared normalised
+//     residual. With N_eff = held-out residuals / their correlation time (of the nominal's),
+//       LR = N_eff ln(E_nominal / E),   score = -LR + 2 k   (Akaike, k sizes; lower is better),
+//     candidates ranked by score. The best is the cause when its likelihood ratio passes the
+//     chi-square test at 0.999 (10.8 for one size, 13.8 for two) and it cuts E by at least
+//     min_reduction; otherwise the cause is "none". `explained` reports the share of the excess
+//     of E_nominal over the noise floor (measurement noise alone) that an effect removes.
 //  3. Extend and measure: the nominal model with the cause's fitted sizes; held-out fit before
 //     and after; gain = 1 - ||e_extended|| / ||e_nominal|| on the held-out part.
 //  4. Beyond the catalogue: when the residual stays well above the noise and no effect explains
@@ -31,8 +31,9 @@ namespace usvid::diagnosis {
 
 struct DiagnoseOptions {
   SplitOptions split;
-  double min_excess = 0.1;
-  double min_explained = 0.5;
+  double min_reduction = 0.002;  // of E
+  double min_excess = 0.1;       // E_nominal over the noise floor, for the search beyond
+  double min_explained = 0.5;    // the catalogue (step 4)
   bool discover = true;  // step 4
 };
 
@@ -43,7 +44,9 @@ struct Candidate {
   FitPercent heldout_fit_percent;
   double heldout_error = 0.0;  // E on the held-out part
   double explained = 0.0;      // of the excess error over the noise floor
+  double likelihood_ratio = 0.0;
   double score = 0.0;
+  int parameters = 0;
   double seconds = 0.0;
 };
 
@@ -71,6 +74,7 @@ struct Diagnosis {
   FitPercent nominal_fit_percent;  // held-out, segment-reset
   FitPercent nominal_free_run_fit_percent;
   double nominal_error = 0.0, noise_floor = 0.0;
+  double correlation_time = 1.0, effective_samples = 0.0;
   std::vector<ChannelResidual> residuals;
 
   std::vector<Candidate> candidates;  // ranked, best first

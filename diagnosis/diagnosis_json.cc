@@ -42,7 +42,9 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
                   {"heldout_fit_percent", Fits(d.nominal_fit_percent)},
                   {"free_run_fit_percent", Fits(d.nominal_free_run_fit_percent)},
                   {"heldout_error", Number(d.nominal_error)},
-                  {"noise_floor_error", Number(d.noise_floor)}};
+                  {"noise_floor_error", Number(d.noise_floor)},
+                  {"correlation_time_samples", Number(d.correlation_time)},
+                  {"effective_samples", Number(d.effective_samples)}};
   nlohmann::json residuals = nlohmann::json::object();
   for (const ChannelResidual& r : d.residuals) residuals[r.channel] = Residual(r);
   j["residuals"] = residuals;
@@ -61,6 +63,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
                           {"heldout_fit_percent", Fits(c.heldout_fit_percent)},
                           {"heldout_error", Number(c.heldout_error)},
                           {"explained", Number(c.explained)},
+                          {"likelihood_ratio", Number(c.likelihood_ratio)},
                           {"score", Number(c.score)},
                           {"train_error", Number(c.fit.train_cost)},
                           {"optimiser", c.fit.message},

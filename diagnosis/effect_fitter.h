@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,10 +26,11 @@ struct EffectFit {
 class EffectFitter {
  public:
   virtual ~EffectFitter() = default;
-  // Residuals of `part` (ResidualCount values, row-major rows x channels).
+  // Residuals of `part` (ResidualCount values, row-major rows x channels) of the nominal model
+  // (no effect) or with one effect, each segment's initial state estimated (segment_cost.h).
   virtual Eigen::VectorXd Residuals(const MeasuredData& data, const Part& part,
                                     const std::vector<double>& params,
-                                    const EffectValues<double>& effects) const = 0;
+                                    const std::optional<Effect>& effect) const = 0;
   virtual EffectFit Fit(const MeasuredData& data, const Part& train,
                         const std::vector<double>& params, const EffectSearch& search) const = 0;
   virtual int YawInput() const = 0;

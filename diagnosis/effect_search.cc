@@ -22,7 +22,8 @@ EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input)
       add("current_east", 0.0, -3.0, 3.0);
       break;
     case EffectKind::kActuatorLag:
-      add("time_constant_s", 0.5, 0.02, 30.0);
+      // Below one integration step RK4 would not follow the lag (and it is a delay by then).
+      add("time_constant_s", 0.5, std::max(0.02, data.max_step), 30.0);
       break;
     case EffectKind::kInputBias: {
       const double peak = std::max(data.peak_command[yaw_input], 1e-9);

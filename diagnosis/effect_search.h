@@ -5,7 +5,7 @@
 //   effect        sizes                         bounds
 //   input_delay   delay_s                       [0, 3] s
 //   current       current_north, current_east   +-3 m/s each
-//   actuator_lag  time_constant_s               [0.02, 30] s
+//   actuator_lag  time_constant_s               [max(0.02 s, integration step), 30 s]
 //   input_bias    bias (yaw input units)        +-peak |yaw command|
 //   sensor_bias   bias [rad/s]                  +-(peak |measured rate| + 0.1)
 //   inertia       scale                         [0.2, 5]

@@ -1,5 +1,6 @@
 #include "diagnosis/measured_data.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -44,7 +45,14 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
   MeasuredData d;
   d.vessel = info.name;
   d.times.assign(data.t().data(), data.t().data() + data.rows());
+  if (options.max_step < 0) throw InputError("--dt must be positive, or 0 for the data's interval");
   d.max_step = options.max_step;
+  if (d.max_step == 0.0) {
+    std::vector<double> dt;
+    for (size_t k = 1; k < d.times.size(); ++k) dt.push_back(d.times[k] - d.times[k - 1]);
+    std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
+    d.max_step = dt.empty() ? 0.05 : std::min(0.05, dt[dt.size() / 2]);
+  }
 
   // Commands, zero-order hold; before an input's first sample its first value holds.
   const int inputs = static_cast<int>(info.inputs.size());

@@ -7,9 +7,11 @@
 #include <ceres/ceres.h>
 
 #include <nlopt.hpp>
+#include <numbers>
 
 #include "diagnosis/effect_fitter.h"
 #include "diagnosis/reset_rollout.h"
+#include "diagnosis/segment_cost.h"
 
 namespace usvid::diagnosis {
 
@@ -28,10 +30,18 @@ class TypedEffectFitter : public EffectFitter {
 
   Eigen::VectorXd Residuals(const MeasuredData& data, const Part& part,
                             const std::vector<double>& params,
-                            const EffectValues<double>& effects) const override {
-    Eigen::VectorXd r(ResidualCount(data, part));
-    ResetRollout<V, double>(data, part, ToParams(params), effects, r.data());
-    return r;
+                            const std::optional<Effect>& effect) const override {
+    const EffectKind kind = effect ? effect->kind : EffectKind::kInertia;
+    std::vector<double> theta = {1.0};
+    if (effect) {
+      theta.clear();
+      for (const std::string& name : SizeNames(kind)) theta.push_back(effect->at(name));
+    }
+    const EffectSearch search = SearchFor(kind, data, V::kYawInput);
+    EffectFit unused;
+    return theta.size() == 1
+               ? SolveSegments<1>(data, part, ToParams(params), search, theta, false, unused)
+               : SolveSegments<2>(data, part, ToParams(params), search, theta, false, unused);
   }
 
   EffectFit Fit(const MeasuredData& data, const Part& train, const std::vector<double>& params,
@@ -45,19 +55,16 @@ class TypedEffectFitter : public EffectFitter {
       return r.squaredNorm() / std::max<Eigen::Index>(1, r.size());
     };
     EffectFit fit;
-    // A coarse grid first (the cost of an unstable hull has local minima), Ceres from its best.
+    // A coarse grid first (the cost of an unstable hull has local minima), then Ceres from its
+    // best with every segment's initial state free, or NLopt on the reset cost.
     std::vector<double> theta = BestStart(cost, StartGrid(search));
-    if (search.smooth) {
-      if (search.size() == 1) {
-        SolveCeres<1>(data, train, p, search, theta, fit);
-      } else {
-        SolveCeres<2>(data, train, p, search, theta, fit);
-      }
-    } else {
-      SolveNlopt(cost, search, theta, fit);
-    }
+    if (!search.smooth) SolveNlopt(cost, search, theta, fit);
+    const bool free = search.smooth;
+    const Eigen::VectorXd r =
+        search.size() == 1 ? SolveSegments<1>(data, train, p, search, theta, free, fit)
+                           : SolveSegments<2>(data, train, p, search, theta, free, fit);
     fit.effect = EffectOf(search.kind, theta);
-    fit.train_cost = cost(theta);
+    fit.train_cost = r.squaredNorm() / std::max<Eigen::Index>(1, r.size());
     return fit;
   }
 
@@ -78,7 +85,7 @@ class TypedEffectFitter : public EffectFitter {
       case EffectKind::kCurrent:
         for (double speed : {0.3, 1.0})
           for (int k = 0; k < 8; ++k)
-            grid.push_back({speed * std::cos(k * M_PI / 4), speed * std::sin(k * M_PI / 4)});
+            grid.push_back({speed * std::cos(k * std::numbers::pi / 4), speed * std::sin(k * std::numbers::pi / 4)});
         break;
       case EffectKind::kActuatorLag:
       case EffectKind::kInertia:
@@ -109,53 +116,75 @@ class TypedEffectFitter : public EffectFitter {
     return best;
   }
 
+  // Every segment's initial state estimated (states the data do not measure held), theta
+  // fitted too when `free_theta`; returns the residuals of the part at the solution.
   template <int K>
-  struct RolloutCost {
-    const MeasuredData* data;
-    const Part* part;
-    Params params;
-    EffectKind kind;
-    template <typename T>
-    bool operator()(const T* theta, T* residual) const {
-      EffectValues<T> e;
-      ApplySizes(kind, theta, e);
-      ResetRollout<V, T>(*data, *part, params, e, residual);
-      return true;
+  static Eigen::VectorXd SolveSegments(const MeasuredData& data, const Part& part, const Params& p,
+                                       const EffectSearch& search, std::vector<double>& theta,
+                                       bool free_theta, EffectFit& fit) {
+    constexpr int S = V::kStates;
+    Eigen::VectorXd residual(ResidualCount(data, part));
+    std::vector<std::array<double, S>> x0;
+    {
+      EffectValues<double> e;
+      ApplySizes(search.kind, theta.data(), e);
+      ResetRollout<V, double>(data, part, p, e, residual.data(), &x0);
     }
-  };
-
-  template <int K>
-  static void SolveCeres(const MeasuredData& data, const Part& train, const Params& p,
-                         const EffectSearch& search, std::vector<double>& theta, EffectFit& fit) {
     ceres::Problem problem;
-    const int residuals = static_cast<int>(ResidualCount(data, train));
-    auto* cost = new ceres::AutoDiffCostFunction<RolloutCost<K>, ceres::DYNAMIC, K>(
-        new RolloutCost<K>{&data, &train, p, search.kind}, residuals);
-    problem.AddResidualBlock(cost, nullptr, theta.data());
-    for (int i = 0; i < K; ++i) {
-      problem.SetParameterLowerBound(theta.data(), i, search.lower[i]);
-      problem.SetParameterUpperBound(theta.data(), i, search.upper[i]);
+    problem.AddParameterBlock(theta.data(), K);
+    if (free_theta) {
+      for (int i = 0; i < K; ++i) {
+        problem.SetParameterLowerBound(theta.data(), i, search.lower[i]);
+        problem.SetParameterUpperBound(theta.data(), i, search.upper[i]);
+      }
+    } else {
+      problem.SetParameterBlockConstant(theta.data());
+    }
+    std::vector<int> held;
+    for (int i = 0; i < S; ++i)
+      if (data.state_channel[i] < 0) held.push_back(i);
+    for (size_t s = 0; s < part.starts.size(); ++s) {
+      problem.AddResidualBlock(SegmentCost<V, K>::Create(data, part, s, p, search.kind), nullptr,
+                               theta.data(), x0[s].data());
+      if (held.size() == static_cast<size_t>(S)) {
+        problem.SetParameterBlockConstant(x0[s].data());
+      } else if (!held.empty()) {
+        problem.SetManifold(x0[s].data(), new ceres::SubsetManifold(S, held));
+      }
     }
     ceres::Solver::Options options;
-    options.linear_solver_type = ceres::DENSE_QR;
-    options.max_num_iterations = 40;
-    options.function_tolerance = 1e-10;
+    options.linear_solver_type = ceres::DENSE_SCHUR;
+    options.max_num_iterations = 20;
+    options.function_tolerance = 1e-7;
     options.parameter_tolerance = 1e-10;
     options.num_threads = 1;
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
-    fit.evaluations = static_cast<int>(summary.iterations.size());
-    fit.message = std::string("ceres ") + ceres::TerminationTypeToString(summary.termination_type) + ": " +
-                  summary.message;
-    ceres::Covariance::Options co;
-    ceres::Covariance covariance(co);
-    std::vector<std::pair<const double*, const double*>> blocks = {{theta.data(), theta.data()}};
-    if (covariance.Compute(blocks, &problem)) {
-      double c[K * K];
-      covariance.GetCovarianceBlock(theta.data(), theta.data(), c);
-      const double s2 = 2.0 * summary.final_cost / std::max(1, residuals - K);
-      for (int i = 0; i < K; ++i) fit.sd.push_back(std::sqrt(std::max(0.0, c[i * K + i] * s2)));
+    if (free_theta) {
+      fit.evaluations = static_cast<int>(summary.iterations.size());
+      fit.message = std::string("ceres ") +
+                    ceres::TerminationTypeToString(summary.termination_type) + ": " +
+                    summary.message;
+      ceres::Covariance::Options co;
+      ceres::Covariance covariance(co);
+      std::vector<std::pair<const double*, const double*>> blocks = {{theta.data(), theta.data()}};
+      if (covariance.Compute(blocks, &problem)) {
+        double c[K * K];
+        covariance.GetCovarianceBlock(theta.data(), theta.data(), c);
+        const double dof = std::max(1, summary.num_residuals - summary.num_effective_parameters);
+        const double s2 = 2.0 * summary.final_cost / dof;
+        for (int i = 0; i < K; ++i) fit.sd.push_back(std::sqrt(std::max(0.0, c[i * K + i] * s2)));
+      }
     }
+    EffectValues<double> e;
+    ApplySizes(search.kind, theta.data(), e);
+    const EffectPlant<V, double> plant(data, p, e);
+    for (size_t s = 0; s < part.starts.size(); ++s) {
+      const Eigen::Index a = part.starts[s];
+      SegmentRollout<V, double>(data, part, s, plant, x0[s].data(),
+                                residual.data() + (a - part.begin) * data.channels.size());
+    }
+    return residual;
   }
 
   template <typename Cost>

@@ -43,6 +43,28 @@ class InputTrack {
       if (extra[i] != 0.0) u[i] = T(At(t - delay - extra[i])[i]);
   }
 
+  // The mean over [t, t + h] of the commands in force at (time - delay [- extra[i]]): a
+  // zero-order-hold signal shifted by any delay, as one value per step, so that a simulation
+  // with step h is continuous in the delay.
+  template <typename T>
+  void DelayedMean(double t, double h, double delay, const std::vector<double>& extra, T* u) const {
+    for (int i = 0; i < inputs_; ++i) {
+      const double shift = delay + (extra.empty() ? 0.0 : extra[i]);
+      double a = t - shift;
+      const double end = a + h;
+      double sum = 0.0;
+      while (a < end) {
+        // Seek the sample in force at a and the time the next one takes over.
+        const double* cmd = At(a);
+        const double next = hint_ + 1 < times_.size() ? times_[hint_ + 1] : INFINITY;
+        const double until = std::min(end, next);
+        sum += cmd[i] * (until - a);
+        a = until;
+      }
+      u[i] = T(sum / h);
+    }
+  }
+
   // Largest |u_i| over the track, per input (the peak command).
   std::vector<double> PeakAbs() const {
     std::vector<double> peak(inputs_, 0.0);

@@ -78,11 +78,10 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--heldout", o->options.split.heldout_fraction,
                   "Fraction of the record (its end) held out for scoring")
       ->capture_default_str();
-  cmd->add_option("--dt", o->options.split.max_step, "Largest integration step [s]")
+  cmd->add_option("--dt", o->options.split.max_step, "Largest integration step [s] (0: the data's interval, at most 0.05 s)")
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "OpenMP threads (0: all cores)");
   cmd->callback([o] {
-    if (!(o->options.split.max_step > 0)) throw InputError("--dt must be positive");
     if (o->threads > 0) omp_set_num_threads(o->threads);
     RunDiagnose(*o);
   });
