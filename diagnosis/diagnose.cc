@@ -123,6 +123,12 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::ve
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+  for (Candidate& a : candidates)
+    for (const Candidate& b : candidates)
+      if (&a != &b && std::abs(a.heldout_error - b.heldout_error) <= 1e-3 * out.nominal_error &&
+          a.likelihood_ratio >= ChiSquare999(a.parameters) &&
+          b.likelihood_ratio >= ChiSquare999(b.parameters))
+        a.alike.emplace_back(b.fit.effect.name());
   out.candidates = candidates;
   if (log)
     for (const Candidate& c : candidates)
@@ -156,10 +162,11 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::ve
   out.series.nominal = ModelSeries(d, d.heldout, nominal_held);
   out.series.extended = ModelSeries(d, d.heldout, extended_held);
 
-  // 4. Beyond the catalogue.
-  if (options.discover && !found && visible &&
-      (out.nominal_error - best.heldout_error) < options.min_explained * excess) {
-    if (log) *log << "diagnose: no effect of the catalogue explains the residual; searching terms\n";
+  // 4. Beyond the catalogue: the residual is well above the noise and the best effect leaves
+  // much of it.
+  out.unexplained = visible && (!found || best.explained < options.min_explained);
+  if (options.discover && out.unexplained) {
+    if (log) *log << "diagnose: the catalogue leaves much of the residual; searching terms\n";
     out.discovered = DiscoverMissingTerms(data, sim, fitter, params, d);
   }
   out.seconds = Seconds(start);

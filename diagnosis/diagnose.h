@@ -13,8 +13,9 @@
 //     of E_nominal over the noise floor (measurement noise alone) that an effect removes.
 //  3. Extend and measure: the nominal model with the cause's fitted sizes; held-out fit before
 //     and after; gain = 1 - ||e_extended|| / ||e_nominal|| on the held-out part.
-//  4. Beyond the catalogue: when the residual stays well above the noise and no effect explains
-//     it, a sparse regression (SINDy) on the derivative residual proposes the missing terms.
+//  4. Beyond the catalogue: when the nominal error is well above the noise floor (by
+//     min_excess) and no effect explains min_explained of the excess, a sparse regression
+//     (SINDy) on the derivative residual proposes the missing terms (residual_discovery.h).
 #pragma once
 
 #include <map>
@@ -32,8 +33,8 @@ namespace usvid::diagnosis {
 struct DiagnoseOptions {
   SplitOptions split;
   double min_reduction = 0.002;  // of E
-  double min_excess = 0.1;       // E_nominal over the noise floor, for the search beyond
-  double min_explained = 0.5;    // the catalogue (step 4)
+  double min_excess = 0.1;       // E_nominal over the noise floor, and the share of the excess
+  double min_explained = 0.9;    // an effect must explain, before searching beyond (step 4)
   bool discover = true;  // step 4
 };
 
@@ -47,6 +48,9 @@ struct Candidate {
   double likelihood_ratio = 0.0;
   double score = 0.0;
   int parameters = 0;
+  // Effects whose held-out error is within 0.1 % of this one's: look-alikes these data cannot
+  // tell apart (on the msd a current is a constant force, as an input bias is).
+  std::vector<std::string> alike;
   double seconds = 0.0;
 };
 
@@ -83,6 +87,8 @@ struct Diagnosis {
   FitPercent extended_fit_percent;
   double extended_error = 0.0;
   double heldout_error_reduction = 0.0;
+  // The nominal error is well above the noise and no effect explains min_explained of it.
+  bool unexplained = false;
   std::vector<DiscoveredTerms> discovered;
   HeldoutSeries series;
   double seconds = 0.0;

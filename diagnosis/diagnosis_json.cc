@@ -64,6 +64,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
                           {"heldout_error", Number(c.heldout_error)},
                           {"explained", Number(c.explained)},
                           {"likelihood_ratio", Number(c.likelihood_ratio)},
+                          {"indistinguishable_from", c.alike},
                           {"score", Number(c.score)},
                           {"train_error", Number(c.fit.train_cost)},
                           {"optimiser", c.fit.message},
@@ -79,6 +80,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
     discovered.push_back({{"state", t.state},
                           {"missing_derivative", t.expression},
                           {"heldout_r2", Number(t.heldout_r2)}});
+  j["unexplained_residual"] = d.unexplained;
   j["discovered"] = discovered;
   j["seconds"] = Number(d.seconds);
   return j;

@@ -84,6 +84,13 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
   for (size_t i = 0; i < info.states.size(); ++i) {
     const Channel* c = data.Find(info.states[i]);
     if (c == nullptr || c->sampled.count() < 2) continue;
+    // A channel that never moves (a bucket held open) has no fit to score.
+    std::vector<double> v;
+    for (Eigen::Index k = 0; k < data.rows(); ++k)
+      if (c->sampled(k)) v.push_back(c->values(k));
+    const Eigen::Map<const Eigen::ArrayXd> a(v.data(), static_cast<Eigen::Index>(v.size()));
+    const double sd = std::sqrt((a - a.mean()).square().mean());
+    if (!(sd > 1e-6 * (1.0 + a.abs().mean()))) continue;
     d.state_channel[i] = static_cast<int>(d.channels.size());
     d.channels.push_back(info.states[i]);
     d.channel_state.push_back(static_cast<int>(i));

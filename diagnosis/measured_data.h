@@ -29,7 +29,7 @@ struct MeasuredData {
   InputTrack inputs{0};
   std::vector<double> peak_command;  // max |command| per input over the whole data
 
-  std::vector<std::string> channels;  // scored vessel states present in the data
+  std::vector<std::string> channels;  // scored: vessel states in the data that vary
   std::vector<int> channel_state;     // channel -> vessel state index
   std::vector<int> state_channel;     // vessel state -> channel (-1: not measured)
   Eigen::MatrixXd measured;           // rows x channels (0 where not sampled)
