@@ -87,7 +87,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::ve
   out.heldout_s = d.times[d.heldout.end - 1] - d.times[d.heldout.begin];
 
   // 1. Show.
-  const Eigen::VectorXd nominal_all = fitter.Residuals(d, d.all, params, std::nullopt);
+  const Eigen::VectorXd nominal_all = fitter.ResetResiduals(d, d.all, params, {});
   const Eigen::VectorXd nominal_held = fitter.Residuals(d, d.heldout, params, std::nullopt);
   out.nominal_error = MeanSquaredError(d, d.heldout, nominal_held);
   out.nominal_fit_percent = FitPercentOf(d, d.heldout, nominal_held);

@@ -8,6 +8,14 @@ namespace {
 // Finite numbers only: a table must never hold NaN (null where there is no number).
 nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
+// An uncertainty to three significant digits: SuiteSparse's QR inside ceres::Covariance may
+// round differently from run to run in the last digits.
+double ThreeDigits(double v) {
+  if (v == 0.0 || !std::isfinite(v)) return v;
+  const double e = std::pow(10.0, std::floor(std::log10(std::abs(v))) - 2);
+  return std::round(v / e) * e;
+}
+
 nlohmann::json Fits(const FitPercent& fit) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& [channel, value] : fit) j[channel] = Number(value);
@@ -56,7 +64,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
     nlohmann::json sd = nlohmann::json::object();
     size_t i = 0;
     for (const auto& [name, _] : c.fit.effect.parameters)
-      if (i < c.fit.sd.size()) sd[name] = Number(c.fit.sd[i++]);
+      if (i < c.fit.sd.size()) sd[name] = Number(ThreeDigits(c.fit.sd[i++]));
     candidates.push_back({{"effect", c.fit.effect.name()},
                           {"parameters", parameters},
                           {"parameter_sd", sd},

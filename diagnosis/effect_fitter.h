@@ -31,6 +31,11 @@ class EffectFitter {
   virtual Eigen::VectorXd Residuals(const MeasuredData& data, const Part& part,
                                     const std::vector<double>& params,
                                     const std::optional<Effect>& effect) const = 0;
+  // Residuals of the plain reset run (reset_rollout.h: each segment from the smoothed
+  // measurement), what a person compares by eye.
+  virtual Eigen::VectorXd ResetResiduals(const MeasuredData& data, const Part& part,
+                                         const std::vector<double>& params,
+                                         const EffectValues<double>& effects) const = 0;
   virtual EffectFit Fit(const MeasuredData& data, const Part& train,
                         const std::vector<double>& params, const EffectSearch& search) const = 0;
   virtual int YawInput() const = 0;

@@ -1,5 +1,6 @@
 // What the nominal simulation gets wrong, channel by channel, as numbers a person can read. With
-// the residual e = measured - model (of the segment-reset run unless stated):
+// the residual e = measured - model (of the plain segment-reset run, each segment from the
+// smoothed measurement, unless stated):
 //   bias           mean of e [channel units]
 //   drift_per_s    mean least-squares slope of e within the segments [units/s] (a current
 //                  makes positions drift; a gyro bias makes r offset, not drift)

@@ -44,6 +44,14 @@ class TypedEffectFitter : public EffectFitter {
                : SolveSegments<2>(data, part, ToParams(params), search, theta, false, unused);
   }
 
+  Eigen::VectorXd ResetResiduals(const MeasuredData& data, const Part& part,
+                                 const std::vector<double>& params,
+                                 const EffectValues<double>& effects) const override {
+    Eigen::VectorXd r(ResidualCount(data, part));
+    ResetRollout<V, double>(data, part, ToParams(params), effects, r.data());
+    return r;
+  }
+
   EffectFit Fit(const MeasuredData& data, const Part& train, const std::vector<double>& params,
                 const EffectSearch& search) const override {
     const Params p = ToParams(params);
