@@ -59,9 +59,10 @@ std::map<std::string, Eigen::VectorXd> ModelSeries(const MeasuredData& d, const 
   for (Eigen::Index c = 0; c < channels; ++c) {
     Eigen::VectorXd v(part.end - part.begin);
     for (Eigen::Index k = part.begin; k < part.end; ++k)
-      v(k - part.begin) = d.sampled(k, c)
-                              ? d.measured(k, c) + residual((k - part.begin) * channels + c) * d.scale[c]
-                              : NAN;
+      v(k - part.begin) =
+          d.sampled(k, c)
+              ? d.measured(k, c) + residual((k - part.begin) * channels + c) * d.scale[c]
+              : NAN;
     out[d.channels[c]] = v;
   }
   return out;
@@ -69,8 +70,9 @@ std::map<std::string, Eigen::VectorXd> ModelSeries(const MeasuredData& d, const 
 
 }  // namespace
 
-Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::vector<double>& params,
-                   const DiagnoseOptions& options, std::ostream* log) {
+Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
+                   const std::vector<double>& params, const DiagnoseOptions& options,
+                   std::ostream* log) {
   const auto start = std::chrono::steady_clock::now();
   const VesselSimulator& sim = FindVessel(vessel);
   const EffectFitter& fitter = FindEffectFitter(vessel);

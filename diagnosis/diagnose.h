@@ -35,7 +35,7 @@ struct DiagnoseOptions {
   double min_reduction = 0.002;  // of E
   double min_excess = 0.1;       // E_nominal over the noise floor, and the share of the excess
   double min_explained = 0.9;    // an effect must explain, before searching beyond (step 4)
-  bool discover = true;  // step 4
+  bool discover = true;          // step 4
 };
 
 using FitPercent = std::map<std::string, double>;
@@ -94,7 +94,8 @@ struct Diagnosis {
   double seconds = 0.0;
 };
 
-Diagnosis Diagnose(const Dataset& data, const std::string& vessel, const std::vector<double>& params,
-                   const DiagnoseOptions& options, std::ostream* log = nullptr);
+Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
+                   const std::vector<double>& params, const DiagnoseOptions& options,
+                   std::ostream* log = nullptr);
 
 }  // namespace usvid::diagnosis

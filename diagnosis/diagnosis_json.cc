@@ -25,8 +25,8 @@ nlohmann::json Fits(const FitPercent& fit) {
 nlohmann::json Residual(const ChannelResidual& r) {
   nlohmann::json inputs = nlohmann::json::array();
   for (const InputCorrelation& c : r.inputs)
-    inputs.push_back({{"input", c.input}, {"lag_s", Number(c.lag_s)},
-                      {"correlation", Number(c.correlation)}});
+    inputs.push_back(
+        {{"input", c.input}, {"lag_s", Number(c.lag_s)}, {"correlation", Number(c.correlation)}});
   nlohmann::json regressors = nlohmann::json::object();
   for (const auto& [name, value] : r.regressors) regressors[name] = Number(value);
   return {{"free_run_fit_percent", Number(r.free_run_fit_percent)},
@@ -44,7 +44,9 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
   nlohmann::json j;
   j["vessel"] = d.vessel;
   j["data"] = d.source;
-  j["split"] = {{"train_s", d.train_s}, {"heldout_s", d.heldout_s}, {"segment_s", d.segment_s},
+  j["split"] = {{"train_s", d.train_s},
+                {"heldout_s", d.heldout_s},
+                {"segment_s", d.segment_s},
                 {"scored_channels", d.channels}};
   j["nominal"] = {{"fit_percent", Fits(d.nominal_fit_percent)},
                   {"heldout_fit_percent", Fits(d.nominal_fit_percent)},

@@ -35,7 +35,7 @@ std::string FitCells(const FitPercent& fit, const std::vector<std::string>& chan
 std::string HeldoutFigure(const Diagnosis& d) {
   FigureGrid grid;
   grid.SetTitle("held-out part: measured, nominal and extended (" + d.cause +
-                "), each segment from the measured state")
+                "), each segment from its estimated initial state")
       .SetXLabel("t", "s");
   for (const std::string& c : d.channels) {
     LinePlot p;
@@ -55,7 +55,8 @@ void WriteDiagnosisReport(const Diagnosis& d, const std::string& dir) {
   WriteFileAtomically(dir + "/heldout.svg", figure);
   std::ostringstream h;
   h << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>usvid diagnose: "
-    << svg::Escape(d.vessel) << "</title>\n<style>body{font-family:sans-serif;max-width:1060px;"
+    << svg::Escape(d.vessel)
+    << "</title>\n<style>body{font-family:sans-serif;max-width:1060px;"
        "margin:2em auto;color:#222}table{border-collapse:collapse;margin:1em 0}td,th{border:1px "
        "solid #ccc;padding:3px 8px;font-size:13px}tr.cause{background:#e6f4e6}</style></head>"
        "<body>\n";
@@ -66,8 +67,8 @@ void WriteDiagnosisReport(const Diagnosis& d, const std::string& dir) {
   h << ". Held-out error reduction " << Fixed(100.0 * d.heldout_error_reduction, 1)
     << " %. Trained on the first " << Fixed(d.train_s, 0) << " s, scored on the last "
     << Fixed(d.heldout_s, 0) << " s, in segments of " << Fixed(d.segment_s, 0)
-    << " s from the measured state. Noise floor E = " << std::setprecision(3) << d.noise_floor
-    << ", nominal E = " << d.nominal_error << ".</p>\n";
+    << " s, each from an initial state estimated from the data. Noise floor E = "
+    << std::setprecision(3) << d.noise_floor << ", nominal E = " << d.nominal_error << ".</p>\n";
 
   h << "<h2>Held-out fit %</h2>\n<table><tr><th>model</th>";
   for (const std::string& c : d.channels) h << "<th>" << svg::Escape(c) << "</th>";
@@ -98,7 +99,8 @@ void WriteDiagnosisReport(const Diagnosis& d, const std::string& dir) {
     std::string inputs, regressors;
     for (const InputCorrelation& c : r.inputs)
       inputs += c.input + " " + Fixed(c.correlation, 2) + " (" + Fixed(c.lag_s, 2) + ")<br>";
-    for (const auto& [name, value] : r.regressors) regressors += name + " " + Fixed(value, 2) + "<br>";
+    for (const auto& [name, value] : r.regressors)
+      regressors += name + " " + Fixed(value, 2) + "<br>";
     h << "<tr><td>" << svg::Escape(r.channel) << "</td><td>" << Fixed(r.free_run_fit_percent, 1)
       << "</td><td>" << std::setprecision(4) << r.bias << "</td><td>" << r.drift_per_s
       << "</td><td>" << Fixed(r.lag_s, 2) << "</td><td>" << inputs << "</td><td>" << regressors

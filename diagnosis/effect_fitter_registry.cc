@@ -12,7 +12,8 @@ const EffectFitter& FindEffectFitter(const std::string& vessel) {
   static const TypedEffectFitter<Odin3Dof> odin3dof;
   static const TypedEffectFitter<Eb2Dof> eb2dof;
   static const TypedEffectFitter<OdinHs> odin_hs;
-  for (const EffectFitter* f : std::initializer_list<const EffectFitter*>{&msd, &odin3dof, &eb2dof, &odin_hs})
+  for (const EffectFitter* f :
+       std::initializer_list<const EffectFitter*>{&msd, &odin3dof, &eb2dof, &odin_hs})
     if (f->Name() == vessel) return *f;
   throw InputError("diagnose: no effect fitter for vessel '" + vessel + "'");
 }

@@ -28,7 +28,8 @@ Part MakePart(const MeasuredData& d, Eigen::Index begin, Eigen::Index end, doubl
     const double t_next = d.times[k] + segment_s;
     while (k < end && d.times[k] < t_next - 1e-9) ++k;
   }
-  if (part.starts.empty() || part.starts[0] != begin) part.starts.insert(part.starts.begin(), begin);
+  if (part.starts.empty() || part.starts[0] != begin)
+    part.starts.insert(part.starts.begin(), begin);
   return part;
 }
 
@@ -119,15 +120,18 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
       if (d.sampled(k, c)) rows.push_back(k);
     if (rows.size() < 8) continue;
     Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
-    for (size_t i = 0; i < rows.size(); ++i) y(static_cast<Eigen::Index>(i)) = d.measured(rows[i], c);
-    const bool angle = info.actuation.heading_state >= 0 &&
-                       d.channel_state[c] == info.actuation.heading_state;
+    for (size_t i = 0; i < rows.size(); ++i)
+      y(static_cast<Eigen::Index>(i)) = d.measured(rows[i], c);
+    const bool angle =
+        info.actuation.heading_state >= 0 && d.channel_state[c] == info.actuation.heading_state;
     if (angle)
       for (Eigen::Index i = 1; i < y.size(); ++i)
         y(i) -= 2.0 * std::numbers::pi * std::round((y(i) - y(i - 1)) / (2.0 * std::numbers::pi));
-    const double dt = (d.times[rows.back()] - d.times[rows.front()]) / static_cast<double>(rows.size() - 1);
+    const double dt =
+        (d.times[rows.back()] - d.times[rows.front()]) / static_cast<double>(rows.size() - 1);
     const SmoothingSplineResult s = SmoothingSpline(y, dt);
-    for (size_t i = 0; i < rows.size(); ++i) d.reset(rows[i], c) = s.value(static_cast<Eigen::Index>(i));
+    for (size_t i = 0; i < rows.size(); ++i)
+      d.reset(rows[i], c) = s.value(static_cast<Eigen::Index>(i));
     d.noise_sd[c] = s.noise_sd;
   }
   if (info.actuation.rate_state >= 0) d.rate_channel = d.state_channel[info.actuation.rate_state];
@@ -175,7 +179,8 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
   for (size_t i = 0; i < info.states.size(); ++i) {
     const Eigen::VectorXd& x = free.data[info.states[i]];
     for (Eigen::Index k = 0; k < n; ++k)
-      d.fallback_states(k, static_cast<Eigen::Index>(i)) = x.size() > 0 ? x(std::min(k, x.size() - 1)) : 0.0;
+      d.fallback_states(k, static_cast<Eigen::Index>(i)) =
+          x.size() > 0 ? x(std::min(k, x.size() - 1)) : 0.0;
   }
   return d;
 }

@@ -37,14 +37,14 @@ struct MeasuredData {
   // Where a segment starts its states are set from a smoothing spline of each channel (auto
   // lambda, preprocessing/smoothing_spline.h), not from the noisy sample: on an unstable hull
   // the noise of one sample would otherwise set the whole segment's course.
-  Eigen::MatrixXd reset;              // rows x channels (0 where not sampled)
-  std::vector<double> noise_sd;       // per channel, estimated by the smoother
-  std::vector<double> scale;          // per channel
-  int rate_channel = -1;              // the gyro's channel (sensor_bias), -1 if absent
-  int heading_channel = -1;           // an angle: errors wrapped to (-pi, pi]
+  Eigen::MatrixXd reset;         // rows x channels (0 where not sampled)
+  std::vector<double> noise_sd;  // per channel, estimated by the smoother
+  std::vector<double> scale;     // per channel
+  int rate_channel = -1;         // the gyro's channel (sensor_bias), -1 if absent
+  int heading_channel = -1;      // an angle: errors wrapped to (-pi, pi]
   // A nominal free run of every vessel state over all rows: where a segment starts, states the
   // data do not measure (jet rpm, nozzle angle) start from it.
-  Eigen::MatrixXd fallback_states;    // rows x vessel states
+  Eigen::MatrixXd fallback_states;  // rows x vessel states
 
   Part train, heldout, all;
   double max_step = 0.05;  // integration substep [s]

@@ -66,7 +66,8 @@ double MeanSquaredError(const MeasuredData& d, const Part& part, const Eigen::Ve
   for (Eigen::Index k = part.begin; k < part.end; ++k)
     for (Eigen::Index c = 0; c < channels; ++c)
       if (d.sampled(k, c)) {
-        sum += residual((k - part.begin) * channels + c) * residual((k - part.begin) * channels + c);
+        sum +=
+            residual((k - part.begin) * channels + c) * residual((k - part.begin) * channels + c);
         ++count;
       }
   return count > 0 ? sum / static_cast<double>(count) : 0.0;
@@ -149,7 +150,8 @@ std::vector<ChannelResidual> AnalyseResiduals(const MeasuredData& d,
         r.inputs.push_back({input_names[i], lag.lag * dt, lag.correlation});
       }
     }
-    for (const auto& [name, values] : regressors) r.regressors[name] = Correlation(Gather(values, rows), es);
+    for (const auto& [name, values] : regressors)
+      r.regressors[name] = Correlation(Gather(values, rows), es);
     out.push_back(std::move(r));
   }
   return out;

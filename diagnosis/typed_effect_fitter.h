@@ -68,9 +68,9 @@ class TypedEffectFitter : public EffectFitter {
     std::vector<double> theta = BestStart(cost, StartGrid(search));
     if (!search.smooth) SolveNlopt(cost, search, theta, fit);
     const bool free = search.smooth;
-    const Eigen::VectorXd r =
-        search.size() == 1 ? SolveSegments<1>(data, train, p, search, theta, free, fit)
-                           : SolveSegments<2>(data, train, p, search, theta, free, fit);
+    const Eigen::VectorXd r = search.size() == 1
+                                  ? SolveSegments<1>(data, train, p, search, theta, free, fit)
+                                  : SolveSegments<2>(data, train, p, search, theta, free, fit);
     fit.effect = EffectOf(search.kind, theta);
     fit.train_cost = r.squaredNorm() / std::max<Eigen::Index>(1, r.size());
     return fit;
@@ -93,7 +93,8 @@ class TypedEffectFitter : public EffectFitter {
       case EffectKind::kCurrent:
         for (double speed : {0.3, 1.0})
           for (int k = 0; k < 8; ++k)
-            grid.push_back({speed * std::cos(k * std::numbers::pi / 4), speed * std::sin(k * std::numbers::pi / 4)});
+            grid.push_back({speed * std::cos(k * std::numbers::pi / 4),
+                            speed * std::sin(k * std::numbers::pi / 4)});
         break;
       case EffectKind::kActuatorLag:
       case EffectKind::kInertia:

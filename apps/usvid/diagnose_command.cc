@@ -3,10 +3,10 @@
 // the extended model and the gain on held-out data: DIR/diagnosis.json, DIR/model.json and
 // DIR/report.html with its plots.
 
+#include <omp.h>
+
 #include <iostream>
 #include <memory>
-
-#include <omp.h>
 
 #include "apps/usvid/commands.h"
 #include "core/atomic_file.h"
@@ -36,7 +36,8 @@ void RunDiagnose(const DiagnoseCliOptions& o) {
   if (!o.params.empty()) {
     const nlohmann::json j = ReadJsonFile(o.params);
     try {
-      params = sim.Info().ParamsFrom(j.is_object() && j.contains("parameters") ? j.at("parameters") : j);
+      params =
+          sim.Info().ParamsFrom(j.is_object() && j.contains("parameters") ? j.at("parameters") : j);
     } catch (const InputError& e) {
       throw InputError(o.params + ": " + e.what());
     }
@@ -63,11 +64,15 @@ void AddDiagnoseCommand(CLI::App& app) {
       "and the held-out gain");
   cmd->add_option("--data", o->data, "Measured data CSV (the vessel's inputs and states)")
       ->required();
-  cmd->add_option("--vessel", o->vessel, "Nominal simulator: " + [] {
-    std::string names;
-    for (const std::string& n : VesselNames()) names += (names.empty() ? "" : ", ") + n;
-    return names;
-  }())->required();
+  cmd->add_option(
+         "--vessel", o->vessel,
+         "Nominal simulator: " +
+             [] {
+               std::string names;
+               for (const std::string& n : VesselNames()) names += (names.empty() ? "" : ", ") + n;
+               return names;
+             }())
+      ->required();
   cmd->add_option("--params", o->params,
                   "JSON of nominal parameter overrides, or a truth/model file's \"parameters\"");
   cmd->add_option("--out", o->out, "Directory for diagnosis.json, model.json, report.html")
@@ -78,7 +83,8 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--heldout", o->options.split.heldout_fraction,
                   "Fraction of the record (its end) held out for scoring")
       ->capture_default_str();
-  cmd->add_option("--dt", o->options.split.max_step, "Largest integration step [s] (0: the data's interval, at most 0.05 s)")
+  cmd->add_option("--dt", o->options.split.max_step,
+                  "Largest integration step [s] (0: the data's interval, at most 0.05 s)")
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "OpenMP threads (0: all cores)");
   cmd->callback([o] {

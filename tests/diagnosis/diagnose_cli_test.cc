@@ -25,8 +25,10 @@ class DiagnoseCliTest : public ::testing::Test {
   void SetUp() override {
     dir_ = FreshTempDir();
     data_ = (dir_ / "data.csv").string();
-    const auto r = RunUsvid("simulate --vessel odin3dof --maneuver random-steps --duration 150 "
-                            "--noise 0.005 --seed 7 --effect input_delay=0.6 --out " + data_);
+    const auto r = RunUsvid(
+        "simulate --vessel odin3dof --maneuver random-steps --duration 150 "
+        "--noise 0.005 --seed 7 --effect input_delay=0.6 --out " +
+        data_);
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   nlohmann::json Strip(nlohmann::json j) {

@@ -1,9 +1,10 @@
 // The diagnosis as a library (diagnosis/diagnose.h): the residual signatures point at the cause,
 // look-alikes that a vessel cannot tell apart are said to be so, and a missing term outside the
 // catalogue is proposed by the sparse regression on the derivative residual.
+#include "diagnosis/diagnose.h"
+
 #include <gtest/gtest.h>
 
-#include "diagnosis/diagnose.h"
 #include "maneuvers/maneuver_factory.h"
 #include "sensors/noise.h"
 

@@ -69,11 +69,12 @@ TEST_P(HiddenEffectTest, NamesTheEffectAndItsSize) {
   std::string simulate = "simulate --vessel odin3dof --maneuver " + std::string(Maneuver(seed)) +
                          " --duration 200 --noise 0.005 --seed " + std::to_string(seed) +
                          " --out " + data;
-  if (effect != "none") simulate += " --effect " + effect + "=" + std::to_string(Size(effect, seed));
+  if (effect != "none")
+    simulate += " --effect " + effect + "=" + std::to_string(Size(effect, seed));
   const auto sim = RunUsvid(simulate);
   ASSERT_EQ(sim.exit_code, 0) << sim.err;
-  const auto r = RunUsvid("diagnose --vessel odin3dof --data " + data + " --out " +
-                          (dir / "out").string());
+  const auto r =
+      RunUsvid("diagnose --vessel odin3dof --data " + data + " --out " + (dir / "out").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json d = ReadJsonFile((dir / "out" / "diagnosis.json").string());
   const nlohmann::json truth = ReadJsonFile((dir / "data.truth.json").string());
@@ -92,17 +93,18 @@ TEST_P(HiddenEffectTest, NamesTheEffectAndItsSize) {
         << "nominal worst fit " << worst_nominal;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Catalogue, HiddenEffectTest,
-    ::testing::Combine(::testing::Values("none", "input_delay", "current", "actuator_lag",
-                                         "input_bias", "sensor_bias", "inertia", "damping",
-                                         "saturation"),
-                       ::testing::Values(1, 2, 3)),
-    [](const auto& info) {
-      std::string name = std::get<0>(info.param) + "_seed" + std::to_string(std::get<1>(info.param));
-      std::erase(name, '_');
-      return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Catalogue, HiddenEffectTest,
+                         ::testing::Combine(::testing::Values("none", "input_delay", "current",
+                                                              "actuator_lag", "input_bias",
+                                                              "sensor_bias", "inertia", "damping",
+                                                              "saturation"),
+                                            ::testing::Values(1, 2, 3)),
+                         [](const auto& info) {
+                           std::string name = std::get<0>(info.param) + "_seed" +
+                                              std::to_string(std::get<1>(info.param));
+                           std::erase(name, '_');
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace usvid

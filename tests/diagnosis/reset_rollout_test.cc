@@ -2,12 +2,13 @@
 // exact effect reproduces clean data, the delayed input is continuous in the delay, the actuator
 // memory at a segment start is the first-order filter of the commands, and the Jet derivative
 // of a segment with respect to an effect size matches central differences.
+#include "diagnosis/reset_rollout.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "diagnosis/effect_search.h"
-#include "diagnosis/reset_rollout.h"
 #include "diagnosis/segment_cost.h"
 #include "maneuvers/maneuver_factory.h"
 #include "simulators/odin3dof.h"
