@@ -88,9 +88,10 @@ TEST_P(HiddenEffectTest, NamesTheEffectAndItsSize) {
   double worst_nominal = 100.0;
   for (const auto& [channel, fit] : d.at("nominal").at("fit_percent").items())
     worst_nominal = std::min(worst_nominal, fit.get<double>());
-  if (worst_nominal < 95.0)
+  if (worst_nominal < 95.0) {
     EXPECT_GE(d.at("gain").at("heldout_error_reduction").get<double>(), 0.5)
         << "nominal worst fit " << worst_nominal;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, HiddenEffectTest,
