@@ -75,7 +75,7 @@ struct Diagnosis {
   std::vector<std::string> channels;
   double train_s = 0.0, heldout_s = 0.0, segment_s = 0.0;
 
-  FitPercent nominal_fit_percent;  // held-out, segment-reset
+  FitPercent nominal_fit_percent;  // held-out, segments from estimated initial states
   FitPercent nominal_free_run_fit_percent;
   double nominal_error = 0.0, noise_floor = 0.0;
   double correlation_time = 1.0, effective_samples = 0.0;

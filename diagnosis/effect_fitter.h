@@ -1,5 +1,5 @@
 // Fits one effect of the catalogue to a part of measured data through a vessel's simulator, and
-// computes the segment-reset residuals of any effect values (reset_rollout.h). A runtime
+// computes the residuals of the nominal or an extended model (reset_rollout.h). A runtime
 // interface so that the diagnosis picks the vessel by name; the typed implementation is
 // typed_effect_fitter.h, the list of vessels effect_fitter_registry.cc.
 #pragma once

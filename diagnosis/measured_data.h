@@ -1,9 +1,10 @@
 // Measured data as the diagnosis sees them: the recorded commands as a zero-order-hold input
 // track, the measured vessel states (the scored channels) with their sampled masks, and the
 // data cut into a training part and a held-out part, each into segments of about segment_s
-// seconds. Every segment is simulated from the measured state at its first row (unmeasured
-// states and the actuators' memory run on), so an unstable hull or a wrong initial heading
-// cannot swamp the comparison, while effects that act over seconds to minutes still show.
+// seconds. Every segment is simulated from its own initial state (the smoothed measurement in
+// the reset run, an estimated one when scoring; reset_rollout.h, segment_cost.h), so an unstable
+// hull or a wrong initial heading cannot swamp the comparison, while effects that act over
+// seconds to minutes still show. Unmeasured states and the actuators' memory run on.
 // Each channel's error is divided by its scale: the RMS change of that channel within a segment,
 // so that positions, angles and rates weigh alike.
 #pragma once

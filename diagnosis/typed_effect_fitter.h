@@ -1,7 +1,9 @@
-// EffectFitter for a compile-time vessel V: Ceres (Levenberg-Marquardt, automatic derivatives
-// through the whole segment-reset rollout) for the smooth effects, NLopt (DIRECT-L, then Sbplx
-// from its best point) for input delay and saturation. Both minimise the mean squared
-// normalised residual of the training part within the effect's bounds.
+// EffectFitter for a compile-time vessel V. After a coarse grid on the reset run: Ceres
+// (Levenberg-Marquardt, automatic derivatives through every segment's rollout, each segment's
+// initial state free; segment_cost.h) for the smooth effects, NLopt (DIRECT-L, then Sbplx from
+// its best point) on the reset run for input delay and saturation. All minimise the mean squared
+// normalised residual of the training part within the effect's bounds; scoring then estimates
+// the initial states with the sizes held.
 #pragma once
 
 #include <ceres/ceres.h>
