@@ -1,5 +1,6 @@
 #include "core/dataset.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cstdlib>
 #include <limits>
@@ -72,6 +73,24 @@ void Dataset::KeepRows(const std::vector<bool>& keep) {
 void Dataset::SetTime(Eigen::VectorXd t) {
   if (t.size() != rows() && !channels_.empty()) std::abort();
   t_ = std::move(t);
+}
+
+std::string Dataset::Source() const {
+  const auto it = metadata_.find("source");
+  return it != metadata_.end() ? it->second : "";
+}
+
+std::string Dataset::SourcePrefix() const {
+  const std::string source = Source();
+  return source.empty() ? "" : source + ": ";
+}
+
+double MedianInterval(const Eigen::Ref<const Eigen::VectorXd>& t) {
+  if (t.size() < 2) return 0.0;
+  std::vector<double> dt(static_cast<size_t>(t.size() - 1));
+  for (Eigen::Index i = 1; i < t.size(); ++i) dt[static_cast<size_t>(i - 1)] = t(i) - t(i - 1);
+  std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
+  return dt[dt.size() / 2];
 }
 
 }  // namespace usvid

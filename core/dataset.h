@@ -45,6 +45,11 @@ class Dataset {
   void KeepRows(const std::vector<bool>& keep);
   void SetTime(Eigen::VectorXd t);
 
+  // The file the data came from (metadata "source"), or ""; SourcePrefix is "FILE: " or "", to
+  // start an error message about the data with.
+  std::string Source() const;
+  std::string SourcePrefix() const;
+
   std::map<std::string, std::string>& metadata() { return metadata_; }
   const std::map<std::string, std::string>& metadata() const { return metadata_; }
 
@@ -55,5 +60,8 @@ class Dataset {
   std::vector<Channel> channels_;
   std::map<std::string, std::string> metadata_;
 };
+
+// The median interval between consecutive times [s] (0 for fewer than two).
+double MedianInterval(const Eigen::Ref<const Eigen::VectorXd>& t);
 
 }  // namespace usvid

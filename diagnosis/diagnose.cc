@@ -80,7 +80,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
 
   Diagnosis out;
   out.vessel = vessel;
-  if (auto s = data.metadata().find("source"); s != data.metadata().end()) out.source = s->second;
+  out.source = data.Source();
   out.param_names = sim.Info().params;
   out.params = params;
   out.channels = d.channels;

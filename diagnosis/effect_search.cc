@@ -62,10 +62,4 @@ Effect EffectOf(EffectKind kind, const std::vector<double>& theta) {
   return e;
 }
 
-double MainSize(const Effect& effect) {
-  if (effect.kind == EffectKind::kCurrent)
-    return std::hypot(effect.at("current_north"), effect.at("current_east"));
-  return effect.parameters.begin()->second;
-}
-
 }  // namespace usvid::diagnosis

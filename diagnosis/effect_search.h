@@ -70,7 +70,4 @@ std::vector<std::string> SizeNames(EffectKind kind);
 
 Effect EffectOf(EffectKind kind, const std::vector<double>& theta);
 
-// The effect's size in one number, as `simulate --effect NAME=VALUE` takes it (current: speed).
-double MainSize(const Effect& effect);
-
 }  // namespace usvid::diagnosis

@@ -6,14 +6,10 @@
 
 #include "core/error.h"
 #include "preprocessing/smoothing_spline.h"
+#include "simulation/recorded_inputs.h"
 
 namespace usvid::diagnosis {
 namespace {
-
-std::string Where(const Dataset& data) {
-  const auto source = data.metadata().find("source");
-  return source != data.metadata().end() ? source->second + ": " : "";
-}
 
 // Segment starts from `begin`, one every segment_s seconds, each moved forward to the first row
 // where every channel is sampled.
@@ -39,7 +35,7 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
                                  const std::vector<double>& nominal_params,
                                  const SplitOptions& options) {
   const VesselInfo& info = sim.Info();
-  const std::string where = Where(data);
+  const std::string where = data.SourcePrefix();
   if (!(options.segment_s > 0)) throw InputError("--segment must be positive");
   if (!(options.heldout_fraction > 0 && options.heldout_fraction < 1))
     throw InputError("--heldout must be between 0 and 1");
@@ -49,35 +45,15 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
   if (options.max_step < 0) throw InputError("--dt must be positive, or 0 for the data's interval");
   d.max_step = options.max_step;
   if (d.max_step == 0.0) {
-    std::vector<double> dt;
-    for (size_t k = 1; k < d.times.size(); ++k) dt.push_back(d.times[k] - d.times[k - 1]);
-    std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
-    d.max_step = dt.empty() ? 0.05 : std::min(0.05, dt[dt.size() / 2]);
+    const double dt = MedianInterval(data.t());
+    d.max_step = dt > 0 ? std::min(0.05, dt) : 0.05;
   }
 
-  // Commands, zero-order hold; before an input's first sample its first value holds.
-  const int inputs = static_cast<int>(info.inputs.size());
-  std::vector<const Channel*> in;
-  for (const std::string& name : info.inputs) {
-    const Channel* c = data.Find(name);
-    if (c == nullptr)
-      throw InputError(where + "no input column '" + name + "' for vessel " + info.name);
-    if (!c->sampled.any()) throw InputError(where + "input column '" + name + "' is empty");
-    in.push_back(c);
-  }
-  d.inputs = InputTrack(inputs);
-  std::vector<double> u(inputs, 0.0);
-  for (int i = 0; i < inputs; ++i)
-    for (Eigen::Index k = 0; k < data.rows(); ++k)
-      if (in[i]->sampled(k)) {
-        u[i] = in[i]->values(k);
-        break;
-      }
-  for (Eigen::Index k = 0; k < data.rows(); ++k) {
-    for (int i = 0; i < inputs; ++i)
-      if (in[i]->sampled(k)) u[i] = in[i]->values(k);
-    d.inputs.Append(d.times[k], u);
-  }
+  // Commands, zero-order hold.
+  d.inputs = RecordedInputs(data, info);
+  for (const std::string& name : info.inputs)
+    if (!data.Get(name).sampled.any())
+      throw InputError(where + "input column '" + name + "' is empty");
   d.peak_command = d.inputs.PeakAbs();
 
   // Scored channels: the vessel's states that the data measure.
@@ -156,8 +132,7 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
     double sum = 0.0, mean_abs = 0.0;
     long count = 0;
     for (size_t s = 0; s < d.all.starts.size(); ++s) {
-      const Eigen::Index a = d.all.starts[s];
-      const Eigen::Index b = s + 1 < d.all.starts.size() ? d.all.starts[s + 1] : n;
+      const auto [a, b] = SegmentRows(d.all, s);
       for (Eigen::Index k = a; k < b; ++k) {
         if (!d.sampled(k, c)) continue;
         const double change = d.measured(k, c) - d.measured(a, c);

@@ -24,6 +24,11 @@ struct Part {
   std::vector<Eigen::Index> starts;  // first row of each segment, ascending, starts[0] == begin
 };
 
+// The first and one-past-last row of segment s of a part.
+inline std::pair<Eigen::Index, Eigen::Index> SegmentRows(const Part& part, size_t s) {
+  return {part.starts[s], s + 1 < part.starts.size() ? part.starts[s + 1] : part.end};
+}
+
 struct MeasuredData {
   std::string vessel;
   std::vector<double> times;

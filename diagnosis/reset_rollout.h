@@ -26,11 +26,6 @@ inline Eigen::Index ResidualCount(const MeasuredData& d, const Part& part) {
   return (part.end - part.begin) * static_cast<Eigen::Index>(d.channels.size());
 }
 
-// The first and one-past-last row of segment s of a part.
-inline std::pair<Eigen::Index, Eigen::Index> SegmentRows(const Part& part, size_t s) {
-  return {part.starts[s], s + 1 < part.starts.size() ? part.starts[s + 1] : part.end};
-}
-
 // Vessel V with effect values e, ready to step.
 template <Vessel V, typename T>
 struct EffectPlant {

@@ -17,14 +17,6 @@ double Correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return den > 0 ? (x * y).sum() / den : 0.0;
 }
 
-double MedianStep(const std::vector<double>& t) {
-  std::vector<double> dt;
-  for (size_t k = 1; k < t.size(); ++k) dt.push_back(t[k] - t[k - 1]);
-  if (dt.empty()) return 1.0;
-  std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
-  return dt[dt.size() / 2];
-}
-
 // Rows of part `all` where channel c is sampled.
 std::vector<Eigen::Index> SampledRows(const MeasuredData& d, int c) {
   std::vector<Eigen::Index> rows;
@@ -79,9 +71,9 @@ std::vector<ChannelResidual> AnalyseResiduals(const MeasuredData& d,
                                               const Eigen::MatrixXd& free_run) {
   const auto channels = static_cast<Eigen::Index>(d.channels.size());
   const Eigen::Index n = d.rows();
-  const double dt = MedianStep(d.times);
-  const int max_lag = std::max(1, static_cast<int>(std::round(kMaxLagS / dt)));
   const Eigen::Map<const Eigen::VectorXd> t(d.times.data(), n);
+  const double dt = MedianInterval(t);
+  const int max_lag = std::max(1, static_cast<int>(std::round(kMaxLagS / dt)));
 
   // Regressors over all rows: heading, speed, inputs.
   std::map<std::string, Eigen::VectorXd> regressors;
@@ -130,8 +122,7 @@ std::vector<ChannelResidual> AnalyseResiduals(const MeasuredData& d,
     double slope_sum = 0.0;
     int segments = 0;
     for (size_t s = 0; s < d.all.starts.size(); ++s) {
-      const Eigen::Index a = d.all.starts[s];
-      const Eigen::Index b = s + 1 < d.all.starts.size() ? d.all.starts[s + 1] : n;
+      const auto [a, b] = SegmentRows(d.all, s);
       double st = 0, se = 0, stt = 0, ste = 0;
       long m = 0;
       for (Eigen::Index k = a; k < b; ++k) {

@@ -10,12 +10,7 @@ namespace usvid {
 namespace {
 
 // The data's own rate: one over the median interval between rows.
-double NativeRate(const Dataset& d) {
-  std::vector<double> dt;
-  for (Eigen::Index i = 1; i < d.rows(); ++i) dt.push_back(d.t()(i) - d.t()(i - 1));
-  std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
-  return 1.0 / dt[dt.size() / 2];
-}
+double NativeRate(const Dataset& d) { return 1.0 / MedianInterval(d.t()); }
 
 // u(t - delay) on the same grid (zero-order hold, the first value before the start).
 Eigen::VectorXd Shift(const Eigen::VectorXd& u, int samples) {

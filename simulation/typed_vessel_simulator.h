@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "simulation/closed_loop.h"
 #include "simulation/open_loop.h"
+#include "simulation/recorded_inputs.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -45,30 +46,7 @@ class TypedVesselSimulator : public VesselSimulator {
   SimulationResult RunInputs(const Dataset& data, const std::vector<double>& params,
                              const EffectValues<double>& effects,
                              const RunOptions& options) const override {
-    InputTrack track(V::kInputs);
-    std::vector<const Channel*> channels;
-    for (const std::string& name : info_.inputs) {
-      if (!data.Has(name)) {
-        const auto source = data.metadata().find("source");
-        const std::string where = source != data.metadata().end() ? source->second + ": " : "";
-        throw InputError(where + "no input column '" + name + "' for vessel " + info_.name);
-      }
-      channels.push_back(&data.Get(name));
-    }
-    std::vector<double> u(V::kInputs, 0.0);
-    for (int i = 0; i < V::kInputs; ++i) {
-      const Channel& c = *channels[i];
-      for (Eigen::Index k = 0; k < data.rows(); ++k)
-        if (c.sampled(k)) {
-          u[i] = c.values(k);
-          break;
-        }
-    }
-    for (Eigen::Index k = 0; k < data.rows(); ++k) {
-      for (int i = 0; i < V::kInputs; ++i)
-        if (channels[i]->sampled(k)) u[i] = channels[i]->values(k);
-      track.Append(data.t()(k), u);
-    }
+    const InputTrack track = RecordedInputs(data, info_);
     std::array<double, Plant<V>::kStates> x0{};
     for (int i = 0; i < V::kStates; ++i) {
       const Channel* c = data.Find(info_.states[i]);

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "core/json_file.h"
 #include "simulation/typed_vessel_simulator.h"
 #include "simulators/eb2dof.h"
 #include "simulators/msd.h"
@@ -112,6 +113,15 @@ std::vector<double> VesselInfo::ParamsFrom(const nlohmann::json& overrides) cons
     p[it - params.begin()] = value.get<double>();
   }
   return p;
+}
+
+std::vector<double> VesselInfo::ParamsFromFile(const std::string& path) const {
+  const nlohmann::json j = ReadJsonFile(path);
+  try {
+    return ParamsFrom(j.is_object() && j.contains("parameters") ? j.at("parameters") : j);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
 }
 
 const VesselSimulator& FindVessel(const std::string& name) {

@@ -32,6 +32,9 @@ struct VesselInfo {
   int StateIndex(const std::string& name) const;  // -1 when absent
   // Parameters by name over the defaults; throws InputError on an unknown name.
   std::vector<double> ParamsFrom(const nlohmann::json& overrides) const;
+  // ParamsFrom a JSON file of overrides, or of a truth/model file's "parameters"; errors name
+  // the file.
+  std::vector<double> ParamsFromFile(const std::string& path) const;
 };
 
 struct SimulationResult {

@@ -32,16 +32,8 @@ struct DiagnoseCliOptions {
 
 void RunDiagnose(const DiagnoseCliOptions& o) {
   const VesselSimulator& sim = FindVessel(o.vessel);
-  std::vector<double> params = sim.Info().default_params;
-  if (!o.params.empty()) {
-    const nlohmann::json j = ReadJsonFile(o.params);
-    try {
-      params =
-          sim.Info().ParamsFrom(j.is_object() && j.contains("parameters") ? j.at("parameters") : j);
-    } catch (const InputError& e) {
-      throw InputError(o.params + ": " + e.what());
-    }
-  }
+  const std::vector<double> params =
+      o.params.empty() ? sim.Info().default_params : sim.Info().ParamsFromFile(o.params);
   if (o.threads < 0) throw InputError("--threads must be 0 (all cores) or more");
   const Dataset data = ReadDatasetCsv(o.data);
   EnsureOutputDirectory(o.out);

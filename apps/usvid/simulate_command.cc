@@ -52,14 +52,7 @@ void RunSimulate(const SimulateOptions& o) {
   const std::vector<Effect> effects = ParseEffects(o.effects, o.seed);
   const EffectValues<double> values = ValuesOf(effects);
   std::vector<double> params = info.default_params;
-  if (!o.params.empty()) {
-    const nlohmann::json j = ReadJsonFile(o.params);
-    try {
-      params = info.ParamsFrom(j.contains("parameters") ? j.at("parameters") : j);
-    } catch (const InputError& e) {
-      throw InputError(o.params + ": " + e.what());
-    }
-  }
+  if (!o.params.empty()) params = info.ParamsFromFile(o.params);
   RunOptions run;
   run.dt = o.dt;
   run.rate_hz = o.rate_hz;

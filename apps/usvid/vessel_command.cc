@@ -50,10 +50,7 @@ void RunVessel(const VesselOptions& o) {
   const VesselSimulator& sim = FindVessel(o.vessel);
   const VesselInfo& info = sim.Info();
   std::vector<double> params = info.default_params;
-  if (!o.params.empty()) {
-    const nlohmann::json j = ReadJsonFile(o.params);
-    params = info.ParamsFrom(j.contains("parameters") ? j.at("parameters") : j);
-  }
+  if (!o.params.empty()) params = info.ParamsFromFile(o.params);
   EnsureOutputDirectory(o.out);
   nlohmann::json report = {{"vessel", info.name},
                            {"states", info.states},

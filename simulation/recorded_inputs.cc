@@ -1,0 +1,33 @@
+#include "simulation/recorded_inputs.h"
+
+#include "core/error.h"
+
+namespace usvid {
+
+InputTrack RecordedInputs(const Dataset& data, const VesselInfo& info) {
+  const auto inputs = static_cast<int>(info.inputs.size());
+  std::vector<const Channel*> channels;
+  for (const std::string& name : info.inputs) {
+    const Channel* c = data.Find(name);
+    if (c == nullptr)
+      throw InputError(data.SourcePrefix() + "no input column '" + name + "' for vessel " +
+                       info.name);
+    channels.push_back(c);
+  }
+  std::vector<double> u(inputs, 0.0);
+  for (int i = 0; i < inputs; ++i)
+    for (Eigen::Index k = 0; k < data.rows(); ++k)
+      if (channels[i]->sampled(k)) {
+        u[i] = channels[i]->values(k);
+        break;
+      }
+  InputTrack track(inputs);
+  for (Eigen::Index k = 0; k < data.rows(); ++k) {
+    for (int i = 0; i < inputs; ++i)
+      if (channels[i]->sampled(k)) u[i] = channels[i]->values(k);
+    track.Append(data.t()(k), u);
+  }
+  return track;
+}
+
+}  // namespace usvid

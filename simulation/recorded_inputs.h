@@ -1,0 +1,14 @@
+// The recorded commands of a data file as a zero-order-hold InputTrack, for replaying them on a
+// vessel: one row per data row, an unsampled cell holding the input's last sample (its first
+// sample before that). Throws InputError, naming the data's file, for a missing input column.
+#pragma once
+
+#include "core/dataset.h"
+#include "simulation/input_track.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+
+InputTrack RecordedInputs(const Dataset& data, const VesselInfo& info);
+
+}  // namespace usvid
