@@ -69,8 +69,10 @@ void AddDiagnoseCommand(CLI::App& app) {
                   "JSON of nominal parameter overrides, or a truth/model file's \"parameters\"");
   cmd->add_option("--out", o->out, "Directory for diagnosis.json, model.json, report.html")
       ->required();
-  cmd->add_option("--segment", o->options.split.segment_s,
-                  "Segment length [s]: each segment starts from the measured state")
+  cmd->add_option(
+         "--segment", o->options.split.segment_s,
+         "Segment length [s]: each segment is simulated from its own initial state, estimated "
+         "from the data")
       ->capture_default_str();
   cmd->add_option("--heldout", o->options.split.heldout_fraction,
                   "Fraction of the record (its end) held out for scoring")
