@@ -1,6 +1,7 @@
 #include "core/error.h"
 #include "diagnosis/typed_effect_fitter.h"
 #include "simulators/eb2dof.h"
+#include "simulators/kvlcc2.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
 #include "simulators/odin_hs.h"
@@ -12,8 +13,9 @@ const EffectFitter& FindEffectFitter(const std::string& vessel) {
   static const TypedEffectFitter<Odin3Dof> odin3dof;
   static const TypedEffectFitter<Eb2Dof> eb2dof;
   static const TypedEffectFitter<OdinHs> odin_hs;
+  static const TypedEffectFitter<Kvlcc2> kvlcc2;
   for (const EffectFitter* f :
-       std::initializer_list<const EffectFitter*>{&msd, &odin3dof, &eb2dof, &odin_hs})
+       std::initializer_list<const EffectFitter*>{&msd, &odin3dof, &eb2dof, &odin_hs, &kvlcc2})
     if (f->Name() == vessel) return *f;
   throw InputError("diagnose: no effect fitter for vessel '" + vessel + "'");
 }

@@ -8,8 +8,14 @@ namespace usvid {
 
 double Actuation::YawCommand(double deg) const {
   const double command =
-      yaw_is_angle ? deg * std::numbers::pi / 180.0 : deg / yaw_full_deg * yaw_full;
+      yaw_sign * (yaw_is_angle ? deg * std::numbers::pi / 180.0 : deg / yaw_full_deg * yaw_full);
   return std::clamp(command, input_min[yaw_input], input_max[yaw_input]);
+}
+
+double Actuation::SlewYaw(double from, double to, double dt) const {
+  if (!(yaw_rate_limit > 0)) return to;
+  const double step = yaw_rate_limit * std::max(0.0, dt);
+  return from + std::clamp(to - from, -step, step);
 }
 
 double Actuation::Speed(std::span<const double> state) const {

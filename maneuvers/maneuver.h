@@ -37,10 +37,19 @@ struct Actuation {
   double yaw_full = 1.0;
   double yaw_full_deg = 35.0;
   double thrust_cruise = 0.0;  // the thrust command of the default cruise
+  // +1 when a positive yaw input turns to starboard (r > 0), -1 when it turns to port (the ITTC
+  // rudder sign of kvlcc2's MARIN data). Maneuvers think in starboard-positive degrees.
+  double yaw_sign = 1.0;
+  // Largest rate of change of the yaw command in classic maneuvers (zig-zag, turning) [input
+  // units per second]; 0: the command steps (a servo fast against the hull's response).
+  double yaw_rate_limit = 0.0;
 
   int inputs() const { return static_cast<int>(input_names.size()); }
-  // The yaw command standing for a rudder angle of `deg` degrees, within the input's range.
+  // The yaw command standing for a rudder angle of `deg` degrees to starboard, within the
+  // input's range.
   double YawCommand(double deg) const;
+  // The yaw command moved from `from` towards `to` within yaw_rate_limit over dt seconds.
+  double SlewYaw(double from, double to, double dt) const;
   // Speed over ground from a state (U, or the norm of u and v); 0 without a speed state.
   double Speed(std::span<const double> state) const;
 };

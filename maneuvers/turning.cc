@@ -23,6 +23,11 @@ std::vector<double> Turning::InitialCommand() const { return CruiseCommand(act_)
 void Turning::Command(double t, std::span<const double> state, std::span<double> u) {
   const std::vector<double> cruise = CruiseCommand(act_);
   std::copy(cruise.begin(), cruise.end(), u.begin());
+  if (!commanded_) {
+    yaw_ = cruise[act_.yaw_input];
+    last_t_ = t;
+    commanded_ = true;
+  }
   if (t < kLeadInS) return;
   const double psi = state[act_.heading_state];
   const bool positions = act_.north_state >= 0 && act_.east_state >= 0;
@@ -51,7 +56,9 @@ void Turning::Command(double t, std::span<const double> state, std::span<double>
     const double r = state[act_.rate_state];
     if (std::abs(r) > 1e-6) last_radius_ = act_.Speed(state) / std::abs(r);
   }
-  u[act_.yaw_input] = act_.YawCommand(rudder_deg_);
+  yaw_ = act_.SlewYaw(yaw_, act_.YawCommand(rudder_deg_), t - last_t_);
+  last_t_ = t;
+  u[act_.yaw_input] = yaw_;
 }
 
 nlohmann::json Turning::Report() const {

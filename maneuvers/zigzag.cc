@@ -27,6 +27,11 @@ std::vector<double> ZigZag::InitialCommand() const { return CruiseCommand(act_);
 void ZigZag::Command(double t, std::span<const double> state, std::span<double> u) {
   const std::vector<double> cruise = CruiseCommand(act_);
   std::copy(cruise.begin(), cruise.end(), u.begin());
+  if (!commanded_) {
+    yaw_ = cruise[act_.yaw_input];
+    last_t_ = t;
+    commanded_ = true;
+  }
   if (t < kLeadInS) return;
   const double psi = state[act_.heading_state];
   if (!started_) {
@@ -45,7 +50,9 @@ void ZigZag::Command(double t, std::span<const double> state, std::span<double> 
     switch_times_.push_back(t);
     overshoot_.push_back(0.0);
   }
-  u[act_.yaw_input] = act_.YawCommand(sign_ * rudder_deg_);
+  yaw_ = act_.SlewYaw(yaw_, act_.YawCommand(sign_ * rudder_deg_), t - last_t_);
+  last_t_ = t;
+  u[act_.yaw_input] = yaw_;
 }
 
 nlohmann::json ZigZag::Report() const {

@@ -31,6 +31,8 @@ class ZigZag : public Maneuver {
   std::vector<double> switch_times_;
   // Largest excursion beyond the threshold after each switch [rad], sign-corrected.
   std::vector<double> overshoot_;
+  double yaw_ = 0.0, last_t_ = 0.0;  // the yaw command sent, slewed (Actuation::SlewYaw)
+  bool commanded_ = false;
 };
 
 }  // namespace usvid

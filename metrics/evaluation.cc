@@ -23,13 +23,15 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
   // derivatives (default estimator, inputs shifted by the model's delay).
   nlohmann::json r2 = nlohmann::json::object();
   std::vector<std::string> states, inputs;
-  for (const auto& [state, _] : model.at("equations").items()) states.push_back(state);
+  const bool has_equations = model.contains("equations");  // else a vessel model
+  if (has_equations)
+    for (const auto& [state, _] : model.at("equations").items()) states.push_back(state);
   if (model.contains("inputs"))
     for (const auto& i : model.at("inputs")) inputs.push_back(i.get<std::string>());
   std::vector<std::string> variables = states;
   if (model.contains("variables"))
     variables = model.at("variables").get<std::vector<std::string>>();
-  bool can_differentiate = !inputs.empty();
+  bool can_differentiate = has_equations && !inputs.empty();
   for (const auto& names : {variables, inputs})
     for (const std::string& n : names) can_differentiate = can_differentiate && data.Has(n);
   if (can_differentiate) {

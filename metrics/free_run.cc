@@ -5,7 +5,10 @@
 #include <map>
 
 #include "core/error.h"
+#include "effects/effect.h"
+#include "effects/effect_values.h"
 #include "methods/expression.h"
+#include "simulation/vessel_simulator.h"
 
 namespace usvid {
 namespace {
@@ -18,9 +21,47 @@ double HeldInput(const Dataset& d, const Eigen::VectorXd& u, double t) {
   return u(k);
 }
 
+// A vessel model: the registered simulator with the model's parameters and effects.
+FreeRun FreeRunVessel(const nlohmann::json& model, const Dataset& data, double max_step) {
+  if (!model.at("vessel").is_string()) throw InputError("model: \"vessel\" is not a string");
+  const VesselSimulator& sim = FindVessel(model.at("vessel").get<std::string>());
+  const VesselInfo& info = sim.Info();
+  const std::vector<double> params =
+      info.ParamsFrom(model.contains("parameters") ? model.at("parameters") : nlohmann::json());
+  std::vector<Effect> effects;
+  if (model.contains("effects")) {
+    if (!model.at("effects").is_array()) throw InputError("model: \"effects\" is not an array");
+    for (const auto& e : model.at("effects")) effects.push_back(EffectFromJson(e));
+  }
+  RunOptions options;
+  options.dt = max_step;
+  const SimulationResult result = sim.RunInputs(data, params, ValuesOf(effects), options);
+  FreeRun run;
+  run.diverged = result.diverged;
+  run.diverged_at_s = result.diverged_at_s;
+  run.simulated = Dataset(data.t());
+  const Eigen::Index rows = result.data.rows();
+  for (const std::string& state : info.states) {
+    if (!data.Has(state) || !result.data.Has(state)) continue;
+    // Past a divergence the last finite value is held, as for equation models.
+    Eigen::VectorXd v(data.rows());
+    const Eigen::VectorXd& sim_values = result.data[state];
+    for (Eigen::Index k = 0; k < data.rows(); ++k)
+      v(k) = rows > 0 ? sim_values(std::min(k, rows - 1)) : data[state](0);
+    run.simulated.Set(state, v);
+    run.channels.push_back(state);
+  }
+  if (run.channels.empty())
+    throw InputError("data: none of vessel " + info.name + "'s states to compare with");
+  return run;
+}
+
 }  // namespace
 
 FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double max_step) {
+  if (!model.contains("equations") && model.contains("vessel") && !model.at("vessel").is_null() &&
+      model.at("vessel") != "")
+    return FreeRunVessel(model, data, max_step);
   if (!model.contains("equations") || !model.at("equations").is_object() ||
       model.at("equations").empty())
     throw InputError("model: no \"equations\" object");

@@ -4,6 +4,10 @@
 //   body velocities u, v, r:  psi' = r, north' = u cos psi - v sin psi, east' = u sin psi + v cos
 //   psi speed and turn U, r:      chi' = r, north' = U cos chi, east' = U sin chi msd velocity v:
 //   x' = v
+// A model without equations that names a registered vessel (a vessel model: {"vessel": "kvlcc2",
+// "parameters": {...}, "effects": [...]}, as `identify --method refit` and `diagnose` write them,
+// or just {"vessel": "kvlcc2"} for the nominal simulator) is free-run by that simulator on the
+// data's inputs from the data's first row, its measured states compared.
 // The run stops when a state leaves its bound (ten times the data's largest magnitude, at least
 // 1e3): it is then reported as diverged and the rest holds the last finite value, so scores stay
 // finite.

@@ -58,7 +58,11 @@ ClosedLoopRun RunClosedLoop(Maneuver& maneuver, const std::array<double, V::kPar
     }
     return true;
   };
-  for (double t = 0; t < opt.run_in_s; t += 1.0) {
+  // A large ship needs longer than the default to reach its speed from rest (kvlcc2: its surge
+  // time constant is about 5 minutes).
+  double run_in = opt.run_in_s;
+  if constexpr (requires { V::kRunInS; }) run_in = std::max(run_in, V::kRunInS);
+  for (double t = 0; t < run_in; t += 1.0) {
     const auto before = x;
     for (int s = 0; s < static_cast<int>(std::round(1.0 / h)); ++s) stepper.Step(u0.data(), h, x);
     run.run_in_s = t + 1.0;

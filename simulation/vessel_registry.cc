@@ -7,6 +7,7 @@
 #include "core/json_file.h"
 #include "simulation/typed_vessel_simulator.h"
 #include "simulators/eb2dof.h"
+#include "simulators/kvlcc2.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
 #include "simulators/odin_hs.h"
@@ -15,6 +16,7 @@ namespace usvid {
 namespace {
 
 constexpr double kNozzleMax = 27.0 * 3.14159265358979323846 / 180.0;
+constexpr double kRudderMax = 35.0 * 3.14159265358979323846 / 180.0;
 
 // What a maneuver needs beyond the vessel's own constants: how its yaw input maps to a rudder
 // angle, and the thrust of a cruise.
@@ -55,6 +57,8 @@ VesselInfo InfoFor(std::vector<InputRole> roles, const Actuation& extra) {
     }
   }
   a.yaw_input = V::kYawInput;
+  if constexpr (requires { V::kYawSign; }) a.yaw_sign = V::kYawSign;
+  if constexpr (requires { V::kYawRateLimit; }) a.yaw_rate_limit = V::kYawRateLimit;
   a.thrust_input = V::kThrustInput;
   a.rate_state = V::kRateState;
   a.heading_state = V::kHeadingState;
@@ -89,6 +93,9 @@ const std::map<std::string, std::unique_ptr<VesselSimulator>>& Registry() {
     // half throttle (5.4 m/s, semi-displacement).
     (*r)["odin-hs"] =
         Make<OdinHs>({R::kThrust, R::kYaw, R::kFixed}, Drive(true, kNozzleMax, 27.0, 0.5));
+    // kvlcc2: rudder angle in radians, hard over 35 deg; cruise at the 91.7 rpm of the MARIN
+    // free-running tests.
+    (*r)["kvlcc2"] = Make<Kvlcc2>({R::kYaw, R::kThrust}, Drive(true, kRudderMax, 35.0, 91.7));
     return r;
   }();
   return *registry;

@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "apps/usvid/commands.h"
 #include "core/atomic_file.h"
@@ -29,6 +30,7 @@ struct SimulateOptions {
   std::vector<std::string> rates;
   std::string params;
   double duration = 0.0;
+  std::optional<double> cruise;
   double dt = 0.01;
   double rate_hz = 20.0;
   std::string integrator = "rk4";
@@ -67,7 +69,17 @@ void RunSimulate(const SimulateOptions& o) {
       if (eq != std::string::npos)
         run.rate_hz = std::max(run.rate_hz, std::atof(item.c_str() + eq + 1));
     }
-    auto maneuver = MakeManeuver(o.maneuver, info.actuation, o.duration, o.seed);
+    Actuation act = info.actuation;
+    if (o.cruise) {
+      if (act.thrust_input < 0)
+        throw InputError("--cruise: vessel " + info.name + " has no thrust input");
+      if (!(*o.cruise >= act.input_min[act.thrust_input] &&
+            *o.cruise <= act.input_max[act.thrust_input]))
+        throw InputError("--cruise: " + std::to_string(*o.cruise) + " is outside the range of " +
+                         act.input_names[act.thrust_input]);
+      act.thrust_cruise = *o.cruise;
+    }
+    auto maneuver = MakeManeuver(o.maneuver, act, o.duration, o.seed);
     std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "
               << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
     result = sim.RunManeuver(*maneuver, params, values, run);
@@ -109,6 +121,7 @@ void RunSimulate(const SimulateOptions& o) {
                 {"duration_s", data.duration()},
                 {"run_in_s", result.run_in_s}});
   if (!result.maneuver.is_null()) truth["maneuver"] = result.maneuver;
+  if (o.cruise) truth["cruise"] = *o.cruise;
 
   WriteDatasetCsv(o.out, data);
   WriteJsonFile(TruthPath(o.out), truth);
@@ -146,6 +159,9 @@ void AddSimulateCommand(CLI::App& app) {
                   "JSON of parameter overrides (name: value), or a truth/model file's "
                   "\"parameters\"");
   cmd->add_option("--duration", o->duration, "Maneuver length [s] (0: the maneuver's default)");
+  cmd->add_option("--cruise", o->cruise,
+                  "Thrust command of the approach and cruise (default: the vessel's, e.g. "
+                  "kvlcc2 rev 91.7)");
   cmd->add_option("--dt", o->dt, "Largest integration step [s]");
   cmd->add_option("--rate", o->rate_hz, "Output and control rate [Hz] (maneuvers)");
   cmd->add_option("--integrator", o->integrator, "rk4 (fixed step) or dopri (adaptive 5(4))")

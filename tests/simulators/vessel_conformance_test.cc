@@ -13,6 +13,7 @@
 #include "simulators/eb2dof.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
+#include "simulators/kvlcc2.h"
 #include "simulators/odin_hs.h"
 #include "simulators/rk4.h"
 
@@ -41,10 +42,12 @@ class VesselConformanceTest : public ::testing::Test {
       u[i] = 0.5 * (V::kInputMin[i] + V::kInputMax[i]) +
              0.3 * d(rng) * (V::kInputMax[i] - V::kInputMin[i]);
     if (V::kName != std::string_view("msd")) x[3] += 5.0;  // a forward speed
+    // A rate of turn the hull can have: r L / U of order one (a 320 m tanker turns slowly).
+    if constexpr (requires { V::kLength; }) x[V::kRateState] *= std::min(1.0, 20.0 / V::kLength);
   }
 };
 
-using Vessels = ::testing::Types<Msd, Odin3Dof, Eb2Dof, OdinHs>;
+using Vessels = ::testing::Types<Msd, Odin3Dof, Eb2Dof, OdinHs, Kvlcc2>;
 TYPED_TEST_SUITE(VesselConformanceTest, Vessels);
 
 // The value part of a Jet evaluation is the double evaluation, and the Jet's parameter

@@ -1,0 +1,245 @@
+// KVLCC2 tanker, vessel `kvlcc2`: the MMG standard model of Yasukawa & Yoshimura (2015,
+// "Introduction of MMG standard method for ship maneuvering predictions", J Mar Sci Technol 20,
+// 37-52), with its published KVLCC2 hull, propeller and rudder coefficients, at full scale
+// (Lpp 320 m). Sources and measured behaviour: docs/vessels/kvlcc2.md. SI units, radians.
+//
+// States  north, east [m], psi [rad], u, v [m/s] (surge, and sway at midship), r [rad/s].
+// Inputs  delta [rad] (rudder angle, ITTC sign as in the MARIN files: positive is trailing edge
+//         to port and turns the ship to port), rev [rev/min] (propeller). The MMG equations
+//         below use the Japanese sign, delta_MMG = -delta (positive turns to starboard).
+// Motion  about midship, centre of gravity x_G ahead of it (Yasukawa & Yoshimura eq. 4):
+//   (m + m_x) u' - (m + m_y) v r - x_G m r^2           = X_H + X_R + X_P
+//   (m + m_y) v' + x_G m r' + (m + m_x) u r            = Y_H + Y_R
+//   (I_zG + x_G^2 m + J_z) r' + x_G m v' + x_G m u r   = N_H + N_R
+//   with m_x = m'_x q L^2 d,  m_y = m'_y q L^2 d,  J_z = J'_z q L^4 d,  q = rho / 2.
+// Hull    U = sqrt(u^2 + v^2), v' = v / U, r' = r L / U:
+//   X_H = q L d U^2 (-R'_0 + X'_vv v'^2 + X'_vr v' r' + X'_rr r'^2 + X'_vvvv v'^4)
+//   Y_H = q L d U^2 (Y'_v v' + Y'_r r' + Y'_vvv v'^3 + Y'_vvr v'^2 r' + Y'_vrr v' r'^2 + Y'_rrr
+//   r'^3) N_H = q L^2 d U^2 (N'_v v' + ... + N'_rrr r'^3)   (same six terms)
+// Propeller  n = rev / 60, beta = atan2(-v, u), beta_P = beta - x'_P r',
+//   w_P = 1 - (1 - w_P0)(1 + (1 - exp(-C_1 |beta_P|))(C_2 - 1)),  C_2 = C_2+ (beta_P > 0) or C_2-,
+//   J_P = u (1 - w_P) / (n D_P),  K_T = k_0 + k_1 J_P + k_2 J_P^2,
+//   X_P = (1 - t_P) rho n^2 D_P^4 K_T.
+// Rudder  u_R = eps u (1 - w_P) sqrt(eta (1 + kappa (sqrt(1 + 8 K_T / (pi J_P^2)) - 1))^2 + 1 -
+// eta),
+//   eta = D_P / H_R,  beta_R = beta - l'_R r',  v_R = U gamma_R beta_R
+//   (gamma_R = gamma_R- for beta_R < 0, gamma_R+ otherwise),  alpha_R = delta - atan2(v_R, u_R),
+//   F_N = q A_R (u_R^2 + v_R^2) f_alpha sin(alpha_R),
+//   X_R = -(1 - t_R) F_N sin(delta),  Y_R = -(1 + a_H) F_N cos(delta),
+//   N_R = -(x_R + a_H x_H) F_N cos(delta),  x_R = x'_R L,  x_H = x'_H L.
+// Current  the hydrodynamics see nu_r = nu - R(psi)^T [current_north, current_east, 0]; the
+//   equations above give nu_r', and u' = u_r' + r v_c, v' = v_r' - r u_c (as odin-hs).
+// Inertia parameters (m, I_zG, m'_x, m'_y, J'_z) scale the whole mass matrix together; damping
+// parameters are the hull's twenty coefficients; propeller and rudder coefficients are "other".
+#pragma once
+
+#include <cmath>
+#include <string_view>
+
+#include "simulators/scalar.h"
+#include "simulators/vessel.h"
+
+namespace usvid {
+
+struct Kvlcc2 {
+  static constexpr std::string_view kName = "kvlcc2";
+  static constexpr int kStates = 6, kInputs = 2, kParams = 37;
+  static constexpr std::array<std::string_view, kStates> kStateNames = {"north", "east", "psi",
+                                                                        "u",     "v",    "r"};
+  static constexpr std::array<std::string_view, kInputs> kInputNames = {"delta", "rev"};
+  // Rudder hard over at 35 deg; the propeller turns ahead only, up to 150 rpm (the MARIN
+  // free-running tests ran at 91.7 rpm, full scale).
+  static constexpr std::array<double, kInputs> kInputMin = {-0.6109, 0.0};
+  static constexpr std::array<double, kInputs> kInputMax = {0.6109, 150.0};
+  static constexpr std::array<double, kInputs> kNeutralInput = {0.0, 91.7};
+  static constexpr int kYawInput = 0, kThrustInput = 1, kRateState = 5, kHeadingState = 2;
+  static constexpr double kYawSign = -1.0;  // positive delta turns to port (ITTC)
+  // Steering gear of the MARIN tests, 2.32 deg/s at full scale (SIMMAN 2020 case 1.2) [rad/s]:
+  // zig-zag and turning maneuvers move the rudder no faster (the inputs themselves are the rudder
+  // angle).
+  static constexpr double kYawRateLimit = 2.32 * 3.14159265358979323846 / 180.0;
+
+  // Fixed particulars, full scale (Yasukawa & Yoshimura 2015 table 1).
+  static constexpr double kRho = 1025.0;              // [kg/m^3]
+  static constexpr double kLength = 320.0;            // [m] Lpp
+  static constexpr double kDraft = 20.8;              // [m] d
+  static constexpr double kXG = 11.2;                 // [m] centre of gravity ahead of midship
+  static constexpr double kPropellerDiameter = 9.86;  // [m] D_P
+  static constexpr double kRudderArea = 112.5;        // [m^2] A_R
+  static constexpr double kRudderSpan = 15.80;        // [m] H_R
+  static constexpr double kXPropeller = -0.48;        // [-] x'_P
+  static constexpr double kXRudder = -0.5;            // [-] x'_R
+  static constexpr double kRunInS = 7200.0;  // [s] from rest to steady speed (closed_loop.h)
+  static constexpr double kEps = 1e-6;       // [m/s] keeps U and J_P finite at rest
+
+  // clang-format off
+  static constexpr std::array<std::string_view, kParams> kParamNames = {
+      "m", "I_zG", "m_x", "m_y", "J_z",
+      "R_0", "X_vv", "X_vr", "X_rr", "X_vvvv",
+      "Y_v", "Y_r", "Y_vvv", "Y_vvr", "Y_vrr", "Y_rrr",
+      "N_v", "N_r", "N_vvv", "N_vvr", "N_vrr", "N_rrr",
+      "t_P", "w_P0", "k_0", "k_1", "k_2", "C_1", "C_2_pos", "C_2_neg",
+      "t_R", "a_H", "x_H", "gamma_R_neg", "gamma_R_pos", "l_R", "epsilon", /* 37 */};
+  // clang-format on
+  static constexpr std::array<double, kParams> kDefaultParams = {
+      // --- inertia (table 1, 2): m = rho * 312600 m^3; I_zG = m (0.25 Lpp)^2 ---
+      320415000.0, 2.0506560e12, 0.022, 0.223, 0.011,
+      // --- hull resistance and surge (table 3, non-dimensional) ---
+      0.022, -0.040, 0.002, 0.011, 0.771,
+      // --- hull sway ---
+      -0.315, 0.083, -1.607, 0.379, -0.391, 0.008,
+      // --- hull yaw ---
+      -0.137, -0.049, -0.030, -0.294, 0.055, -0.013,
+      // --- propeller (table 4): thrust deduction, wake, K_T polynomial, wake in drift ---
+      0.220, 0.40, 0.2931, -0.2753, -0.1385, 2.0, 1.6, 1.1,
+      // --- rudder (table 5); f_alpha is kFAlpha below, kappa kKappa ---
+      0.387, 0.312, -0.464, 0.395, 0.640, -0.710, 1.09};
+  static constexpr double kKappa = 0.50;    // [-] propeller slipstream on the rudder (table 5)
+  static constexpr double kFAlpha = 2.747;  // [-] rudder lift slope, aspect ratio 1.827 (table 5)
+  static constexpr std::array<ParamGroup, kParams> kParamGroups = [] {
+    std::array<ParamGroup, kParams> g{};
+    for (int i = 0; i < kParams; ++i)
+      g[i] = i < 5 ? ParamGroup::kInertia : i < 22 ? ParamGroup::kDamping : ParamGroup::kOther;
+    return g;
+  }();
+  // Parameter indices, in kParamNames order.
+  enum Param {
+    kM,
+    kIzG,
+    kMx,
+    kMy,
+    kJz,
+    kR0,
+    kXvv,
+    kXvr,
+    kXrr,
+    kXvvvv,
+    kYv,
+    kYr,
+    kYvvv,
+    kYvvr,
+    kYvrr,
+    kYrrr,
+    kNv,
+    kNr,
+    kNvvv,
+    kNvvr,
+    kNvrr,
+    kNrrr,
+    kTP,
+    kWP0,
+    kK0,
+    kK1,
+    kK2,
+    kC1,
+    kC2Pos,
+    kC2Neg,
+    kTR,
+    kAH,
+    kXH,
+    kGammaRNeg,
+    kGammaRPos,
+    kLR,
+    kEpsilon
+  };
+
+  // Surge, sway and yaw forces [N, N, N m] of hull, propeller and rudder on relative velocities;
+  // delta in the MMG sign (positive turns to starboard).
+  template <typename T>
+  static void Forces(const T& u, const T& v, const T& r, const T& delta, const T& rev, const T* p,
+                     T* f) {
+    using std::abs;
+    using std::atan2;
+    using std::cos;
+    using std::exp;
+    using std::sin;
+    using std::sqrt;
+    const double L = kLength, d = kDraft, q = 0.5 * kRho;
+    const T U = sqrt(u * u + v * v + T(kEps * kEps));
+    const T vn = v / U, rn = r * L / U;
+    const T U2 = U * U;
+    const T vn2 = vn * vn, rn2 = rn * rn;
+    const T X_H =
+        q * L * d * U2 *
+        (-p[kR0] + p[kXvv] * vn2 + p[kXvr] * vn * rn + p[kXrr] * rn2 + p[kXvvvv] * vn2 * vn2);
+    const T Y_H = q * L * d * U2 *
+                  (p[kYv] * vn + p[kYr] * rn + p[kYvvv] * vn2 * vn + p[kYvvr] * vn2 * rn +
+                   p[kYvrr] * vn * rn2 + p[kYrrr] * rn2 * rn);
+    const T N_H = q * L * L * d * U2 *
+                  (p[kNv] * vn + p[kNr] * rn + p[kNvvv] * vn2 * vn + p[kNvvr] * vn2 * rn +
+                   p[kNvrr] * vn * rn2 + p[kNrrr] * rn2 * rn);
+
+    // Propeller.
+    const double D = kPropellerDiameter;
+    const T n = rev / 60.0;
+    const T beta = atan2(-v, u);
+    const T beta_p = beta - kXPropeller * rn;
+    const T c2 = ValueOf(beta_p) > 0 ? p[kC2Pos] : p[kC2Neg];
+    const T w_p = 1.0 - (1.0 - p[kWP0]) * (1.0 + (1.0 - exp(-p[kC1] * abs(beta_p))) * (c2 - 1.0));
+    const T u_p = u * (1.0 - w_p);
+    const T nd = n * D + T(kEps);
+    const T J = u_p / nd;
+    const T K_T = p[kK0] + p[kK1] * J + p[kK2] * J * J;
+    const T X_P = (1.0 - p[kTP]) * kRho * n * n * D * D * D * D * K_T;
+
+    // Rudder. 8 K_T / (pi J^2) written as 8 K_T (n D)^2 / (pi u_p^2), kept >= -1.
+    const double eta = D / kRudderSpan;
+    T load = 8.0 * K_T * nd * nd / (3.14159265358979323846 * (u_p * u_p + T(kEps * kEps)));
+    if (ValueOf(load) < -1.0) load = T(-1.0);
+    const T slip = 1.0 + kKappa * (sqrt(1.0 + load + T(kEps)) - 1.0);
+    const T u_r = p[kEpsilon] * u_p * sqrt(eta * slip * slip + (1.0 - eta));
+    const T beta_r = beta - p[kLR] * rn;
+    const T gamma = ValueOf(beta_r) < 0 ? p[kGammaRNeg] : p[kGammaRPos];
+    const T v_r = U * gamma * beta_r;
+    const T alpha = delta - atan2(v_r, u_r);
+    const T F_N = q * kRudderArea * (u_r * u_r + v_r * v_r) * kFAlpha * sin(alpha);
+    const T X_R = -(1.0 - p[kTR]) * F_N * sin(delta);
+    const T Y_R = -(1.0 + p[kAH]) * F_N * cos(delta);
+    const T N_R = -(kXRudder * L + p[kAH] * p[kXH] * L) * F_N * cos(delta);
+
+    f[0] = X_H + X_P + X_R;
+    f[1] = Y_H + Y_R;
+    f[2] = N_H + N_R;
+  }
+
+  template <typename T>
+  static void Derivative(const T* x, const T* in, const T* p, const Environment<T>& env, T* dx) {
+    using std::cos;
+    using std::sin;
+    const T& psi = x[2];
+    const T& u = x[3];
+    const T& v = x[4];
+    const T& r = x[5];
+    const T c = cos(psi);
+    const T s = sin(psi);
+    const T u_c = c * env.current_north + s * env.current_east;
+    const T v_c = -s * env.current_north + c * env.current_east;
+    const T u_r = u - u_c;
+    const T v_r = v - v_c;
+    T f[3];
+    Forces(u_r, v_r, r, T(-in[0]), in[1], p, f);
+
+    const double L = kLength, d = kDraft, q = 0.5 * kRho;
+    const T& m = p[kM];
+    const T m11 = m + p[kMx] * q * L * L * d;
+    const T m22 = m + p[kMy] * q * L * L * d;
+    const T m33 = p[kIzG] + kXG * kXG * m + p[kJz] * q * L * L * L * L * d;
+    const T mx = kXG * m;
+    // [m22 mx; mx m33] [v_r'; r'] = [Y - m11 u_r r; N - mx u_r r].
+    const T b1 = f[1] - m11 * u_r * r;
+    const T b2 = f[2] - mx * u_r * r;
+    const T det = m22 * m33 - mx * mx;
+    const T dv_r = (m33 * b1 - mx * b2) / det;
+    const T dr = (m22 * b2 - mx * b1) / det;
+    const T du_r = (f[0] + m22 * v_r * r + mx * r * r) / m11;
+
+    dx[0] = c * u - s * v;
+    dx[1] = s * u + c * v;
+    dx[2] = r;
+    dx[3] = du_r + r * v_c;
+    dx[4] = dv_r - r * u_c;
+    dx[5] = dr;
+  }
+};
+
+}  // namespace usvid
