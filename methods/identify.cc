@@ -27,29 +27,34 @@ void Log(const Logger& log, const std::string& line) {
 }
 
 // fossen-ceres: a parametric Fossen 3-DOF model (odin3dof's, or the same driven through the
-// waterjet input map), equation error then multiple shooting.
+// waterjet or the rudder-propeller input map), equation error then multiple shooting.
 template <typename Model>
 nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
                               const PreparedData& prepared, const Logger& log) {
+  constexpr bool kOdin3Dof = std::is_same_v<Model, fossen::Odin3DofModel>;
   constexpr bool kWaterjet = std::is_same_v<Model, fossen::WaterjetModel>;
   fossen::FossenOptions fo;
   fo.segment_s = o.segment_s;
   fo.robust = o.robust;
   fo.threads = o.threads > 0 ? o.threads : 1;
   auto fit_equation = [&] {
-    if constexpr (kWaterjet)
+    if constexpr (kOdin3Dof)
+      return fossen::FitEquationError(prepared, fo);
+    else if constexpr (kWaterjet)
       return fossen::FitWaterjetEquationError(prepared, fo);
     else
-      return fossen::FitEquationError(prepared, fo);
+      return fossen::FitRudderEquationError(prepared, fo);
   };
   const auto eq = fit_equation();
   Log(log, "equation-error fit: " + eq.termination);
   auto fit = eq;
   if (o.fossen_mode == "simulation") {
-    if constexpr (kWaterjet)
+    if constexpr (kOdin3Dof)
+      fit = fossen::FitSimulationError(prepared, eq.params, fo);
+    else if constexpr (kWaterjet)
       fit = fossen::FitWaterjetSimulationError(prepared, eq.params, fo);
     else
-      fit = fossen::FitSimulationError(prepared, eq.params, fo);
+      fit = fossen::FitRudderSimulationError(prepared, eq.params, fo);
     Log(log, "simulation-error fit (multiple shooting): " + fit.termination);
   }
   nlohmann::json params = nlohmann::json::object(), sd = nlohmann::json::object(),
@@ -61,13 +66,16 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
     eq_params[name] = eq.params[i];
   }
   nlohmann::json equations;
-  if constexpr (kWaterjet)
+  if constexpr (kOdin3Dof)
+    equations = fossen::Equations(fit.params);
+  else if constexpr (kWaterjet)
     equations = fossen::WaterjetEquations(fit.params);
   else
-    equations = fossen::Equations(fit.params);
+    equations = fossen::RudderEquations(fit.params);
   nlohmann::json refined = nullptr;
-  if (kWaterjet && prepared.delay_estimate) {
-    Log(log, "delay not refined: the waterjet model is no registered vessel");
+  if (!kOdin3Dof && prepared.delay_estimate) {
+    Log(log,
+        "delay not refined: the " + std::string(Model::kName) + " model is no registered vessel");
   } else if (prepared.delay_estimate) {
     // The delay to a fraction of a sample: NLopt (DIRECT-L, then Sbplx) on the segmented
     // simulation error of the fitted model on the data as recorded.
@@ -151,13 +159,15 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
       throw InputError("--method eb-lr: needs --states SPEED,RATE and --inputs THRUST,YAW");
   }
   const std::vector<std::string> kForces = {"tau_x", "tau_y", "tau_n"},
-                                 kWaterjets = {"throttle", "nozzle", "bucket"};
-  if (o.method == "fossen-ceres" && (states != std::vector<std::string>{"u", "v", "r"} ||
-                                     (inputs != kForces && inputs != kWaterjets)))
+                                 kWaterjets = {"throttle", "nozzle", "bucket"},
+                                 kRudder = {"delta", "rev"};
+  if (o.method == "fossen-ceres" &&
+      (states != std::vector<std::string>{"u", "v", "r"} ||
+       (inputs != kForces && inputs != kWaterjets && inputs != kRudder)))
     throw InputError(
         "--method fossen-ceres: fits the Fossen 3-DOF model, states u,v,r with inputs "
-        "tau_x,tau_y,tau_n (--vessel odin3dof) or throttle,nozzle,bucket through a waterjet map "
-        "(--vessel odin-hs)");
+        "tau_x,tau_y,tau_n (--vessel odin3dof), throttle,nozzle,bucket through a waterjet map "
+        "(--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel kvlcc2)");
   if (o.population < 4 || o.generations < 1 || o.max_depth < 2 || o.max_depth > 17)
     throw InputError("identify: --population >= 4, --generations >= 1, --max-depth in [2, 17]");
   if (!(o.ols_threshold >= 0 && o.ols_threshold < 1))
@@ -193,9 +203,12 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     model["equations"] = id.equations;
     model["eb_lr"] = id.details;
   } else if (o.method == "fossen-ceres") {
-    model.update(inputs == kWaterjets
-                     ? IdentifyFossen<fossen::WaterjetModel>(o, data, prepared, log)
-                     : IdentifyFossen<fossen::Odin3DofModel>(o, data, prepared, log));
+    if (inputs == kWaterjets)
+      model.update(IdentifyFossen<fossen::WaterjetModel>(o, data, prepared, log));
+    else if (inputs == kRudder)
+      model.update(IdentifyFossen<fossen::RudderModel>(o, data, prepared, log));
+    else
+      model.update(IdentifyFossen<fossen::Odin3DofModel>(o, data, prepared, log));
   } else if (o.method == "sindy") {
     const sindy::SindyIdentification id =
         sindy::IdentifyWithSindy(prepared, states, variables, inputs, sindy::SindyOptions{});

@@ -20,18 +20,42 @@ double Sd(const Eigen::VectorXd& v) {
   return sd > 0 ? sd : 1.0;
 }
 
+// What the solver sees of parameter i: p_i / ParamScale(i) (1 unless the model normalises its
+// parameters, when they span many decades: Ceres' Jacobi scaling 1 / (1 + |J_i|) does not lift
+// a column whose entries are tiny).
+template <typename Model>
+std::array<double, Model::kParams> ParamScales(const std::array<double, Model::kParams>& start) {
+  std::array<double, Model::kParams> s;
+  for (int i = 0; i < Model::kParams; ++i)
+    s[i] = Model::kNormaliseParams && start[i] != 0.0 ? std::abs(start[i]) : 1.0;
+  return s;
+}
+
+// p = theta * scale, in the functors' scalar type.
+template <int N, typename T>
+std::array<T, N> Unscale(const T* theta, const std::array<double, N>& scale) {
+  std::array<T, N> p;
+  for (int i = 0; i < N; ++i) p[i] = theta[i] * scale[i];
+  return p;
+}
+
 // One sample's equation error, normalised: M nu' + C(nu) nu + D(nu) nu - tau(in; p) (forces), or
 // nu' - M^-1 (tau(in; p) - C(nu) nu - D(nu) nu) (accelerations) when tau is not measured.
 template <typename Model>
 struct EquationResidual {
   double u, v, r, du, dv, dr;
-  std::array<double, 3> in, scale;
+  std::array<double, Model::kInputs> in;
+  std::array<double, 3> scale;
+  std::array<double, Model::kParams> param_scale;
   template <typename T>
-  bool operator()(const T* p, T* res) const {
+  bool operator()(const T* theta, T* res) const {
     using std::abs;
+    const std::array<T, Model::kParams> pa = Unscale<Model::kParams>(theta, param_scale);
+    const T* p = pa.data();
     T tau[3];
-    const T input[3] = {T(in[0]), T(in[1]), T(in[2])};
-    Model::Forces(p, input, tau);
+    std::array<T, Model::kInputs> input;
+    for (int i = 0; i < Model::kInputs; ++i) input[i] = T(in[i]);
+    Model::Forces(p, input.data(), tau);
     // C(nu) nu + D(nu) nu.
     const T h[3] = {-p[1] * v * r + (p[3] + p[4] * abs(u)) * u,
                     p[0] * u * r + (p[5] + p[6] * abs(v)) * v,
@@ -54,12 +78,15 @@ struct SegmentResidual {
   Eigen::MatrixXd measured;  // rows x 3 (u, v, r)
   std::array<double, 3> scale;
   double continuity;  // 0 for the last segment
+  std::array<double, Model::kParams> param_scale;
 
   int Residuals() const { return static_cast<int>((times.size() - 1) * 3 + 3); }
 
   template <typename T>
-  bool operator()(const T* p, const T* x0, const T* next, T* res) const {
+  bool operator()(const T* theta, const T* x0, const T* next, T* res) const {
     constexpr int N = Plant<Model>::kStates;
+    const std::array<T, Model::kParams> pa = Unscale<Model::kParams>(theta, param_scale);
+    const T* p = pa.data();
     std::array<T, N> start;
     start.fill(T(0));
     start[3] = x0[0];
@@ -90,24 +117,26 @@ struct SegmentResidual {
   }
 };
 
-// Positive lower bounds; the scale-fixing parameter (if any) held constant.
+// Positive lower bounds (but for a signed parameter); the scale-fixing parameter (if any) held
+// constant.
 template <typename Model>
 void Bound(ceres::Problem& problem, double* p) {
-  for (int i = 0; i < Model::kParams; ++i) problem.SetParameterLowerBound(p, i, 1e-6);
+  for (int i = 0; i < Model::kParams; ++i)
+    if (i != Model::kSignedParam) problem.SetParameterLowerBound(p, i, 1e-6);
   if constexpr (Model::kFixedParam >= 0)
     problem.SetManifold(p, new ceres::SubsetManifold(Model::kParams, {Model::kFixedParam}));
 }
 
 template <typename Model>
 void Solve(ceres::Problem& problem, const FossenOptions& o, double* p,
-           BasicFossenFit<Model::kParams>& fit) {
+           const std::array<double, Model::kParams>& scale, BasicFossenFit<Model::kParams>& fit) {
   constexpr int kParams = Model::kParams;
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   so.max_num_iterations = o.max_iterations;
   so.num_threads = o.threads;
   so.function_tolerance = o.function_tolerance;
-  so.parameter_tolerance = 1e-12;
+  so.parameter_tolerance = Model::kParameterTolerance;
   so.gradient_tolerance = 1e-14;
   ceres::Solver::Summary summary;
   const auto start = std::chrono::steady_clock::now();
@@ -119,7 +148,7 @@ void Solve(ceres::Problem& problem, const FossenOptions& o, double* p,
   fit.initial_cost = summary.initial_cost;
   fit.final_cost = summary.final_cost;
   fit.iterations = static_cast<int>(summary.iterations.size());
-  std::copy(p, p + kParams, fit.params.begin());
+  for (int i = 0; i < kParams; ++i) fit.params[i] = p[i] * scale[i];
   ceres::Covariance::Options co;
   ceres::Covariance covariance(co);
   std::vector<std::pair<const double*, const double*>> blocks = {{p, p}};
@@ -129,7 +158,8 @@ void Solve(ceres::Problem& problem, const FossenOptions& o, double* p,
     // Scale by the residual variance per degree of freedom (the residuals are normalised).
     const double dof = std::max(1, summary.num_residuals - summary.num_effective_parameters);
     const double s2 = 2.0 * summary.final_cost / dof;
-    for (int i = 0; i < kParams; ++i) fit.sd[i] = std::sqrt(std::max(0.0, c[i * kParams + i] * s2));
+    for (int i = 0; i < kParams; ++i)
+      fit.sd[i] = scale[i] * std::sqrt(std::max(0.0, c[i * kParams + i] * s2));
     fit.covariance_ok = true;
   }
 }
@@ -155,32 +185,30 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
   constexpr int kParams = Model::kParams;
   Require<Model>(prepared);
   const Dataset& d = prepared.data;
-  std::array<double, kParams> p = Model::kStart;
+  const std::array<double, kParams> param_scale = ParamScales<Model>(Model::kStart);
+  std::array<double, kParams> p;
+  for (int i = 0; i < kParams; ++i) p[i] = Model::kStart[i] / param_scale[i];
   ceres::Problem problem;
-  std::array<std::string, 3> in;
-  for (int i = 0; i < 3; ++i) in[i] = std::string(Model::kInputNames[i]);
+  std::array<std::string, Model::kInputs> in;
+  for (int i = 0; i < Model::kInputs; ++i) in[i] = std::string(Model::kInputNames[i]);
   std::array<double, 3> scale;
   for (int i = 0; i < 3; ++i) {
-    const std::string normaliser =
-        Model::kAccelerationResidual ? std::string(Odin3Dof::kStateNames[3 + i]) + "_dot" : in[i];
+    std::string normaliser = std::string(Odin3Dof::kStateNames[3 + i]) + "_dot";
+    if constexpr (!Model::kAccelerationResidual) normaliser = in[i];  // the forces themselves
     scale[i] = Sd(d[normaliser]);
   }
   ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
   for (Eigen::Index k = 0; k < d.rows(); ++k) {
+    std::array<double, Model::kInputs> input;
+    for (int i = 0; i < Model::kInputs; ++i) input[i] = d[in[i]](k);
     auto* cost = new ceres::AutoDiffCostFunction<EquationResidual<Model>, 3, kParams>(
-        new EquationResidual<Model>{d["u"](k),
-                                    d["v"](k),
-                                    d["r"](k),
-                                    d["u_dot"](k),
-                                    d["v_dot"](k),
-                                    d["r_dot"](k),
-                                    {d[in[0]](k), d[in[1]](k), d[in[2]](k)},
-                                    scale});
+        new EquationResidual<Model>{d["u"](k), d["v"](k), d["r"](k), d["u_dot"](k), d["v_dot"](k),
+                                    d["r_dot"](k), input, scale, param_scale});
     problem.AddResidualBlock(cost, loss, p.data());
   }
   Bound<Model>(problem, p.data());
   BasicFossenFit<kParams> fit;
-  Solve<Model>(problem, options, p.data(), fit);
+  Solve<Model>(problem, options, p.data(), param_scale, fit);
   return fit;
 }
 
@@ -192,11 +220,12 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
   Require<Model>(prepared);
   const Dataset& d = prepared.data;
   if (!(options.segment_s > 0)) throw InputError("fossen-ceres: segment length must be positive");
-  InputTrack track(3);
-  std::array<std::string, 3> in;
-  for (int i = 0; i < 3; ++i) in[i] = std::string(Model::kInputNames[i]);
+  InputTrack track(Model::kInputs);
+  std::array<std::string, Model::kInputs> in;
+  for (int i = 0; i < Model::kInputs; ++i) in[i] = std::string(Model::kInputNames[i]);
   for (Eigen::Index k = 0; k < d.rows(); ++k) {
-    const double u[3] = {d[in[0]](k), d[in[1]](k), d[in[2]](k)};
+    std::array<double, Model::kInputs> u;
+    for (int i = 0; i < Model::kInputs; ++i) u[i] = d[in[i]](k);
     track.Append(d.t()(k), u);
   }
   const std::array<double, 3> scale = {Sd(d["u_raw"]), Sd(d["v_raw"]), Sd(d["r_raw"])};
@@ -213,7 +242,9 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
     const Eigen::Index row = std::min<Eigen::Index>(bounds[std::min(j, segments)], d.rows() - 1);
     x0[j] = {d["u"](row), d["v"](row), d["r"](row)};  // smoothed states: good starts
   }
-  std::array<double, kParams> p = start;
+  const std::array<double, kParams> param_scale = ParamScales<Model>(start);
+  std::array<double, kParams> p;
+  for (int i = 0; i < kParams; ++i) p[i] = start[i] / param_scale[i];
   ceres::Problem problem;
   ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
   for (size_t j = 0; j < segments; ++j) {
@@ -225,6 +256,7 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
       seg->measured.row(k - bounds[j]) << d["u_raw"](k), d["v_raw"](k), d["r_raw"](k);
     seg->scale = scale;
     seg->continuity = j + 1 < segments ? options.continuity_weight : 0.0;
+    seg->param_scale = param_scale;
     const int residuals = seg->Residuals();
     auto* cost =
         new ceres::AutoDiffCostFunction<SegmentResidual<Model>, ceres::DYNAMIC, kParams, 3, 3>(
@@ -234,7 +266,7 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
   problem.SetParameterBlockConstant(x0[segments].data());
   Bound<Model>(problem, p.data());
   BasicFossenFit<kParams> fit;
-  Solve<Model>(problem, options, p.data(), fit);
+  Solve<Model>(problem, options, p.data(), param_scale, fit);
   return fit;
 }
 
@@ -277,6 +309,20 @@ WaterjetFit FitWaterjetSimulationError(const PreparedData& prepared,
 
 nlohmann::json WaterjetEquations(const std::array<double, 13>& params) {
   return EquationsOf<WaterjetModel>(params);
+}
+
+RudderFit FitRudderEquationError(const PreparedData& prepared, const FossenOptions& options) {
+  return FitEquationErrorOf<RudderModel>(prepared, options);
+}
+
+RudderFit FitRudderSimulationError(const PreparedData& prepared,
+                                   const std::array<double, 13>& start,
+                                   const FossenOptions& options) {
+  return FitSimulationErrorOf<RudderModel>(prepared, start, options);
+}
+
+nlohmann::json RudderEquations(const std::array<double, 13>& params) {
+  return EquationsOf<RudderModel>(params);
 }
 
 }  // namespace usvid::fossen

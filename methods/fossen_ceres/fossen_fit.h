@@ -1,7 +1,8 @@
 // `fossen-ceres`: the parametric Fossen 3-DOF model of odin3dof (domain.md section 2.2: M, C(nu)
 // from M, D(nu) with linear and quadratic terms; 10 parameters m11 m22 m33 Xu Xuu Yv Yvv Nv Nr
 // Nrr), and the same model driven through a waterjet input map (13 parameters, inputs throttle,
-// nozzle, bucket; see fossen_models.h), fitted with Ceres in two modes:
+// nozzle, bucket; see fossen_models.h) or a rudder-propeller map (inputs delta, rev), fitted with
+// Ceres in two modes:
 //  - equation error: on estimated derivatives, residual_k = (M nu' + C(nu) nu + D(nu) nu - tau)_k
 //    per sample, each force or moment divided by its input's standard deviation; for the
 //    waterjet model (tau not measured) in accelerations, nu'_k - (M^-1 (tau - C nu - D nu))_k,
@@ -51,6 +52,7 @@ struct BasicFossenFit {
 };
 using FossenFit = BasicFossenFit<10>;    // odin3dof: m11 .. Nrr
 using WaterjetFit = BasicFossenFit<13>;  // odin-hs: m11 .. Nrr, Tx, Ty, Tn
+using RudderFit = BasicFossenFit<13>;    // kvlcc2: m11 .. Nrr, Tx, Ty, Tn
 
 // prepared: from Preprocess with states u, v, r (smoothed, "_dot" derivatives) and inputs
 // tau_x, tau_y, tau_n; raw states "<s>_raw" are what the simulation error compares against.
@@ -69,5 +71,12 @@ WaterjetFit FitWaterjetSimulationError(const PreparedData& prepared,
                                        const std::array<double, 13>& start,
                                        const FossenOptions& options);
 nlohmann::json WaterjetEquations(const std::array<double, 13>& params);
+
+// The rudder-propeller model (kvlcc2): states u, v, r and inputs delta, rev; m11 held as above.
+RudderFit FitRudderEquationError(const PreparedData& prepared, const FossenOptions& options);
+RudderFit FitRudderSimulationError(const PreparedData& prepared,
+                                   const std::array<double, 13>& start,
+                                   const FossenOptions& options);
+nlohmann::json RudderEquations(const std::array<double, 13>& params);
 
 }  // namespace usvid::fossen

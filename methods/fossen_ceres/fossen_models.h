@@ -8,7 +8,13 @@
 //      T = (0.2 + 0.8 throttle)^2       (thrust ~ rpm^2, rpm / 2000 = 0.2 + 0.8 throttle),
 //      tau_x = Tx T bucket,  tau_y = -Ty T nozzle,  tau_n = Tn T nozzle
 //    (positive nozzle turns to starboard, r > 0). It has no actuator dynamics. Multiplying all
-//    13 parameters by one factor leaves the model unchanged, so fits hold m11 at its start.
+//    13 parameters by one factor leaves the model unchanged, so fits hold m11 at its start;
+//  - RudderModel: inputs delta [rad] (ITTC sign: positive turns to port) and rev [rev/min] of a
+//    single-screw ship with its rudder in the propeller race (kvlcc2), 13 parameters:
+//      n = rev / 60,  tau_x = Tx n^2,  tau_y = Ty n^2 delta,  tau_n = -Tn n^2 delta
+//    (thrust and the rudder's inflow both grow like n^2 at a given advance ratio). A ship's
+//    Munk moment (m22 - m11) u v outweighs its hull's yaw damping in sway, so Nv may be negative
+//    (kSignedParam); m11 is held as for the waterjet model.
 // Each model is also a Vessel (states north, east, psi, u, v, r) so that the multiple-shooting
 // fit simulates it with the templated plant; kStart are the fits' starting values.
 #pragma once
@@ -25,7 +31,11 @@ namespace usvid::fossen {
 // Members shared by both models: the states, the vessel-concept constants, the dynamics.
 template <typename Model>
 struct FossenModelBase {
-  static constexpr int kStates = 6, kInputs = 3;
+  static constexpr int kStates = 6;
+  static constexpr int kSignedParam = -1;  // the parameter that may take either sign (-1: none)
+  // Ceres stops when a step is this small relative to the parameter vector's norm.
+  static constexpr double kParameterTolerance = 1e-12;
+  static constexpr bool kNormaliseParams = false;  // fit p_i / |start_i| instead of p_i
   static constexpr std::array<std::string_view, kStates> kStateNames = Odin3Dof::kStateNames;
   static constexpr int kThrustInput = 0, kRateState = 5, kHeadingState = 2;
 
@@ -40,6 +50,7 @@ struct FossenModelBase {
 
 struct Odin3DofModel : FossenModelBase<Odin3DofModel> {
   static constexpr std::string_view kName = "fossen-odin3dof";
+  static constexpr int kInputs = 3;
   static constexpr int kParams = Odin3Dof::kParams, kYawInput = Odin3Dof::kYawInput;
   static constexpr bool kAccelerationResidual = false;  // tau is measured: residual in forces
   static constexpr int kFixedParam = -1;                // none
@@ -61,6 +72,7 @@ struct Odin3DofModel : FossenModelBase<Odin3DofModel> {
 
 struct WaterjetModel : FossenModelBase<WaterjetModel> {
   static constexpr std::string_view kName = "fossen-waterjet";
+  static constexpr int kInputs = 3;
   static constexpr int kParams = 13, kYawInput = 1;
   static constexpr bool kAccelerationResidual = true;  // tau is not measured
   static constexpr int kFixedParam = 0;                // m11 fixes the scale
@@ -92,6 +104,41 @@ struct WaterjetModel : FossenModelBase<WaterjetModel> {
     if (i == 0) return FormatNumber(p[10]) + "*" + thrust + "*bucket";
     if (i == 1) return "-" + FormatNumber(p[11]) + "*" + thrust + "*nozzle";
     return FormatNumber(p[12]) + "*" + thrust + "*nozzle";
+  }
+};
+
+struct RudderModel : FossenModelBase<RudderModel> {
+  static constexpr std::string_view kName = "fossen-rudder";
+  static constexpr int kInputs = 2, kParams = 13, kYawInput = 0;
+  static constexpr bool kAccelerationResidual = true;  // tau is not measured
+  static constexpr int kFixedParam = 0;                // m11 fixes the scale
+  static constexpr int kSignedParam = 7;               // Nv
+  // Parameters span 1e4 to 1e13: fitted relative to their starts.
+  static constexpr bool kNormaliseParams = true;
+  static constexpr std::array<std::string_view, kInputs> kInputNames = {"delta", "rev"};
+  static constexpr std::array<std::string_view, kParams> kParamNames = WaterjetModel::kParamNames;
+  // KVLCC2 at 15.5 kn from its MMG coefficients (simulators/kvlcc2.h): m + m_x, m + m_y,
+  // I_zG + x_G^2 m + J_z; q L d U |Y'_v| and friends; thrust and rudder force at 91.7 rpm.
+  static constexpr std::array<double, kParams> kStart = {
+      3.44e8, 5.64e8, 3.29e12, 1e4, 7.5e4, 8.6e6, 1e7, -5e8, 1.4e11, 1e13, 1.4e6, 5.5e6, 1.1e9};
+  static constexpr std::array<double, kParams> kDefaultParams = kStart;
+  static constexpr std::array<ParamGroup, kParams> kParamGroups = WaterjetModel::kParamGroups;
+  static constexpr std::array<double, kInputs> kInputMin = {-0.6109, 0.0};
+  static constexpr std::array<double, kInputs> kInputMax = {0.6109, 150.0};
+
+  template <typename T>
+  static void Forces(const T* p, const T* in, T* tau) {
+    const T n = in[1] / 60.0;
+    const T n2 = n * n;
+    tau[0] = p[10] * n2;
+    tau[1] = p[11] * n2 * in[0];
+    tau[2] = -p[12] * n2 * in[0];
+  }
+  static std::string ForceText(int i, const double* p) {
+    const std::string n2 = "(rev/60)*(rev/60)";
+    if (i == 0) return FormatNumber(p[10]) + "*" + n2;
+    if (i == 1) return FormatNumber(p[11]) + "*" + n2 + "*delta";
+    return "-" + FormatNumber(p[12]) + "*" + n2 + "*delta";
   }
 };
 
