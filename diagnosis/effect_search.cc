@@ -46,6 +46,9 @@ EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input)
       s.smooth = false;
       add("fraction", 1.0, 0.05, 1.0);
       break;
+    case EffectKind::kSurgeForce:
+      add("acceleration", 0.0, -0.5, 0.5);
+      break;
   }
   return s;
 }

@@ -1,6 +1,6 @@
 // What is fitted for each effect of the catalogue: the free sizes, their contract names, bounds
 // and starting values, and how they set EffectValues<T>. Smooth effects (current, actuator lag,
-// biases, inertia, damping) are fitted by Ceres through the differentiable rollout; input delay
+// biases, inertia, damping, surge force) are fitted by Ceres through the differentiable rollout; input delay
 // and saturation move signals in time or clip them, so they are found by a bounded NLopt search.
 //   effect        sizes                         bounds
 //   input_delay   delay_s                       [0, 3] s
@@ -11,6 +11,7 @@
 //   inertia       scale                         [0.2, 5]
 //   damping       scale                         [0.2, 5]
 //   saturation    fraction                      [0.05, 1]
+//   surge_force   acceleration [m/s^2]          +-0.5
 #pragma once
 
 #include <string>
@@ -61,6 +62,9 @@ void ApplySizes(EffectKind kind, const T* theta, EffectValues<T>& e) {
       break;
     case EffectKind::kSaturation:
       e.saturation_fraction = ValueOf(theta[0]);
+      break;
+    case EffectKind::kSurgeForce:
+      e.surge_acceleration = theta[0];
       break;
   }
 }

@@ -79,7 +79,11 @@ std::vector<DiscoveredTerms> DiscoverMissingTerms(const Dataset& data, const Ves
   for (const std::string& s : dynamic) {
     const Eigen::VectorXd prediction =
         sindy::PredictWithSindy(id, s, held_data, dynamic, inputs, options.library);
-    const double r2 = RSquared(held_data[s + "_dot"], prediction);
+    // Explained share of the residual's mean square, not of its variance: the nominal model's
+    // error is d_s itself, and a missing constant force is all mean.
+    const Eigen::VectorXd& d = held_data[s + "_dot"];
+    const double r2 =
+        d.squaredNorm() > 0 ? 1.0 - (d - prediction).squaredNorm() / d.squaredNorm() : 0.0;
     if (r2 >= kMinHeldoutR2) out.push_back({s, id.equations[s].get<std::string>(), r2});
   }
   return out;

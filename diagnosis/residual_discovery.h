@@ -5,7 +5,8 @@
 // and SINDy (methods/sindy) fits d_s on the training part with the library of the dynamic states
 // and inputs (constant, products, |x| x, inputs), plus cos psi and sin psi when the heading is
 // measured (earth-fixed forces). A proposal is kept when it explains at least 30 % of d_s's
-// variance on the held-out part.
+// mean square on the held-out part (its mean square, not its variance: a missing constant force
+// is all mean).
 #pragma once
 
 #include <vector>

@@ -108,6 +108,10 @@ class TypedEffectFitter : public EffectFitter {
         for (double f : {0.01, 0.03, 0.1, 0.3})
           for (double sign : {-1.0, 1.0}) grid.push_back({sign * f * hi});
         break;
+      case EffectKind::kSurgeForce:
+        for (double a : {0.001, 0.003, 0.01, 0.03, 0.1})
+          for (double sign : {-1.0, 1.0}) grid.push_back({sign * a});
+        break;
       case EffectKind::kInputDelay:
       case EffectKind::kSaturation:
         break;

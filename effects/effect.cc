@@ -10,7 +10,7 @@
 namespace usvid {
 namespace {
 
-constexpr std::array<EffectInfo, 8> kCatalogue = {{
+constexpr std::array<EffectInfo, 9> kCatalogue = {{
     {EffectKind::kInputDelay, "input_delay", "delay_s",
      "every input reaches the plant late by a constant time"},
     {EffectKind::kCurrent, "current", "speed",
@@ -25,6 +25,9 @@ constexpr std::array<EffectInfo, 8> kCatalogue = {{
     {EffectKind::kDamping, "damping", "scale", "damping matrix off by a common factor"},
     {EffectKind::kSaturation, "saturation", "fraction",
      "each input clipped at +-fraction x its peak absolute command in the data"},
+    {EffectKind::kSurgeForce, "surge_force", "acceleration",
+     "constant surge force missing from the model (propulsion or resistance mismatch, a "
+     "towing force), as an acceleration [m/s^2]"},
 }};
 
 std::string KnownNames() {
@@ -50,6 +53,8 @@ std::string Violation(EffectKind kind, double value) {
       return value > 0.0 && value <= 100.0 ? "" : "scale must be in (0, 100]";
     case EffectKind::kSaturation:
       return value > 0.0 && value <= 1.0 ? "" : "fraction must be in (0, 1]";
+    case EffectKind::kSurgeForce:
+      return std::abs(value) <= 5.0 ? "" : "acceleration must be in [-5, 5] m/s^2";
   }
   return "";
 }
@@ -62,7 +67,7 @@ double ParseValue(const std::string& text, const std::string& where) {
 
 }  // namespace
 
-const std::array<EffectInfo, 8>& EffectCatalogue() { return kCatalogue; }
+const std::array<EffectInfo, 9>& EffectCatalogue() { return kCatalogue; }
 
 const EffectInfo& InfoOf(EffectKind kind) { return kCatalogue[static_cast<size_t>(kind)]; }
 

@@ -9,6 +9,8 @@
 //   inertia       mass and inertia parameters times `scale`
 //   damping       damping parameters times `scale`
 //   saturation    each input clipped at +-fraction x its peak absolute command
+//   surge_force   a constant surge force the model lacks, as an acceleration [m/s^2] on the
+//                 surge (or speed) state: a propulsion or resistance mismatch, a towing force
 // ParseEffect throws InputError naming the --effect item and the rule it breaks.
 #pragma once
 
@@ -30,7 +32,8 @@ enum class EffectKind {
   kSensorBias,
   kInertia,
   kDamping,
-  kSaturation
+  kSaturation,
+  kSurgeForce
 };
 
 struct EffectInfo {
@@ -40,7 +43,7 @@ struct EffectInfo {
   std::string_view meaning;
 };
 
-const std::array<EffectInfo, 8>& EffectCatalogue();
+const std::array<EffectInfo, 9>& EffectCatalogue();
 const EffectInfo& InfoOf(EffectKind kind);
 
 struct Effect {

@@ -31,6 +31,9 @@ EffectValues<double> ValuesOf(const std::vector<Effect>& effects) {
       case EffectKind::kSaturation:
         v.saturation_fraction = e.at("fraction");
         break;
+      case EffectKind::kSurgeForce:
+        v.surge_acceleration = e.at("acceleration");
+        break;
     }
   }
   return v;

@@ -23,6 +23,7 @@ struct EffectValues {
   T inertia_scale = T(1);
   T damping_scale = T(1);
   double saturation_fraction = 0.0;  // 0: no clipping
+  T surge_acceleration = T(0);       // added to the surge (or speed) state's derivative
   // Extra delay per input, on top of delay_s (empty: none); for per-input delay estimates.
   std::vector<double> input_delays_s;
 };

@@ -6,10 +6,12 @@
 //   u_a[yaw] += input_bias                                   (input_bias)
 //   x' = V::Derivative(x, u_a, p_eff, {current})             (current)
 // where p_eff is p with inertia and damping parameters scaled (inertia, damping). The measured
-// rate channel carries sensor_bias (MeasuredRate); input_delay shifts u_c in time (caller).
+// rate channel carries sensor_bias (MeasuredRate); input_delay shifts u_c in time (caller);
+// surge_force adds its acceleration to the surge state's derivative (u, else U, else the msd's v).
 #pragma once
 
 #include <array>
+#include <string_view>
 
 #include "effects/effect_values.h"
 #include "simulators/scalar.h"
@@ -20,6 +22,13 @@ namespace usvid {
 template <Vessel V>
 struct Plant {
   static constexpr int kStates = V::kStates + V::kInputs;
+  // The state a surge force accelerates: u, else U, else v (the msd's velocity); -1: none.
+  static constexpr int kSurgeState = [] {
+    for (std::string_view name : {"u", "U", "v"})
+      for (int i = 0; i < V::kStates; ++i)
+        if (V::kStateNames[i] == name) return i;
+    return -1;
+  }();
 
   template <typename T>
   static void ScaleParams(const T* p, const EffectValues<T>& e, T* p_eff) {
@@ -64,6 +73,7 @@ struct Plant {
     u_applied[V::kYawInput] += e.input_bias;
     const Environment<T> env{e.current_north, e.current_east};
     V::template Derivative<T>(x, u_applied.data(), p_eff, env, dx);
+    if constexpr (kSurgeState >= 0) dx[kSurgeState] += e.surge_acceleration;
   }
 
   // The state a plant starts in: the vessel state, and the lag memory at the first command.

@@ -1,5 +1,6 @@
 #include "methods/identify.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <set>
@@ -11,6 +12,7 @@
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/gp/gp_identify.h"
+#include "methods/refit/refit.h"
 #include "methods/sindy/sindy.h"
 #include "preprocessing/delay_estimation.h"
 #include "simulation/segment_error.h"
@@ -123,15 +125,60 @@ std::vector<std::string> StatesExcept(const VesselInfo& info,
 const std::set<std::string> kNotVariables = {"north",        "east",           "psi", "chi", "rpm",
                                              "nozzle_angle", "bucket_position"};
 
+// refit: the vessel's own coefficients (methods/refit/refit.h); a vessel model, no equations.
+nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
+  if (o.vessel.empty()) throw InputError("--method refit: needs --vessel");
+  const VesselInfo& info = FindVessel(o.vessel).Info();
+  RefitOptions ro;
+  ro.free = o.refit_params;
+  ro.segment_s = o.segment_s;
+  ro.prior_sd = o.prior_sd;
+  ro.threads = o.threads > 0 ? o.threads : 1;
+  const RefitResult fit = RefitVessel(
+      o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, ro);
+  Log(log, "refit of " + std::to_string(fit.free.size()) + " parameters on " +
+               std::to_string(fit.segments) + " segments: " + fit.termination);
+  nlohmann::json params = nlohmann::json::object(), start = nlohmann::json::object();
+  for (size_t i = 0; i < fit.names.size(); ++i) {
+    params[fit.names[i]] = fit.params[i];
+    start[fit.names[i]] = fit.start[i];
+  }
+  nlohmann::json ratio = nlohmann::json::object();
+  for (const std::string& n : fit.free) {
+    const size_t i = std::find(fit.names.begin(), fit.names.end(), n) - fit.names.begin();
+    ratio[n] = fit.start[i] != 0.0 ? fit.params[i] / fit.start[i] : fit.params[i];
+  }
+  return {{"method", "refit"},
+          {"vessel", o.vessel},
+          {"states", fit.channels},
+          {"inputs", info.inputs},
+          {"parameters", params},
+          {"refit",
+           {{"free", fit.free},
+            {"ratio_to_start", ratio},
+            {"start", start},
+            {"segment_s", o.segment_s},
+            {"prior_sd", o.prior_sd},
+            {"segments", fit.segments},
+            {"termination", fit.termination},
+            {"converged", fit.converged},
+            {"initial_cost", fit.initial_cost},
+            {"final_cost", fit.final_cost},
+            {"iterations", fit.iterations}}},
+          {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", fit.seconds}}}};
+}
+
 }  // namespace
 
 nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const Logger& log) {
   // Speed and course where only body velocities were logged (the 2-DOF models need them).
   Dataset data = recorded;
   AddSpeedAndCourse(data);
-  if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" && o.method != "fossen-ceres")
+  if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" &&
+      o.method != "fossen-ceres" && o.method != "refit")
     throw InputError("--method '" + o.method +
-                     "': unknown method (known: gp, sindy, eb-lr, fossen-ceres)");
+                     "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit)");
+  if (o.method == "refit") return IdentifyRefit(data, o, log);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> states = o.states, variables = o.states, inputs = o.inputs;
   if (!o.vessel.empty()) {

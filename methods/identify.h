@@ -15,7 +15,7 @@
 namespace usvid {
 
 struct IdentifyRequest {
-  std::string method;  // gp, sindy, eb-lr, fossen-ceres
+  std::string method;  // gp, sindy, eb-lr, fossen-ceres, refit
   std::string vessel;  // states and inputs from it (when not given)
   std::vector<std::string> states, inputs;
   std::string data_name;  // for model.json's train.data
@@ -34,6 +34,10 @@ struct IdentifyRequest {
   std::string fossen_mode = "simulation";
   double segment_s = 10.0;
   bool robust = false;
+  // refit (methods/refit/refit.h); also segment_s
+  std::vector<std::string> refit_params;
+  double prior_sd = 0.5;
+  std::vector<double> start_params;  // empty: the vessel's defaults
 };
 
 // Throws InputError for an unknown method or a combination it cannot fit. `log` receives

@@ -9,8 +9,10 @@
 #include "apps/usvid/commands.h"
 #include "apps/usvid/preprocess_options.h"
 #include "core/csv_dataset.h"
+#include "core/error.h"
 #include "core/json_file.h"
 #include "methods/identify.h"
+#include "simulation/vessel_simulator.h"
 
 namespace usvid {
 namespace {
@@ -18,6 +20,7 @@ namespace {
 struct IdentifyOptions {
   IdentifyRequest request;
   std::string data;
+  std::string params;
   PreprocessFlags pre;
   std::string out;
 };
@@ -26,12 +29,17 @@ void RunIdentify(const IdentifyOptions& o) {
   IdentifyRequest r = o.request;
   r.preprocess = o.pre.Options();
   r.data_name = o.data;
+  if (!o.params.empty()) {
+    if (r.vessel.empty()) throw InputError("--params: needs --vessel");
+    r.start_params = FindVessel(r.vessel).Info().ParamsFromFile(o.params);
+  }
   const Dataset data = ReadDatasetCsv(o.data);
   const nlohmann::json model = Identify(
       data, r, [](const std::string& line) { std::cerr << "usvid identify: " << line << '\n'; });
   WriteJsonFile(o.out, model);
-  for (const auto& [state, eq] : model["equations"].items())
-    std::cerr << "usvid identify: " << state << "' = " << eq.get<std::string>() << '\n';
+  if (model.contains("equations"))
+    for (const auto& [state, eq] : model.at("equations").items())
+      std::cerr << "usvid identify: " << state << "' = " << eq.get<std::string>() << '\n';
   std::cerr << "usvid identify: wrote " << o.out << " (" << model["train"]["seconds"].get<double>()
             << " s)\n";
 }
@@ -44,9 +52,10 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--method", o->request.method,
                   "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge), "
                   "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data) or fossen-ceres "
-                  "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet input map)")
+                  "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map) or "
+                  "refit (the --vessel's own coefficients, Ceres multiple shooting)")
       ->required()
-      ->check(CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres"}));
+      ->check(CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit"}));
   cmd->add_option("--data", o->data, "Training data CSV")->required();
   cmd->add_option("--vessel", o->request.vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');
@@ -67,7 +76,19 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--fit", o->request.fossen_mode,
                   "fossen-ceres: simulation (multiple shooting, default) or equation error")
       ->check(CLI::IsMember({"simulation", "equation"}));
-  cmd->add_option("--segment", o->request.segment_s, "fossen-ceres: shooting segment length [s]");
+  cmd->add_option("--segment", o->request.segment_s,
+                  "fossen-ceres, refit: shooting segment length [s]");
+  cmd->add_option("--refit-params", o->request.refit_params,
+                  "refit: the parameters to fit (default: the vessel's damping group, for "
+                  "kvlcc2 its 17 hull coefficients)")
+      ->delimiter(',');
+  cmd->add_option("--prior-sd", o->request.prior_sd,
+                  "refit: prior standard deviation of each free parameter, relative to its "
+                  "start")
+      ->capture_default_str();
+  cmd->add_option("--params", o->params,
+                  "refit: starting parameters (JSON of name: value, or a model's "
+                  "\"parameters\"); default the vessel's");
   cmd->add_flag("--robust", o->request.robust, "fossen-ceres: Huber loss");
   cmd->add_option("--out", o->out, "model.json to write")->required();
   cmd->callback([o] { RunIdentify(*o); });

@@ -26,13 +26,19 @@ struct Range {
   bool reciprocal = false;   // scales: 1/x as likely as x
 };
 
-// Realistic sizes on odin3dof (yaw input tau_n [N m], gyro [rad/s]).
+// Realistic sizes on odin3dof (yaw input tau_n [N m], gyro [rad/s], surge force [m/s^2]).
 const std::map<std::string, Range>& Ranges() {
   static const std::map<std::string, Range> ranges = {
-      {"input_delay", {0.2, 1.5}},          {"current", {0.2, 1.0}},
-      {"actuator_lag", {0.3, 3.0}},         {"input_bias", {1000, 3000, true}},
-      {"sensor_bias", {0.003, 0.01, true}}, {"inertia", {1.2, 2.0, false, true}},
-      {"damping", {1.2, 2.0, false, true}}, {"saturation", {0.5, 0.9}},
+      {"input_delay", {0.2, 1.5}},
+      {"current", {0.2, 1.0}},
+      {"actuator_lag", {0.3, 3.0}},
+      {"input_bias", {1000, 3000, true}},
+      {"sensor_bias", {0.003, 0.01, true}},
+      {"inertia", {1.2, 2.0, false, true}},
+      {"damping", {1.2, 2.0, false, true}},
+      {"saturation", {0.5, 0.9}},
+      // 0.25 to 1.5 kN of thrust missing or extra on a 4.9 t hull (cruise thrust 16 kN).
+      {"surge_force", {0.05, 0.3, true}},
   };
   return ranges;
 }
@@ -98,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, HiddenEffectTest,
                          ::testing::Combine(::testing::Values("none", "input_delay", "current",
                                                               "actuator_lag", "input_bias",
                                                               "sensor_bias", "inertia", "damping",
-                                                              "saturation"),
+                                                              "saturation", "surge_force"),
                                             ::testing::Values(1, 2, 3)),
                          [](const auto& info) {
                            std::string name = std::get<0>(info.param) + "_seed" +
