@@ -68,6 +68,47 @@ std::map<std::string, Eigen::VectorXd> ModelSeries(const MeasuredData& d, const 
   return out;
 }
 
+// Whether the best candidate passes: its likelihood ratio beats chi-square at 0.999 and it cuts
+// the reference error by at least min_reduction.
+bool Passes(const Candidate& c, double reference_error, const DiagnoseOptions& options) {
+  return c.likelihood_ratio >= ChiSquare999(c.parameters) &&
+         c.heldout_error < (1.0 - options.min_reduction) * reference_error;
+}
+
+// Every effect of the catalogue fitted on the training part (on top of d.base) and scored on the
+// held-out part against the reference error; ranked best first, look-alikes listed.
+std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fitter,
+                                   const std::vector<double>& params, double reference_error,
+                                   double noise_floor, double effective_samples) {
+  const auto& catalogue = EffectCatalogue();
+  std::vector<Candidate> candidates(catalogue.size());
+  const double excess = reference_error - noise_floor;
+#pragma omp parallel for schedule(dynamic)
+  for (size_t i = 0; i < catalogue.size(); ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Candidate& c = candidates[i];
+    const EffectSearch search = SearchFor(catalogue[i].kind, d, fitter.YawInput());
+    c.fit = fitter.Fit(d, d.train, params, search);
+    const Eigen::VectorXd held = fitter.Residuals(d, d.heldout, params, c.fit.effect);
+    c.heldout_error = MeanSquaredError(d, d.heldout, held);
+    c.heldout_fit_percent = FitPercentOf(d, d.heldout, held);
+    c.parameters = search.size();
+    c.likelihood_ratio = effective_samples * std::log(reference_error / c.heldout_error);
+    c.score = -c.likelihood_ratio + 2.0 * search.size();
+    c.explained = excess > 0 ? (reference_error - c.heldout_error) / excess : 0.0;
+    c.seconds = Seconds(t0);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+  for (Candidate& a : candidates)
+    for (const Candidate& b : candidates)
+      if (&a != &b && std::abs(a.heldout_error - b.heldout_error) <= 1e-3 * reference_error &&
+          a.likelihood_ratio >= ChiSquare999(a.parameters) &&
+          b.likelihood_ratio >= ChiSquare999(b.parameters))
+        a.alike.emplace_back(b.fit.effect.name());
+  return candidates;
+}
+
 }  // namespace
 
 Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
@@ -76,20 +117,22 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   const auto start = std::chrono::steady_clock::now();
   const VesselSimulator& sim = FindVessel(vessel);
   const EffectFitter& fitter = FindEffectFitter(vessel);
-  const MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
+  MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
+  d.base = ValuesOf(options.base_effects);
 
   Diagnosis out;
   out.vessel = vessel;
   out.source = data.Source();
   out.param_names = sim.Info().params;
   out.params = params;
+  out.base_effects = options.base_effects;
   out.channels = d.channels;
-  out.segment_s = options.split.segment_s;
+  out.segment_s = d.segment_s;
   out.train_s = d.times[d.train.end - 1] - d.times[d.train.begin];
   out.heldout_s = d.times[d.heldout.end - 1] - d.times[d.heldout.begin];
 
   // 1. Show.
-  const Eigen::VectorXd nominal_all = fitter.ResetResiduals(d, d.all, params, {});
+  const Eigen::VectorXd nominal_all = fitter.ResetResiduals(d, d.all, params, d.base);
   const Eigen::VectorXd nominal_held = fitter.Residuals(d, d.heldout, params, std::nullopt);
   out.nominal_error = MeanSquaredError(d, d.heldout, nominal_held);
   out.nominal_fit_percent = FitPercentOf(d, d.heldout, nominal_held);
@@ -103,52 +146,49 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
          << " effects\n";
 
   // 2. Name.
-  const auto& catalogue = EffectCatalogue();
-  std::vector<Candidate> candidates(catalogue.size());
   out.correlation_time = CorrelationTime(d, d.heldout, nominal_held);
   out.effective_samples = static_cast<double>(SampledCount(d, d.heldout)) / out.correlation_time;
-  const double excess = out.nominal_error - out.noise_floor;
-#pragma omp parallel for schedule(dynamic)
-  for (size_t i = 0; i < catalogue.size(); ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
-    Candidate& c = candidates[i];
-    const EffectSearch search = SearchFor(catalogue[i].kind, d, fitter.YawInput());
-    c.fit = fitter.Fit(d, d.train, params, search);
-    const Eigen::VectorXd held = fitter.Residuals(d, d.heldout, params, c.fit.effect);
-    c.heldout_error = MeanSquaredError(d, d.heldout, held);
-    c.heldout_fit_percent = FitPercentOf(d, d.heldout, held);
-    c.parameters = search.size();
-    c.likelihood_ratio = out.effective_samples * std::log(out.nominal_error / c.heldout_error);
-    c.score = -c.likelihood_ratio + 2.0 * search.size();
-    c.explained = excess > 0 ? (out.nominal_error - c.heldout_error) / excess : 0.0;
-    c.seconds = Seconds(t0);
-  }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
-  for (Candidate& a : candidates)
-    for (const Candidate& b : candidates)
-      if (&a != &b && std::abs(a.heldout_error - b.heldout_error) <= 1e-3 * out.nominal_error &&
-          a.likelihood_ratio >= ChiSquare999(a.parameters) &&
-          b.likelihood_ratio >= ChiSquare999(b.parameters))
-        a.alike.emplace_back(b.fit.effect.name());
-  out.candidates = candidates;
+  out.candidates =
+      RankEffects(d, fitter, params, out.nominal_error, out.noise_floor, out.effective_samples);
   if (log)
-    for (const Candidate& c : candidates)
+    for (const Candidate& c : out.candidates)
       *log << "  " << c.fit.effect.name() << ": held-out E " << c.heldout_error << " (nominal "
            << out.nominal_error << ", floor " << out.noise_floor << "), LR " << c.likelihood_ratio
            << ", " << c.seconds << " s\n";
 
   const Candidate& best = out.candidates.front();
-  const bool found = best.likelihood_ratio >= ChiSquare999(best.parameters) &&
-                     best.heldout_error < (1.0 - options.min_reduction) * out.nominal_error;
+  const bool found = Passes(best, out.nominal_error, options);
   const bool visible = out.nominal_error > (1.0 + options.min_excess) * out.noise_floor;
 
-  // 3. Extend and measure.
+  // 3. Extend and measure; name further causes on the extended model while much is left.
+  MeasuredData extended = d;
+  double error = out.nominal_error;
+  double explained = 0.0;
   if (found) {
     out.cause = std::string(best.fit.effect.name());
     out.cause_effect = best.fit.effect;
+    SetEffect(best.fit.effect, extended.base);
+    error = best.heldout_error;
+    explained = best.explained;
   }
-  const Eigen::VectorXd extended_held = fitter.Residuals(d, d.heldout, params, out.cause_effect);
+  const double excess = out.nominal_error - out.noise_floor;
+  for (int round = 1; found && round < options.max_causes && explained < options.min_explained;
+       ++round) {
+    const std::vector<Candidate> next =
+        RankEffects(extended, fitter, params, error, out.noise_floor, out.effective_samples);
+    const Candidate& c = next.front();
+    if (!Passes(c, error, options)) break;
+    FurtherCause f{c.fit.effect, c.alike, c.likelihood_ratio, c.explained, error, c.heldout_error};
+    if (log)
+      *log << "diagnose: on the extended model, " << c.fit.effect.name() << " (LR "
+           << c.likelihood_ratio << ")\n";
+    out.further_causes.push_back(f);
+    SetEffect(c.fit.effect, extended.base);
+    error = c.heldout_error;
+    explained = excess > 0 ? (out.nominal_error - error) / excess : 1.0;
+  }
+  const Eigen::VectorXd extended_held =
+      fitter.Residuals(extended, extended.heldout, params, std::nullopt);
   out.extended_error = MeanSquaredError(d, d.heldout, extended_held);
   out.extended_fit_percent = FitPercentOf(d, d.heldout, extended_held);
   out.heldout_error_reduction =
@@ -166,7 +206,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
 
   // 4. Beyond the catalogue: the residual is well above the noise and the best effect leaves
   // much of it.
-  out.unexplained = visible && (!found || best.explained < options.min_explained);
+  out.unexplained = visible && (!found || explained < options.min_explained);
   if (options.discover && out.unexplained) {
     if (log) *log << "diagnose: the catalogue leaves much of the residual; searching terms\n";
     out.discovered = DiscoverMissingTerms(data, sim, fitter, params, d);

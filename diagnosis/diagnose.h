@@ -12,7 +12,9 @@
 //     min_reduction; otherwise the cause is "none". `explained` reports the share of the excess
 //     of E_nominal over the noise floor (measurement noise alone) that an effect removes.
 //  3. Extend and measure: the nominal model with the cause's fitted sizes; held-out fit before
-//     and after; gain = 1 - ||e_extended|| / ||e_nominal|| on the held-out part.
+//     and after; gain = 1 - ||e_extended|| / ||e_nominal|| on the held-out part. While the causes
+//     named so far explain less than min_explained of the excess, the extended model is
+//     diagnosed again (further causes, up to max_causes in all).
 //  4. Beyond the catalogue: when the nominal error is well above the noise floor (by
 //     min_excess) and no effect explains min_explained of the excess, a sparse regression
 //     (SINDy) on the derivative residual proposes the missing terms (residual_discovery.h).
@@ -36,6 +38,11 @@ struct DiagnoseOptions {
   double min_excess = 0.1;       // E_nominal over the noise floor, and the share of the excess
   double min_explained = 0.9;    // an effect must explain, before searching beyond (step 4)
   bool discover = true;          // step 4
+  // Effects the nominal model already has (from a model.json's "effects").
+  std::vector<Effect> base_effects;
+  // Rounds of naming: while the causes named so far leave more than 1 - min_explained of the
+  // excess, the model extended by them is diagnosed again (forward selection), up to this many.
+  int max_causes = 3;
 };
 
 using FitPercent = std::map<std::string, double>;
@@ -67,6 +74,15 @@ struct HeldoutSeries {
   std::map<std::string, Eigen::VectorXd> measured, nominal, extended;
 };
 
+// A cause named in a later round, on the model extended by the causes before it.
+struct FurtherCause {
+  Effect effect;
+  std::vector<std::string> alike;
+  double likelihood_ratio = 0.0;
+  double explained = 0.0;                        // of the remaining excess over the noise floor
+  double error_before = 0.0, error_after = 0.0;  // held-out E
+};
+
 struct Diagnosis {
   std::string vessel;
   std::string source;
@@ -81,9 +97,11 @@ struct Diagnosis {
   double correlation_time = 1.0, effective_samples = 0.0;
   std::vector<ChannelResidual> residuals;
 
+  std::vector<Effect> base_effects;   // the nominal model's own
   std::vector<Candidate> candidates;  // ranked, best first
   std::string cause = "none";
   std::optional<Effect> cause_effect;
+  std::vector<FurtherCause> further_causes;  // later rounds, in order
   FitPercent extended_fit_percent;
   double extended_error = 0.0;
   double heldout_error_reduction = 0.0;

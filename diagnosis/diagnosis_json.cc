@@ -38,6 +38,24 @@ nlohmann::json Residual(const ChannelResidual& r) {
           {"regressor_correlation", regressors}};
 }
 
+nlohmann::json Effects(const std::vector<Effect>& effects) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const Effect& e : effects) j.push_back(EffectToJson(e));
+  return j;
+}
+
+// The effects of the extended model: the nominal's own, then the causes in the order named.
+std::vector<Effect> ExtendedEffects(const Diagnosis& d) {
+  std::vector<Effect> all = d.base_effects;
+  auto put = [&all](const Effect& e) {
+    std::erase_if(all, [&e](const Effect& a) { return a.kind == e.kind; });
+    all.push_back(e);
+  };
+  if (d.cause_effect) put(*d.cause_effect);
+  for (const FurtherCause& f : d.further_causes) put(f.effect);
+  return all;
+}
+
 }  // namespace
 
 nlohmann::json DiagnosisToJson(const Diagnosis& d) {
@@ -54,7 +72,8 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
                   {"heldout_error", Number(d.nominal_error)},
                   {"noise_floor_error", Number(d.noise_floor)},
                   {"correlation_time_samples", Number(d.correlation_time)},
-                  {"effective_samples", Number(d.effective_samples)}};
+                  {"effective_samples", Number(d.effective_samples)},
+                  {"effects", Effects(d.base_effects)}};
   nlohmann::json residuals = nlohmann::json::object();
   for (const ChannelResidual& r : d.residuals) residuals[r.channel] = Residual(r);
   j["residuals"] = residuals;
@@ -81,7 +100,22 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
                           {"seconds", Number(c.seconds)}});
   }
   j["candidates"] = candidates;
+  nlohmann::json further = nlohmann::json::array(), causes = nlohmann::json::array();
+  if (d.cause_effect) causes.push_back(d.cause);
+  for (const FurtherCause& f : d.further_causes) {
+    causes.push_back(f.effect.name());
+    further.push_back({{"effect", f.effect.name()},
+                       {"parameters", f.effect.parameters},
+                       {"likelihood_ratio", Number(f.likelihood_ratio)},
+                       {"explained", Number(f.explained)},
+                       {"heldout_error_before", Number(f.error_before)},
+                       {"heldout_error_after", Number(f.error_after)},
+                       {"indistinguishable_from", f.alike}});
+  }
+  j["causes"] = causes;
+  j["further_causes"] = further;
   j["extended"] = {{"effect", d.cause_effect ? EffectToJson(*d.cause_effect) : nlohmann::json()},
+                   {"effects", Effects(ExtendedEffects(d))},
                    {"heldout_fit_percent", Fits(d.extended_fit_percent)},
                    {"heldout_error", Number(d.extended_error)}};
   j["gain"] = {{"heldout_error_reduction", Number(d.heldout_error_reduction)}};
@@ -99,8 +133,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
 nlohmann::json ExtendedModelJson(const Diagnosis& d) {
   nlohmann::json parameters = nlohmann::json::object();
   for (size_t i = 0; i < d.params.size(); ++i) parameters[d.param_names[i]] = d.params[i];
-  nlohmann::json effects = nlohmann::json::array();
-  if (d.cause_effect) effects.push_back(EffectToJson(*d.cause_effect));
+  const nlohmann::json effects = Effects(ExtendedEffects(d));
   return {{"method", "diagnose"},
           {"vessel", d.vessel},
           {"parameters", parameters},

@@ -1,7 +1,8 @@
 // What is fitted for each effect of the catalogue: the free sizes, their contract names, bounds
 // and starting values, and how they set EffectValues<T>. Smooth effects (current, actuator lag,
-// biases, inertia, damping, surge force) are fitted by Ceres through the differentiable rollout; input delay
-// and saturation move signals in time or clip them, so they are found by a bounded NLopt search.
+// biases, inertia, damping, surge force) are fitted by Ceres through the differentiable rollout;
+// input delay and saturation move signals in time or clip them, so they are found by a bounded
+// NLopt search.
 //   effect        sizes                         bounds
 //   input_delay   delay_s                       [0, 3] s
 //   current       current_north, current_east   +-3 m/s each

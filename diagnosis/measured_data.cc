@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "preprocessing/smoothing_spline.h"
 #include "simulation/recorded_inputs.h"
+#include "simulation/segment_length.h"
 
 namespace usvid::diagnosis {
 namespace {
@@ -36,12 +37,13 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
                                  const SplitOptions& options) {
   const VesselInfo& info = sim.Info();
   const std::string where = data.SourcePrefix();
-  if (!(options.segment_s > 0)) throw InputError("--segment must be positive");
+  if (!(options.segment_s >= 0)) throw InputError("--segment must be positive, or 0 for automatic");
   if (!(options.heldout_fraction > 0 && options.heldout_fraction < 1))
     throw InputError("--heldout must be between 0 and 1");
   MeasuredData d;
   d.vessel = info.name;
   d.times.assign(data.t().data(), data.t().data() + data.rows());
+  d.segment_s = options.segment_s > 0 ? options.segment_s : AutomaticSegmentSeconds(data, info);
   if (options.max_step < 0) throw InputError("--dt must be positive, or 0 for the data's interval");
   d.max_step = options.max_step;
   if (d.max_step == 0.0) {
@@ -122,9 +124,9 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
   if (split < kMinRows || n - split < kMinRows)
     throw InputError(where + "too few rows to diagnose (" + std::to_string(n) +
                      "): need at least " + std::to_string(2 * kMinRows));
-  d.all = MakePart(d, 0, n, options.segment_s);
-  d.train = MakePart(d, 0, split, options.segment_s);
-  d.heldout = MakePart(d, split, n, options.segment_s);
+  d.all = MakePart(d, 0, n, d.segment_s);
+  d.train = MakePart(d, 0, split, d.segment_s);
+  d.heldout = MakePart(d, split, n, d.segment_s);
 
   // Scale: the RMS change of each channel from its segment's first row.
   d.scale.assign(channels, 0.0);

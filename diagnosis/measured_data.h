@@ -53,13 +53,19 @@ struct MeasuredData {
   Eigen::MatrixXd fallback_states;  // rows x vessel states
 
   Part train, heldout, all;
-  double max_step = 0.05;  // integration substep [s]
+  double max_step = 0.05;   // integration substep [s]
+  double segment_s = 10.0;  // the segment length used (SplitOptions::segment_s, or automatic)
+  // Effects the nominal model already has (a diagnosis of a model diagnosed before, or the
+  // causes named in earlier rounds); every rollout starts from them.
+  EffectValues<double> base;
 
   Eigen::Index rows() const { return static_cast<Eigen::Index>(times.size()); }
 };
 
 struct SplitOptions {
-  double segment_s = 10.0;
+  // Segment length [s]; 0: automatic, 1.5 hull lengths of travel at the median speed and at least
+  // 10 s (a 320 m tanker at 8 m/s: 60 s; small craft: 10 s).
+  double segment_s = 0.0;
   double heldout_fraction = 1.0 / 3.0;  // the last part of the record
   double max_step = 0.0;  // integration substep [s]; 0: the data's interval, at most 0.05 s
 };

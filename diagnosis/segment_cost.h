@@ -28,7 +28,7 @@ struct SegmentCost {
 
   template <typename T>
   bool operator()(const T* theta, const T* x0, T* residual) const {
-    EffectValues<T> e;
+    EffectValues<T> e = CastValues<T>(data->base);
     ApplySizes(kind, theta, e);
     const EffectPlant<V, T> plant(*data, params, e);
     SegmentRollout<V, T>(*data, *part, segment, plant, x0, residual);

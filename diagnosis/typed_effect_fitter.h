@@ -33,8 +33,9 @@ class TypedEffectFitter : public EffectFitter {
   Eigen::VectorXd Residuals(const MeasuredData& data, const Part& part,
                             const std::vector<double>& params,
                             const std::optional<Effect>& effect) const override {
+    // No effect: the base model (its inertia scale set to what it already is).
     const EffectKind kind = effect ? effect->kind : EffectKind::kInertia;
-    std::vector<double> theta = {1.0};
+    std::vector<double> theta = {data.base.inertia_scale};
     if (effect) {
       theta.clear();
       for (const std::string& name : SizeNames(kind)) theta.push_back(effect->at(name));
@@ -58,7 +59,7 @@ class TypedEffectFitter : public EffectFitter {
                 const EffectSearch& search) const override {
     const Params p = ToParams(params);
     auto cost = [&](const std::vector<double>& theta) {
-      EffectValues<double> e;
+      EffectValues<double> e = data.base;
       ApplySizes(search.kind, theta.data(), e);
       Eigen::VectorXd r(ResidualCount(data, train));
       ResetRollout<V, double>(data, train, p, e, r.data());
@@ -141,7 +142,7 @@ class TypedEffectFitter : public EffectFitter {
     Eigen::VectorXd residual(ResidualCount(data, part));
     std::vector<std::array<double, S>> x0;
     {
-      EffectValues<double> e;
+      EffectValues<double> e = data.base;
       ApplySizes(search.kind, theta.data(), e);
       ResetRollout<V, double>(data, part, p, e, residual.data(), &x0);
     }
@@ -191,7 +192,7 @@ class TypedEffectFitter : public EffectFitter {
         for (int i = 0; i < K; ++i) fit.sd.push_back(std::sqrt(std::max(0.0, c[i * K + i] * s2)));
       }
     }
-    EffectValues<double> e;
+    EffectValues<double> e = data.base;
     ApplySizes(search.kind, theta.data(), e);
     const EffectPlant<V, double> plant(data, p, e);
     for (size_t s = 0; s < part.starts.size(); ++s) {

@@ -127,11 +127,25 @@ nlohmann::json EffectToJson(const Effect& effect) {
 }
 
 Effect EffectFromJson(const nlohmann::json& value) {
+  if (!value.is_object() || !value.contains("effect") || !value.at("effect").is_string() ||
+      !value.contains("parameters") || !value.at("parameters").is_object())
+    throw InputError("an effect is {\"effect\": NAME, \"parameters\": {NAME: NUMBER, ...}}");
   const std::string name = value.at("effect").get<std::string>();
   for (const EffectInfo& e : kCatalogue) {
-    if (e.name == name) {
-      return {e.kind, value.at("parameters").get<std::map<std::string, double>>()};
+    if (e.name != name) continue;
+    Effect effect{e.kind, {}};
+    for (const auto& [key, v] : value.at("parameters").items()) {
+      if (!v.is_number() || !std::isfinite(v.get<double>()))
+        throw InputError("effect " + name + ": parameter '" + key + "' is not a finite number");
+      effect.parameters[key] = v.get<double>();
     }
+    const std::vector<std::string> needed =
+        e.kind == EffectKind::kCurrent ? std::vector<std::string>{"current_north", "current_east"}
+                                       : std::vector<std::string>{std::string(e.main_parameter)};
+    for (const std::string& n : needed)
+      if (!effect.parameters.contains(n))
+        throw InputError("effect " + name + ": no parameter '" + n + "'");
+    return effect;
   }
   throw InputError("unknown effect '" + name + "' (known: " + KnownNames() + ")");
 }

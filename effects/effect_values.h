@@ -30,6 +30,26 @@ struct EffectValues {
 
 // The values of a list of effects (each kind at most once).
 EffectValues<double> ValuesOf(const std::vector<Effect>& effects);
+// `effect` set in `values` (replacing that kind's value).
+void SetEffect(const Effect& effect, EffectValues<double>& values);
+
+// Values of scalar type T (constants: no derivative parts).
+template <typename T>
+EffectValues<T> CastValues(const EffectValues<double>& e) {
+  EffectValues<T> out;
+  out.delay_s = e.delay_s;
+  out.current_north = T(e.current_north);
+  out.current_east = T(e.current_east);
+  out.lag_time_constant_s = T(e.lag_time_constant_s);
+  out.input_bias = T(e.input_bias);
+  out.sensor_bias = T(e.sensor_bias);
+  out.inertia_scale = T(e.inertia_scale);
+  out.damping_scale = T(e.damping_scale);
+  out.saturation_fraction = e.saturation_fraction;
+  out.surge_acceleration = T(e.surge_acceleration);
+  out.input_delays_s = e.input_delays_s;
+  return out;
+}
 
 // +-limit per input for `saturation`: fraction x the peak |command| of each input channel
 // (infinite when there is no saturation or the channel never moves).

@@ -36,7 +36,7 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
   constexpr bool kOdin3Dof = std::is_same_v<Model, fossen::Odin3DofModel>;
   constexpr bool kWaterjet = std::is_same_v<Model, fossen::WaterjetModel>;
   fossen::FossenOptions fo;
-  fo.segment_s = o.segment_s;
+  fo.segment_s = o.segment_s > 0 ? o.segment_s : 10.0;
   fo.robust = o.robust;
   fo.threads = o.threads > 0 ? o.threads : 1;
   auto fit_equation = [&] {
@@ -86,7 +86,7 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
     auto cost = [&](const std::vector<double>& d) {
       EffectValues<double> e;
       e.delay_s = d[0];
-      return SegmentedSimulationError(sim, p, e, data, {"u", "v", "r"}, o.segment_s);
+      return SegmentedSimulationError(sim, p, e, data, {"u", "v", "r"}, fo.segment_s);
     };
     const DelayEstimate d =
         ContinuousDelay(cost, 1, o.preprocess.max_delay_s, {prepared.delay_s}, 60);
@@ -98,7 +98,7 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
           {"fossen",
            {{"model", std::string(Model::kName)},
             {"mode", o.fossen_mode},
-            {"segment_s", o.segment_s},
+            {"segment_s", fo.segment_s},
             {"robust", o.robust},
             {"parameter_sd", sd},
             {"covariance_ok", fit.covariance_ok},
@@ -124,6 +124,22 @@ std::vector<std::string> StatesExcept(const VesselInfo& info,
 // depend on them either, except the msd's spring on x. Actuator feedback is left out.
 const std::set<std::string> kNotVariables = {"north",        "east",           "psi", "chi", "rpm",
                                              "nozzle_angle", "bucket_position"};
+
+// nominal: the vessel as it is (its defaults, or --params), nothing fitted: the physics-based
+// prediction every identified model has to beat.
+nlohmann::json NominalModel(const Dataset& data, const IdentifyRequest& o) {
+  if (o.vessel.empty()) throw InputError("--method nominal: needs --vessel");
+  const VesselInfo& info = FindVessel(o.vessel).Info();
+  const std::vector<double>& p = o.start_params.empty() ? info.default_params : o.start_params;
+  nlohmann::json params = nlohmann::json::object();
+  for (size_t i = 0; i < p.size(); ++i) params[info.params[i]] = p[i];
+  return {{"method", "nominal"},
+          {"vessel", o.vessel},
+          {"states", StatesExcept(info, kNotVariables)},
+          {"inputs", info.inputs},
+          {"parameters", params},
+          {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", 0.0}}}};
+}
 
 // refit: the vessel's own coefficients (methods/refit/refit.h); a vessel model, no equations.
 nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
@@ -157,7 +173,7 @@ nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, cons
            {{"free", fit.free},
             {"ratio_to_start", ratio},
             {"start", start},
-            {"segment_s", o.segment_s},
+            {"segment_s", fit.segment_s},
             {"prior_sd", o.prior_sd},
             {"segments", fit.segments},
             {"termination", fit.termination},
@@ -175,10 +191,11 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   Dataset data = recorded;
   AddSpeedAndCourse(data);
   if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" &&
-      o.method != "fossen-ceres" && o.method != "refit")
+      o.method != "fossen-ceres" && o.method != "refit" && o.method != "nominal")
     throw InputError("--method '" + o.method +
-                     "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit)");
+                     "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit, nominal)");
   if (o.method == "refit") return IdentifyRefit(data, o, log);
+  if (o.method == "nominal") return NominalModel(data, o);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> states = o.states, variables = o.states, inputs = o.inputs;
   if (!o.vessel.empty()) {

@@ -32,7 +32,8 @@ struct IdentifyRequest {
   int threads = 0;
   // fossen-ceres
   std::string fossen_mode = "simulation";
-  double segment_s = 10.0;
+  double segment_s =
+      0.0;  // shooting segment [s]; 0: the method's default (fossen 10 s, refit auto)
   bool robust = false;
   // refit (methods/refit/refit.h); also segment_s
   std::vector<std::string> refit_params;

@@ -42,6 +42,7 @@ VesselInfo InfoFor(std::vector<InputRole> roles, const Actuation& extra) {
   info.groups.assign(V::kParamGroups.begin(), V::kParamGroups.end());
   if constexpr (requires { V::kDerivesSpeedAndCourse; }) info.derived = {"U", "chi"};
   if constexpr (requires { V::kTransportDelay; }) info.transport_delay_s = V::kTransportDelay;
+  if constexpr (requires { V::kLength; }) info.length_m = V::kLength;
 
   Actuation& a = info.actuation;
   a = extra;

@@ -28,6 +28,7 @@ struct VesselInfo {
   std::vector<ParamGroup> groups;
   Actuation actuation;
   double transport_delay_s = 0.0;
+  double length_m = 0.0;  // hull length where the model has one (Froude number, time scale L/U)
 
   int StateIndex(const std::string& name) const;  // -1 when absent
   // Parameters by name over the defaults; throws InputError on an unknown name.

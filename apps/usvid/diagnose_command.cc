@@ -34,10 +34,27 @@ void RunDiagnose(const DiagnoseCliOptions& o) {
   const VesselSimulator& sim = FindVessel(o.vessel);
   const std::vector<double> params =
       o.params.empty() ? sim.Info().default_params : sim.Info().ParamsFromFile(o.params);
+  diagnosis::DiagnoseOptions options = o.options;
+  if (!o.params.empty()) {
+    // A model diagnosed before brings its effects: the next diagnosis starts from them.
+    const nlohmann::json model = ReadJsonFile(o.params);
+    if (model.is_object() && model.contains("effects")) {
+      if (!model.at("effects").is_array())
+        throw InputError(o.params + ": \"effects\" is not an array");
+      for (const auto& e : model.at("effects")) {
+        try {
+          options.base_effects.push_back(EffectFromJson(e));
+        } catch (const std::exception& err) {
+          throw InputError(o.params + ": effects: " + err.what());
+        }
+      }
+    }
+  }
+  if (options.max_causes < 1) throw InputError("--causes must be at least 1");
   if (o.threads < 0) throw InputError("--threads must be 0 (all cores) or more");
   const Dataset data = ReadDatasetCsv(o.data);
   EnsureOutputDirectory(o.out);
-  const diagnosis::Diagnosis d = diagnosis::Diagnose(data, o.vessel, params, o.options, &std::cerr);
+  const diagnosis::Diagnosis d = diagnosis::Diagnose(data, o.vessel, params, options, &std::cerr);
   diagnosis::WriteDiagnosisReport(d, o.out);
   WriteJsonFile(o.out + "/model.json", diagnosis::ExtendedModelJson(d));
   WriteJsonFile(o.out + "/diagnosis.json", diagnosis::DiagnosisToJson(d));
@@ -66,13 +83,18 @@ void AddDiagnoseCommand(CLI::App& app) {
              }())
       ->required();
   cmd->add_option("--params", o->params,
-                  "JSON of nominal parameter overrides, or a truth/model file's \"parameters\"");
+                  "JSON of nominal parameter overrides, or a truth/model file's \"parameters\" "
+                  "(a diagnose model.json brings its \"effects\" too: diagnose it again)");
+  cmd->add_option("--causes", o->options.max_causes,
+                  "Most causes to name: while those named leave much of the error, the "
+                  "extended model is diagnosed again")
+      ->capture_default_str();
   cmd->add_option("--out", o->out, "Directory for diagnosis.json, model.json, report.html")
       ->required();
   cmd->add_option(
          "--segment", o->options.split.segment_s,
          "Segment length [s]: each segment is simulated from its own initial state, estimated "
-         "from the data")
+         "from the data (0: 1.5 hull lengths of travel, at least 10 s)")
       ->capture_default_str();
   cmd->add_option("--heldout", o->options.split.heldout_fraction,
                   "Fraction of the record (its end) held out for scoring")

@@ -42,16 +42,17 @@ void RunEvaluate(const EvaluateOptions& o) {
   FigureGrid grid;
   grid.SetTitle("free run of " + model.value("method", std::string("model")) + " on " + o.data)
       .SetXLabel("t", "s");
-  for (const auto& [state, _] : model.at("equations").items()) {
+  int panels = 0;
+  for (const std::string& state : e.run.channels) {
     if (!data.Has(state)) continue;
+    ++panels;
     LinePlot p;
     p.SetYLabel(state)
         .AddSeries("measured", data.t(), data[state])
         .AddSeries("model", data.t(), e.run.simulated[state]);
     grid.Add(std::move(p));
   }
-  grid.WriteSvg(o.out + "/free_run.svg", 1000,
-                260 * static_cast<int>(model.at("equations").size()) + 80);
+  grid.WriteSvg(o.out + "/free_run.svg", 1000, 260 * panels + 80);
   WriteJsonFile(o.out + "/metrics.json", e.metrics);
   std::cerr << "usvid evaluate: wrote " << o.out << "/metrics.json and free_run.svg\n";
 }

@@ -53,9 +53,10 @@ void AddIdentifyCommand(CLI::App& app) {
                   "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge), "
                   "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data) or fossen-ceres "
                   "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map) or "
-                  "refit (the --vessel's own coefficients, Ceres multiple shooting)")
+                  "refit (the --vessel's own coefficients, Ceres multiple shooting) or nominal "
+                  "(the --vessel as it is, a baseline)")
       ->required()
-      ->check(CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit"}));
+      ->check(CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit", "nominal"}));
   cmd->add_option("--data", o->data, "Training data CSV")->required();
   cmd->add_option("--vessel", o->request.vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');
@@ -77,7 +78,8 @@ void AddIdentifyCommand(CLI::App& app) {
                   "fossen-ceres: simulation (multiple shooting, default) or equation error")
       ->check(CLI::IsMember({"simulation", "equation"}));
   cmd->add_option("--segment", o->request.segment_s,
-                  "fossen-ceres, refit: shooting segment length [s]");
+                  "fossen-ceres, refit: shooting segment length [s] (default: fossen-ceres 10 s, "
+                  "refit 1.5 hull lengths of travel, at least 10 s)");
   cmd->add_option("--refit-params", o->request.refit_params,
                   "refit: the parameters to fit (default: the vessel's damping group, for "
                   "kvlcc2 its 17 hull coefficients)")
@@ -87,7 +89,7 @@ void AddIdentifyCommand(CLI::App& app) {
                   "start")
       ->capture_default_str();
   cmd->add_option("--params", o->params,
-                  "refit: starting parameters (JSON of name: value, or a model's "
+                  "refit, nominal: starting parameters (JSON of name: value, or a model's "
                   "\"parameters\"); default the vessel's");
   cmd->add_flag("--robust", o->request.robust, "fossen-ceres: Huber loss");
   cmd->add_option("--out", o->out, "model.json to write")->required();

@@ -18,9 +18,10 @@
 namespace usvid {
 
 struct RefitOptions {
-  std::vector<std::string> free;  // parameter names; empty: the vessel's damping group
-  double segment_s = 10.0;
-  double prior_sd = 0.5;  // relative to the starting value
+  // Parameter names; empty: the vessel's kRefitParams, else its damping group.
+  std::vector<std::string> free;
+  double segment_s = 0.0;  // 0: automatic (simulation/segment_length.h)
+  double prior_sd = 0.5;   // relative to the starting value
   int max_iterations = 100;
   int threads = 1;
 };
@@ -34,6 +35,7 @@ struct RefitResult {
   bool converged = false;
   double initial_cost = 0.0, final_cost = 0.0;
   int iterations = 0, segments = 0;
+  double segment_s = 0.0;
   double seconds = 0.0;
 };
 

@@ -14,6 +14,7 @@
 #include "simulation/input_track.h"
 #include "simulation/open_loop.h"
 #include "simulation/recorded_inputs.h"
+#include "simulation/segment_length.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid::refit {
@@ -112,9 +113,14 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   // Free parameters.
   std::array<bool, V::kParams> free{};
   std::vector<std::string> names = o.free;
-  if (names.empty())
-    for (int i = 0; i < V::kParams; ++i)
-      if (V::kParamGroups[i] == ParamGroup::kDamping) names.emplace_back(V::kParamNames[i]);
+  if (names.empty()) {
+    if constexpr (requires { V::kRefitParams; }) {
+      for (std::string_view n : V::kRefitParams) names.emplace_back(n);
+    } else {
+      for (int i = 0; i < V::kParams; ++i)
+        if (V::kParamGroups[i] == ParamGroup::kDamping) names.emplace_back(V::kParamNames[i]);
+    }
+  }
   for (const std::string& n : names) {
     const auto it = std::find(info.params.begin(), info.params.end(), n);
     if (it == info.params.end())
@@ -145,7 +151,9 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     const double var = n > 1 ? sum2 / n - (sum / n) * (sum / n) : 0.0;
     sd[c] = var > 0 ? std::sqrt(var) : 1.0;
   }
-  if (!(o.segment_s > 0)) throw InputError("refit: --segment must be positive");
+  if (!(o.segment_s >= 0)) throw InputError("refit: --segment must be positive (0: automatic)");
+  const double segment_s = o.segment_s > 0 ? o.segment_s : AutomaticSegmentSeconds(data, info);
+  result.segment_s = segment_s;
   if (!(o.prior_sd > 0)) throw InputError("refit: the prior's standard deviation must be positive");
   std::array<double, V::kParams> scale, theta;
   for (int i = 0; i < V::kParams; ++i) {
@@ -157,7 +165,7 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   std::vector<std::pair<Eigen::Index, Eigen::Index>> bounds;
   for (Eigen::Index a = 0; a + 1 < data.rows();) {
     Eigen::Index b = a + 1;
-    while (b + 1 < data.rows() && data.t()(b + 1) - data.t()(a) <= o.segment_s) ++b;
+    while (b + 1 < data.rows() && data.t()(b + 1) - data.t()(a) <= segment_s) ++b;
     bounds.emplace_back(a, b);
     a = b;
   }

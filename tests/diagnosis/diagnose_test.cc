@@ -77,3 +77,40 @@ TEST(DiagnoseTest, ProposesTheMissingTermBeyondTheCatalogue) {
 
 }  // namespace
 }  // namespace usvid::diagnosis
+
+namespace usvid::diagnosis {
+namespace {
+
+TEST(DiagnoseTest, NamesASecondCauseOnTheExtendedModel) {
+  // Two things wrong at once: 1.5 kN of thrust missing (0.3 m/s^2 on 4935 kg) and a yaw-moment
+  // bias of 800 N m. No single effect explains 90 % of the error, so the model extended by the
+  // first cause is diagnosed again and the second is named, sizes within 10 %.
+  const auto& p = FindVessel("odin3dof").Info().default_params;
+  const Effect surge{EffectKind::kSurgeForce, {{"acceleration", -0.3}}};
+  const Effect bias{EffectKind::kInputBias, {{"bias", 800.0}}};
+  const Dataset data = Simulate("odin3dof", "random-steps", 300, p, {surge, bias}, 3);
+  const Diagnosis d = Diagnose(data, "odin3dof", p, {});
+  ASSERT_EQ(d.further_causes.size(), 1u) << d.cause;
+  std::map<std::string, double> named = {{d.cause, d.cause_effect->parameters.begin()->second}};
+  named[std::string(d.further_causes[0].effect.name())] =
+      d.further_causes[0].effect.parameters.begin()->second;
+  ASSERT_TRUE(named.contains("surge_force") && named.contains("input_bias"));
+  EXPECT_NEAR(named["surge_force"], -0.3, 0.03);
+  EXPECT_NEAR(named["input_bias"], 800.0, 80.0);
+  EXPECT_GT(d.heldout_error_reduction, 0.5);
+}
+
+TEST(DiagnoseTest, StartsFromTheEffectsTheNominalModelAlreadyHas) {
+  // Diagnosing a model that already carries the data's effect finds nothing more to name.
+  const auto& p = FindVessel("odin3dof").Info().default_params;
+  const Effect current{EffectKind::kCurrent, {{"current_north", 0.4}, {"current_east", 0.2}}};
+  const Dataset data = Simulate("odin3dof", "zigzag:20/20", 200, p, {current}, 5);
+  DiagnoseOptions options;
+  options.base_effects = {current};
+  const Diagnosis d = Diagnose(data, "odin3dof", p, options);
+  EXPECT_EQ(d.cause, "none") << d.candidates.front().fit.effect.name();
+  EXPECT_LT(d.nominal_error, 1.5 * d.noise_floor);
+}
+
+}  // namespace
+}  // namespace usvid::diagnosis

@@ -1,0 +1,30 @@
+#include "simulation/segment_length.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace usvid {
+
+double AutomaticSegmentSeconds(const Dataset& data, const VesselInfo& info) {
+  constexpr double kMinimum = 10.0;
+  if (!(info.length_m > 0)) return kMinimum;
+  std::vector<double> speed;
+  const Channel* U = data.Find("U");
+  const Channel* u = data.Find("u");
+  const Channel* v = data.Find("v");
+  for (Eigen::Index k = 0; k < data.rows(); ++k) {
+    if (U != nullptr && U->sampled(k)) {
+      speed.push_back(std::abs(U->values(k)));
+    } else if (u != nullptr && u->sampled(k)) {
+      const double vk = v != nullptr && v->sampled(k) ? v->values(k) : 0.0;
+      speed.push_back(std::hypot(u->values(k), vk));
+    }
+  }
+  if (speed.empty()) return kMinimum;
+  std::nth_element(speed.begin(), speed.begin() + speed.size() / 2, speed.end());
+  const double median = speed[speed.size() / 2];
+  return median > 0 ? std::max(kMinimum, std::round(1.5 * info.length_m / median)) : kMinimum;
+}
+
+}  // namespace usvid
