@@ -49,6 +49,9 @@ EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input)
     case EffectKind::kSurgeForce:
       add("acceleration", 0.0, -0.5, 0.5);
       break;
+    case EffectKind::kResistance:
+      add("scale", 1.0, 0.2, 5.0);
+      break;
   }
   return s;
 }

@@ -1,8 +1,8 @@
 // What is fitted for each effect of the catalogue: the free sizes, their contract names, bounds
 // and starting values, and how they set EffectValues<T>. Smooth effects (current, actuator lag,
-// biases, inertia, damping, surge force) are fitted by Ceres through the differentiable rollout;
-// input delay and saturation move signals in time or clip them, so they are found by a bounded
-// NLopt search.
+// biases, inertia, damping, surge force, resistance) are fitted by Ceres through the differentiable
+// rollout; input delay and saturation move signals in time or clip them, so they are found by a
+// bounded NLopt search.
 //   effect        sizes                         bounds
 //   input_delay   delay_s                       [0, 3] s
 //   current       current_north, current_east   +-3 m/s each
@@ -13,6 +13,7 @@
 //   damping       scale                         [0.2, 5]
 //   saturation    fraction                      [0.05, 1]
 //   surge_force   acceleration [m/s^2]          +-0.5
+//   resistance    scale                         [0.2, 5]
 #pragma once
 
 #include <string>
@@ -66,6 +67,9 @@ void ApplySizes(EffectKind kind, const T* theta, EffectValues<T>& e) {
       break;
     case EffectKind::kSurgeForce:
       e.surge_acceleration = theta[0];
+      break;
+    case EffectKind::kResistance:
+      e.resistance_scale = theta[0];
       break;
   }
 }

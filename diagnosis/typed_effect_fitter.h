@@ -102,6 +102,7 @@ class TypedEffectFitter : public EffectFitter {
       case EffectKind::kActuatorLag:
       case EffectKind::kInertia:
       case EffectKind::kDamping:
+      case EffectKind::kResistance:
         for (int k = 0; k <= 8; ++k) grid.push_back({lo * std::pow(hi / lo, k / 8.0)});
         break;
       case EffectKind::kInputBias:

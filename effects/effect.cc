@@ -10,7 +10,7 @@
 namespace usvid {
 namespace {
 
-constexpr std::array<EffectInfo, 9> kCatalogue = {{
+constexpr std::array<EffectInfo, 10> kCatalogue = {{
     {EffectKind::kInputDelay, "input_delay", "delay_s",
      "every input reaches the plant late by a constant time"},
     {EffectKind::kCurrent, "current", "speed",
@@ -26,8 +26,10 @@ constexpr std::array<EffectInfo, 9> kCatalogue = {{
     {EffectKind::kSaturation, "saturation", "fraction",
      "each input clipped at +-fraction x its peak absolute command in the data"},
     {EffectKind::kSurgeForce, "surge_force", "acceleration",
-     "constant surge force missing from the model (propulsion or resistance mismatch, a "
-     "towing force), as an acceleration [m/s^2]"},
+     "constant surge force missing from the model (propulsion mismatch, a towing force), as an "
+     "acceleration [m/s^2]"},
+    {EffectKind::kResistance, "resistance", "scale",
+     "surge resistance off by a factor (the rest of the damping as modelled)"},
 }};
 
 std::string KnownNames() {
@@ -50,6 +52,7 @@ std::string Violation(EffectKind kind, double value) {
       return "";
     case EffectKind::kInertia:
     case EffectKind::kDamping:
+    case EffectKind::kResistance:
       return value > 0.0 && value <= 100.0 ? "" : "scale must be in (0, 100]";
     case EffectKind::kSaturation:
       return value > 0.0 && value <= 1.0 ? "" : "fraction must be in (0, 1]";
@@ -67,7 +70,7 @@ double ParseValue(const std::string& text, const std::string& where) {
 
 }  // namespace
 
-const std::array<EffectInfo, 9>& EffectCatalogue() { return kCatalogue; }
+const std::array<EffectInfo, 10>& EffectCatalogue() { return kCatalogue; }
 
 const EffectInfo& InfoOf(EffectKind kind) { return kCatalogue[static_cast<size_t>(kind)]; }
 

@@ -10,7 +10,8 @@
 //   damping       damping parameters times `scale`
 //   saturation    each input clipped at +-fraction x its peak absolute command
 //   surge_force   a constant surge force the model lacks, as an acceleration [m/s^2] on the
-//                 surge (or speed) state: a propulsion or resistance mismatch, a towing force
+//                 surge (or speed) state: a propulsion mismatch, a towing force
+//   resistance    the surge resistance parameters times `scale` (the rest of the damping not)
 // ParseEffect throws InputError naming the --effect item and the rule it breaks.
 #pragma once
 
@@ -33,7 +34,8 @@ enum class EffectKind {
   kInertia,
   kDamping,
   kSaturation,
-  kSurgeForce
+  kSurgeForce,
+  kResistance
 };
 
 struct EffectInfo {
@@ -43,7 +45,7 @@ struct EffectInfo {
   std::string_view meaning;
 };
 
-const std::array<EffectInfo, 9>& EffectCatalogue();
+const std::array<EffectInfo, 10>& EffectCatalogue();
 const EffectInfo& InfoOf(EffectKind kind);
 
 struct Effect {

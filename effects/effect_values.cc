@@ -32,6 +32,9 @@ void SetEffect(const Effect& e, EffectValues<double>& v) {
     case EffectKind::kSurgeForce:
       v.surge_acceleration = e.at("acceleration");
       break;
+    case EffectKind::kResistance:
+      v.resistance_scale = e.at("scale");
+      break;
   }
 }
 

@@ -22,6 +22,7 @@ struct EffectValues {
   T sensor_bias = T(0);          // added to the measured rate channel
   T inertia_scale = T(1);
   T damping_scale = T(1);
+  T resistance_scale = T(1);         // surge resistance parameters (ParamGroup::kResistance)
   double saturation_fraction = 0.0;  // 0: no clipping
   T surge_acceleration = T(0);       // added to the surge (or speed) state's derivative
   // Extra delay per input, on top of delay_s (empty: none); for per-input delay estimates.
@@ -45,6 +46,7 @@ EffectValues<T> CastValues(const EffectValues<double>& e) {
   out.sensor_bias = T(e.sensor_bias);
   out.inertia_scale = T(e.inertia_scale);
   out.damping_scale = T(e.damping_scale);
+  out.resistance_scale = T(e.resistance_scale);
   out.saturation_fraction = e.saturation_fraction;
   out.surge_acceleration = T(e.surge_acceleration);
   out.input_delays_s = e.input_delays_s;

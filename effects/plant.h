@@ -5,7 +5,8 @@
 //   u_a = x_lag,  x_lag' = (u_s - x_lag) / time_constant     (actuator_lag; else u_a = u_s)
 //   u_a[yaw] += input_bias                                   (input_bias)
 //   x' = V::Derivative(x, u_a, p_eff, {current})             (current)
-// where p_eff is p with inertia and damping parameters scaled (inertia, damping). The measured
+// where p_eff is p with inertia, damping and resistance parameters scaled (inertia, damping,
+// resistance). The measured
 // rate channel carries sensor_bias (MeasuredRate); input_delay shifts u_c in time (caller);
 // surge_force adds its acceleration to the surge state's derivative (u, else U, else the msd's v).
 #pragma once
@@ -39,6 +40,9 @@ struct Plant {
           break;
         case ParamGroup::kDamping:
           p_eff[i] = p[i] * e.damping_scale;
+          break;
+        case ParamGroup::kResistance:
+          p_eff[i] = p[i] * e.damping_scale * e.resistance_scale;
           break;
         case ParamGroup::kOther:
           p_eff[i] = p[i];

@@ -46,11 +46,10 @@ std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
   return map.ToSvg(900, 120 + 60 * static_cast<int>(methods.size()));
 }
 
-// One held-out run (the first test maneuver, first noise level and seed) against every method
+// One held-out run (test maneuver `test`, first noise level and seed) against every method
 // trained on the first training maneuver each could fit.
 std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
-                       const std::string& vessel) {
-  const std::string test = suite.test_maneuvers.front();
+                       const std::string& vessel, const std::string& test) {
   std::map<std::string, const ResultRow*> chosen;  // method -> row
   for (const ResultRow& r : rows)
     if (r.vessel == vessel && r.test_maneuver == test && r.status == "ok" &&
@@ -58,15 +57,25 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
       chosen[r.method] = &r;
   if (chosen.empty()) return "";
   const ResultRow& first = *chosen.begin()->second;
-  const Dataset held =
-      SimulateForSuite(vessel, test, suite.test_seconds, first.noise, first.test_seed);
-  std::set<std::string> channels;
-  for (const auto& [_, r] : chosen)
-    for (const auto& [state, __] : r->model.at("equations").items()) channels.insert(state);
-  FigureGrid grid;
-  grid.SetTitle(vessel + ", held-out " + test + ": measured and free runs").SetXLabel("t", "s");
+  Dataset held;
+  if (suite.Measured()) {
+    for (const SuiteData& d : suite.test_data)
+      if (d.name == test) held = LoadSuiteData(d);
+  } else {
+    held = SimulateForSuite(vessel, test, suite.test_seconds, first.noise, first.test_seed);
+  }
   std::map<std::string, Evaluation> runs;
   for (const auto& [method, r] : chosen) runs[method] = EvaluateModel(r->model, held);
+  // The states the models identify (a vessel model: its dynamic states), and on measured data
+  // the heading too.
+  std::set<std::string> channels;
+  for (const auto& [_, e] : runs)
+    for (const std::string& c : e.run.channels)
+      if ((c != "north" && c != "east" && c != "psi" && c != "chi") ||
+          (suite.Measured() && (c == "psi" || c == "chi")))
+        channels.insert(c);
+  FigureGrid grid;
+  grid.SetTitle(vessel + ", held-out " + test + ": measured and free runs").SetXLabel("t", "s");
   for (const std::string& c : channels) {
     if (!held.Has(c)) continue;
     LinePlot p;
@@ -133,9 +142,13 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
     WriteFileAtomically(dir + "/fit_" + vessel + ".svg", heat);
     html << "<h2>" << svg::Escape(vessel) << "</h2>\n<figure class=\"plot\">" << heat
          << "</figure>\n";
-    const std::string run = ExampleRun(suite, rows, vessel);
-    if (!run.empty()) {
-      WriteFileAtomically(dir + "/run_" + vessel + ".svg", run);
+    // Simulated suites: the first test maneuver; measured data: every test file.
+    const size_t tests = suite.Measured() ? suite.test_maneuvers.size() : 1;
+    for (size_t t = 0; t < tests; ++t) {
+      const std::string run = ExampleRun(suite, rows, vessel, suite.test_maneuvers[t]);
+      if (run.empty()) continue;
+      WriteFileAtomically(
+          dir + "/run_" + vessel + (t == 0 ? "" : "_" + std::to_string(t + 1)) + ".svg", run);
       html << "<figure class=\"plot\">" << run << "</figure>\n";
     }
   }

@@ -1,5 +1,6 @@
 #include "harness/results.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -49,6 +50,43 @@ std::map<Key, std::vector<double>> Group(const std::vector<ResultRow>& rows,
   for (const ResultRow& r : rows)
     if (r.status == "ok" && keep(r)) g[key(r)].push_back(std::max(r.mean_fit_percent, kFitFloor));
   return g;
+}
+
+// On measured data: per test maneuver, method x channel (heading and positions too), the
+// free-run fit % (mean ± sd over seeds).
+void PerChannelTables(const Suite& suite, const std::vector<ResultRow>& rows,
+                      const std::string& vessel, const std::set<std::string>& methods,
+                      std::ostringstream& md) {
+  std::vector<std::string> channels;
+  auto add = [&channels](const std::string& c) {
+    if (std::find(channels.begin(), channels.end(), c) == channels.end()) channels.push_back(c);
+  };
+  std::set<std::string> present;
+  for (const ResultRow& r : rows)
+    for (const auto& [c, _] : r.channel_fit_percent) present.insert(c);
+  for (const char* c : {"r", "psi", "u", "v", "U", "chi", "north", "east"})
+    if (present.contains(c)) add(c);
+  for (const std::string& c : present) add(c);
+  for (const std::string& test : suite.test_maneuvers) {
+    md << "\n### " << test << ": free-run fit % per channel\n\n| method |";
+    for (const std::string& c : channels) md << ' ' << c << " |";
+    md << "\n| --- |";
+    for (size_t i = 0; i < channels.size(); ++i) md << " --- |";
+    md << '\n';
+    for (const std::string& m : methods) {
+      std::map<std::string, std::vector<double>> by;
+      for (const ResultRow& r : rows)
+        if (r.vessel == vessel && r.method == m && r.test_maneuver == test && r.status == "ok")
+          for (const auto& [c, fit] : r.channel_fit_percent)
+            by[c].push_back(std::max(fit, kFitFloor));
+      if (by.empty()) continue;
+      md << "| " << m << " |";
+      for (const std::string& c : channels)
+        md << ' ' << Cell(by.contains(c) ? Of(by[c]) : Stats{}) << " |";
+      md << '\n';
+    }
+  }
+  md << '\n';
 }
 
 }  // namespace
@@ -129,6 +167,7 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
       }
       md << '\n';
     }
+    if (suite.Measured()) PerChannelTables(suite, rows, vessel, methods, md);
     // Structure and complexity per method, over every scored row of this vessel.
     std::map<std::string, std::vector<double>> prec, rec, terms, perr;
     for (const ResultRow& r : rows) {

@@ -4,6 +4,9 @@
 
 #include <chrono>
 
+#include "core/error.h"
+#include "diagnosis/diagnose.h"
+#include "diagnosis/diagnosis_json.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/identify.h"
 #include "metrics/evaluation.h"
@@ -31,10 +34,17 @@ namespace {
 
 // Complexity, structure recovery against the true terms, and parameter error against the
 // simulator's parameters where the model names them.
-void ScoreModel(const std::string& vessel, const nlohmann::json& model, ResultRow& row) {
+void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool measured,
+                ResultRow& row) {
   double precision = 0.0, recall = 0.0;
   int known = 0;
   row.terms = 0;
+  if (!model.contains("equations")) {
+    // A vessel model: its complexity is what was fitted (refit's parameters, diagnose's effects).
+    if (model.contains("refit")) row.terms = static_cast<int>(model["refit"]["free"].size());
+    if (model.contains("effects")) row.terms = static_cast<int>(model["effects"].size());
+    return;
+  }
   for (const auto& [state, eq] : model.at("equations").items()) {
     const std::string text = eq.get<std::string>();
     row.terms += TermCount(text);
@@ -49,6 +59,7 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, ResultRo
     row.precision = precision / known;
     row.recall = recall / known;
   }
+  if (measured || vessel.empty()) return;  // no true parameters to compare with
   const VesselInfo& info = FindVessel(vessel).Info();
   double worst = -1.0;
   for (size_t i = 0; i < info.params.size(); ++i) {
@@ -75,7 +86,43 @@ IdentifyRequest RequestFor(const FitJob& job) {
   r.fossen_mode = o.value("fit", r.fossen_mode);
   r.segment_s = o.value("segment_s", r.segment_s);
   r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
+  r.prior_sd = o.value("prior_sd", r.prior_sd);
+  if (o.contains("refit_params"))
+    r.refit_params = o["refit_params"].get<std::vector<std::string>>();
+  if (o.contains("states")) r.states = o["states"].get<std::vector<std::string>>();
+  if (o.contains("inputs")) r.inputs = o["inputs"].get<std::vector<std::string>>();
   return r;
+}
+
+// The suite's method "diagnose": the nominal vessel extended by the causes `usvid diagnose`
+// names on the training data; its model.json (a vessel model).
+nlohmann::json DiagnosedModel(const FitJob& job, const Dataset& train) {
+  if (job.vessel.empty()) throw InputError("diagnose: needs a vessel");
+  const nlohmann::json& o = job.method.options;
+  diagnosis::DiagnoseOptions options;
+  options.split.segment_s = o.value("segment_s", options.split.segment_s);
+  options.max_causes = o.value("causes", options.max_causes);
+  options.discover = false;  // proposals are for a person to read, not part of the model
+  const diagnosis::Diagnosis d =
+      diagnosis::Diagnose(train, job.vessel, FindVessel(job.vessel).Info().default_params, options);
+  nlohmann::json model = diagnosis::ExtendedModelJson(d);
+  model["states"] = d.channels;
+  return model;
+}
+
+// The states a model is scored on: those it has equations for, or a vessel model's states.
+std::vector<std::string> ScoredStates(const nlohmann::json& model) {
+  std::vector<std::string> states;
+  if (model.contains("equations")) {
+    for (const auto& [state, _] : model.at("equations").items()) states.push_back(state);
+  } else if (model.contains("states")) {
+    for (const auto& s : model.at("states")) {
+      const std::string name = s.get<std::string>();
+      if (name != "north" && name != "east" && name != "psi" && name != "chi")
+        states.push_back(name);
+    }
+  }
+  return states;
 }
 
 }  // namespace
@@ -91,6 +138,7 @@ nlohmann::json ResultRow::ToJson() const {
                       {"status", status}};
   if (status == "ok") {
     j["fit_percent"] = fit_percent;
+    j["channel_fit_percent"] = channel_fit_percent;
     j["nrmse"] = nrmse;
     j["mean_fit_percent"] = mean_fit_percent;
     j["diverged"] = diverged;
@@ -107,6 +155,10 @@ nlohmann::json ResultRow::ToJson() const {
 std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
                                 const std::function<void(const std::string&)>& progress) {
   const std::vector<FitJob> jobs = FitJobs(suite);
+  // Measured data are read once, before the parallel part (a bad file stops the run: exit 2).
+  std::map<std::string, Dataset> train_sets, test_sets;
+  for (const SuiteData& d : suite.train_data) train_sets[d.name] = LoadSuiteData(d);
+  for (const SuiteData& d : suite.test_data) test_sets[d.name] = LoadSuiteData(d);
   std::vector<std::vector<ResultRow>> rows(jobs.size());
   if (threads > 0) omp_set_num_threads(threads);
   int done = 0;
@@ -114,7 +166,7 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
   for (size_t j = 0; j < jobs.size(); ++j) {
     const FitJob& job = jobs[j];
     ResultRow base;
-    base.vessel = job.vessel;
+    base.vessel = job.vessel.empty() ? suite.name : job.vessel;  // vessel-less data: the suite
     base.train_maneuver = job.train_maneuver;
     base.method = job.method.Label();
     base.noise = job.noise;
@@ -125,9 +177,12 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
     std::string failure;
     const auto start = std::chrono::steady_clock::now();
     try {
-      const Dataset train = SimulateForSuite(job.vessel, job.train_maneuver, suite.train_seconds,
-                                             job.noise, job.seed);
-      model = Identify(train, RequestFor(job));
+      const Dataset train = suite.Measured()
+                                ? train_sets.at(job.train_maneuver)
+                                : SimulateForSuite(job.vessel, job.train_maneuver,
+                                                   suite.train_seconds, job.noise, job.seed);
+      model = job.method.method == "diagnose" ? DiagnosedModel(job, train)
+                                              : Identify(train, RequestFor(job));
     } catch (const std::exception& e) {
       failure = std::string("failed: ") + e.what();
     }
@@ -144,10 +199,14 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
       }
       try {
         const Dataset held =
-            SimulateForSuite(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
+            suite.Measured()
+                ? test_sets.at(test)
+                : SimulateForSuite(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
         const Evaluation e = EvaluateModel(model, held);
+        for (const auto& [channel, score] : e.metrics.at("channels").items())
+          row.channel_fit_percent[channel] = score.at("fit_percent").get<double>();
         double sum = 0.0;
-        for (const auto& [state, _] : model.at("equations").items()) {
+        for (const std::string& state : ScoredStates(model)) {
           row.fit_percent[state] = e.metrics.at(state).at("fit_percent").get<double>();
           row.nrmse[state] = e.metrics.at(state).at("nrmse").get<double>();
           sum += row.fit_percent[state];
@@ -161,7 +220,7 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
             row.regime_fit_percent[regime] =
                 regime_sum / static_cast<double>(row.fit_percent.size());
           }
-        ScoreModel(job.vessel, model, row);
+        ScoreModel(job.vessel, model, suite.Measured(), row);
         row.diverged = e.metrics.at("diverged").get<bool>();
       } catch (const std::exception& e) {
         row.status = std::string("failed: ") + e.what();

@@ -23,6 +23,7 @@ struct ResultRow {
   uint64_t seed = 1, test_seed = 1;
   std::map<std::string, double> fit_percent;  // per identified state
   std::map<std::string, double> nrmse;
+  std::map<std::string, double> channel_fit_percent;  // every channel of the free run (psi too)
   double mean_fit_percent = 0.0;
   std::map<std::string, double> regime_fit_percent;  // mean over states, per speed regime
   bool diverged = false;

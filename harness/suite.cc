@@ -1,5 +1,6 @@
 #include "harness/suite.h"
 
+#include <filesystem>
 #include <set>
 #include <sstream>
 
@@ -23,7 +24,21 @@ std::vector<T> ListOf(const nlohmann::json& v, const std::string& where) {
   return out;
 }
 
-const std::set<std::string> kMethods = {"gp", "sindy", "eb-lr", "fossen-ceres"};
+const std::set<std::string> kMethods = {"gp",    "sindy",   "eb-lr",    "fossen-ceres",
+                                        "refit", "nominal", "diagnose", "nomoto"};
+constexpr const char* kKnownMethods =
+    "gp, sindy, eb-lr, fossen-ceres, refit, nominal, diagnose, nomoto";
+
+std::vector<SuiteData> DataList(const nlohmann::json& v, const std::string& file,
+                                const std::string& where) {
+  if (!v.is_array() || v.empty())
+    throw InputError(file + ": " + where + ": expected a non-empty array");
+  const std::string dir = std::filesystem::path(file).parent_path().string();
+  std::vector<SuiteData> out;
+  for (size_t i = 0; i < v.size(); ++i)
+    out.push_back(ParseSuiteData(v[i], dir, file + ": " + where + "[" + std::to_string(i) + "]"));
+  return out;
+}
 
 }  // namespace
 
@@ -44,20 +59,48 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
   if (!v.is_object()) throw InputError(file + ": a suite is a JSON object");
   static const std::set<std::string> kFields = {
       "name",  "vessels", "train_maneuvers", "test_maneuvers", "methods",
-      "noise", "seeds",   "train_seconds",   "test_seconds"};
+      "noise", "seeds",   "train_seconds",   "test_seconds",   "data"};
   for (const auto& [key, _] : v.items())
     if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
-  for (const char* required : {"vessels", "train_maneuvers", "test_maneuvers", "methods"})
+  const bool measured = v.contains("data");
+  for (const char* required : {"vessels", "train_maneuvers", "test_maneuvers", "methods"}) {
+    if (measured && std::string(required) != "methods") continue;
     if (!v.contains(required)) throw InputError(file + ": missing field '" + required + "'");
+  }
   Suite s;
   if (v.contains("name")) {
     if (!v["name"].is_string()) throw InputError(file + ": 'name' must be a string");
     s.name = v["name"].get<std::string>();
   }
-  s.vessels = ListOf<std::string>(v["vessels"], file + ": vessels");
+  if (measured) {
+    const nlohmann::json& data = v["data"];
+    if (!data.is_object() || !data.contains("train") || !data.contains("test"))
+      throw InputError(file + ": data: expected {\"train\": [...], \"test\": [...]}");
+    for (const auto& [key, _] : data.items())
+      if (key != "train" && key != "test")
+        throw InputError(file + ": data: unknown field '" + key + "'");
+    for (const char* key : {"train_maneuvers", "test_maneuvers", "train_seconds", "test_seconds"})
+      if (v.contains(key))
+        throw InputError(file + ": '" + key + "' does not apply to a suite on measured data");
+    s.train_data = DataList(data["train"], file, "data: train");
+    s.test_data = DataList(data["test"], file, "data: test");
+    for (const SuiteData& d : s.train_data) s.train_maneuvers.push_back(d.name);
+    for (const SuiteData& d : s.test_data) s.test_maneuvers.push_back(d.name);
+    if (v.contains("vessels")) {
+      if (!v["vessels"].is_array()) throw InputError(file + ": vessels: expected an array");
+      for (const auto& item : v["vessels"]) {
+        if (!item.is_string()) throw InputError(file + ": vessels: names are strings");
+        s.vessels.push_back(item.get<std::string>());
+      }
+    }
+    if (s.vessels.size() > 1)
+      throw InputError(file + ": a suite on measured data has at most one vessel");
+  } else {
+    s.vessels = ListOf<std::string>(v["vessels"], file + ": vessels");
+    s.train_maneuvers = ListOf<std::string>(v["train_maneuvers"], file + ": train_maneuvers");
+    s.test_maneuvers = ListOf<std::string>(v["test_maneuvers"], file + ": test_maneuvers");
+  }
   for (const std::string& vessel : s.vessels) FindVessel(vessel);  // throws on unknown names
-  s.train_maneuvers = ListOf<std::string>(v["train_maneuvers"], file + ": train_maneuvers");
-  s.test_maneuvers = ListOf<std::string>(v["test_maneuvers"], file + ": test_maneuvers");
   if (!v["methods"].is_array() || v["methods"].empty())
     throw InputError(file + ": methods: expected a non-empty array");
   for (const auto& m : v["methods"]) {
@@ -74,11 +117,11 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     }
     if (!kMethods.contains(sm.method))
       throw InputError(file + ": methods: unknown method '" + sm.method +
-                       "' (known: gp, sindy, eb-lr, fossen-ceres)");
+                       "' (known: " + kKnownMethods + ")");
     s.methods.push_back(sm);
   }
   s.noise = v.contains("noise") ? ListOf<double>(v["noise"], file + ": noise")
-                                : std::vector<double>{0.005};
+                                : std::vector<double>{measured ? 0.0 : 0.005};
   for (double n : s.noise)
     if (!(n >= 0 && n < 1)) throw InputError(file + ": noise: levels must be in [0, 1)");
   s.seeds = v.contains("seeds") ? ListOf<uint64_t>(v["seeds"], file + ": seeds")
@@ -120,6 +163,14 @@ nlohmann::json SuiteToJson(const Suite& s) {
     j["method"] = m.method;
     methods.push_back(j);
   }
+  if (s.Measured()) {
+    nlohmann::json train = nlohmann::json::array(), test = nlohmann::json::array();
+    for (const SuiteData& d : s.train_data) train.push_back(SuiteDataToJson(d));
+    for (const SuiteData& d : s.test_data) test.push_back(SuiteDataToJson(d));
+    return {
+        {"name", s.name},     {"vessels", s.vessels}, {"data", {{"train", train}, {"test", test}}},
+        {"methods", methods}, {"noise", s.noise},     {"seeds", s.seeds}};
+  }
   return {{"name", s.name},
           {"vessels", s.vessels},
           {"train_maneuvers", s.train_maneuvers},
@@ -137,6 +188,14 @@ std::vector<FitJob> FitJobs(const Suite& s) {
   // gives rows saying why, so the tables show the gap instead of hiding it. Only maneuvers a
   // vessel cannot run at all (a zig-zag without a heading) are left out.
   std::vector<FitJob> jobs;
+  if (s.Measured()) {
+    const std::string vessel = s.vessels.empty() ? "" : s.vessels[0];
+    for (const std::string& train : s.train_maneuvers)
+      for (const SuiteMethod& m : s.methods)
+        for (double noise : s.noise)
+          for (uint64_t seed : s.seeds) jobs.push_back({vessel, train, m, noise, seed});
+    return jobs;
+  }
   for (const std::string& vessel : s.vessels) {
     const VesselInfo& info = FindVessel(vessel).Info();
     for (const std::string& train : s.train_maneuvers) {

@@ -6,6 +6,13 @@
 //    (method options: gp's operators, population, generations, max_depth, ols_threshold;
 //    fossen-ceres' fit and segment_s; any method's rate, the Hz its data are resampled to)
 //    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180}
+// Or, on measured data (suite_data.h), the training and test files instead of maneuvers:
+//   {"name": "kvlcc2-marin", "vessels": ["kvlcc2"], "data": {"train": [{"name": ...,
+//    "file": ..., "format": "marin-dat"}], "test": [...]}, "methods": [...]}
+// with at most one vessel (whose channels the files hold; none when the methods name their
+// "states" and "inputs"), maneuver names taken from the data names, no added noise.
+// Methods: gp, sindy, eb-lr, fossen-ceres, refit, nominal, nomoto, and diagnose (the nominal
+// vessel extended by the causes `usvid diagnose` names on the training data).
 // Unknown fields, wrong types and unknown names are errors naming the file and field.
 #pragma once
 
@@ -13,6 +20,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "harness/suite_data.h"
 
 namespace usvid {
 
@@ -31,6 +40,9 @@ struct Suite {
   std::vector<uint64_t> seeds;
   double train_seconds = 300.0;
   double test_seconds = 180.0;
+  // Measured data (train_maneuvers and test_maneuvers then hold their names).
+  std::vector<SuiteData> train_data, test_data;
+  bool Measured() const { return !train_data.empty(); }
 };
 
 // One fit: a method trained on one vessel's maneuver at a noise level and seed.
@@ -42,6 +54,7 @@ struct FitJob {
   std::string Id() const;
 };
 
+// Relative data paths are taken from the folder of `file`.
 Suite ParseSuite(const nlohmann::json& value, const std::string& file);
 // The embedded default: odin3dof and odin-hs; zig-zag, step grid and random steps; every
 // method; two noise levels; three seeds. `quick`: one vessel's worth, smaller GP, one seed.

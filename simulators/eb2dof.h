@@ -29,9 +29,10 @@ struct Eb2Dof {
   static constexpr std::array<double, kParams> kDefaultParams = {
       0.3, 0.01, 1.2, 0.05, 0.02, 0.0015, 1e-4, 0.5, 0.5, 0.15, 2.0};
   static constexpr std::array<ParamGroup, kParams> kParamGroups = {
-      ParamGroup::kInertia, ParamGroup::kInertia, ParamGroup::kInertia, ParamGroup::kInertia,
-      ParamGroup::kDamping, ParamGroup::kDamping, ParamGroup::kDamping, ParamGroup::kDamping,
-      ParamGroup::kDamping, ParamGroup::kDamping, ParamGroup::kDamping};
+      ParamGroup::kInertia,    ParamGroup::kInertia,    ParamGroup::kInertia,
+      ParamGroup::kInertia,    ParamGroup::kResistance, ParamGroup::kResistance,  // sU1, sU2
+      ParamGroup::kResistance, ParamGroup::kDamping,    ParamGroup::kDamping,     // sU3
+      ParamGroup::kDamping,    ParamGroup::kDamping};
   static constexpr std::array<double, kInputs> kInputMin = {0.0, -0.4712};
   static constexpr std::array<double, kInputs> kInputMax = {1.0, 0.4712};
   static constexpr int kYawInput = 1, kThrustInput = 0, kRateState = 4, kHeadingState = 2;

@@ -30,7 +30,8 @@
 // Current  the hydrodynamics see nu_r = nu - R(psi)^T [current_north, current_east, 0]; the
 //   equations above give nu_r', and u' = u_r' + r v_c, v' = v_r' - r u_c (as odin-hs).
 // Inertia parameters (m, I_zG, m'_x, m'_y, J'_z) scale the whole mass matrix together; damping
-// parameters are the hull's twenty coefficients; propeller and rudder coefficients are "other".
+// parameters are the hull's twenty coefficients, R'_0 among them the resistance; propeller and
+// rudder coefficients are "other".
 #pragma once
 
 #include <cmath>
@@ -104,7 +105,10 @@ struct Kvlcc2 {
   static constexpr std::array<ParamGroup, kParams> kParamGroups = [] {
     std::array<ParamGroup, kParams> g{};
     for (int i = 0; i < kParams; ++i)
-      g[i] = i < 5 ? ParamGroup::kInertia : i < 22 ? ParamGroup::kDamping : ParamGroup::kOther;
+      g[i] = i < 5    ? ParamGroup::kInertia
+             : i == 5 ? ParamGroup::kResistance  // R_0
+             : i < 22 ? ParamGroup::kDamping
+                      : ParamGroup::kOther;
     return g;
   }();
   // Parameter indices, in kParamNames order.

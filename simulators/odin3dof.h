@@ -26,9 +26,10 @@ struct Odin3Dof {
   static constexpr std::array<double, kParams> kDefaultParams = {
       4935.0, 4935.0, 20928.0, 50.0, 243.0, 200.0, 2000.0, 1281.0, 1281.0, 2975.0};
   static constexpr std::array<ParamGroup, kParams> kParamGroups = {
-      ParamGroup::kInertia, ParamGroup::kInertia, ParamGroup::kInertia, ParamGroup::kDamping,
-      ParamGroup::kDamping, ParamGroup::kDamping, ParamGroup::kDamping, ParamGroup::kDamping,
-      ParamGroup::kDamping, ParamGroup::kDamping};
+      ParamGroup::kInertia,    ParamGroup::kInertia,    ParamGroup::kInertia,
+      ParamGroup::kResistance, ParamGroup::kResistance,  // Xu, Xuu
+      ParamGroup::kDamping,    ParamGroup::kDamping,    ParamGroup::kDamping,
+      ParamGroup::kDamping,    ParamGroup::kDamping};
   // Surge force for 0 to about 14 m/s; the sway force and yaw moment two waterjets of about
   // 10 kN each give at 27 deg of nozzle, 3.8 m behind the centre of gravity.
   static constexpr std::array<double, kInputs> kInputMin = {0.0, -5000.0, -40000.0};

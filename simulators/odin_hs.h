@@ -124,8 +124,8 @@ struct OdinHs {
   static constexpr std::array<ParamGroup, kParams> kParamGroups = {
       ParamGroup::kInertia, ParamGroup::kInertia, ParamGroup::kInertia, ParamGroup::kInertia,
       ParamGroup::kInertia,
+      ParamGroup::kResistance, ParamGroup::kResistance, ParamGroup::kResistance,  // R(U)
       ParamGroup::kDamping, ParamGroup::kDamping, ParamGroup::kDamping, ParamGroup::kDamping,
-      ParamGroup::kDamping, ParamGroup::kDamping, ParamGroup::kDamping,
       ParamGroup::kOther, ParamGroup::kOther, ParamGroup::kOther, ParamGroup::kOther,
       ParamGroup::kOther, ParamGroup::kOther, ParamGroup::kOther, ParamGroup::kOther,
       ParamGroup::kOther, ParamGroup::kOther, ParamGroup::kOther, ParamGroup::kOther,

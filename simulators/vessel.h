@@ -24,8 +24,10 @@
 namespace usvid {
 
 // What a parameter stands for, so that effects can scale a whole class of them
-// (effects `inertia` and `damping` of contract section 3).
-enum class ParamGroup { kInertia, kDamping, kOther };
+// (effects `inertia`, `damping` and `resistance` of contract section 3). kResistance is the
+// part of the damping that resists forward motion (surge resistance): `damping` scales it with
+// the rest, `resistance` alone.
+enum class ParamGroup { kInertia, kDamping, kResistance, kOther };
 
 // The world around the hull: a constant irrotational current, earth-fixed [m/s].
 template <typename T>

@@ -146,7 +146,8 @@ void AddSimulateCommand(CLI::App& app) {
                   "at its time stamps, initial state from its first row");
   cmd->add_option("--effect", o->effects,
                   "NAME=VALUE, repeatable: input_delay, current (SPEED[:DIR_DEG]), actuator_lag, "
-                  "input_bias, sensor_bias, inertia, damping, saturation, surge_force (m/s^2)");
+                  "input_bias, sensor_bias, inertia, damping, saturation, surge_force (m/s^2), "
+                  "resistance");
   cmd->add_option("--noise", o->noise,
                   "Gaussian noise on every measured channel, as a fraction of its standard "
                   "deviation (0.01 = 1 %)");

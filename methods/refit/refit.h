@@ -18,7 +18,7 @@
 namespace usvid {
 
 struct RefitOptions {
-  // Parameter names; empty: the vessel's kRefitParams, else its damping group.
+  // Parameter names; empty: the vessel's kRefitParams, else its damping and resistance groups.
   std::vector<std::string> free;
   double segment_s = 0.0;  // 0: automatic (simulation/segment_length.h)
   double prior_sd = 0.5;   // relative to the starting value

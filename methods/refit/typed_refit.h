@@ -118,7 +118,9 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
       for (std::string_view n : V::kRefitParams) names.emplace_back(n);
     } else {
       for (int i = 0; i < V::kParams; ++i)
-        if (V::kParamGroups[i] == ParamGroup::kDamping) names.emplace_back(V::kParamNames[i]);
+        if (V::kParamGroups[i] == ParamGroup::kDamping ||
+            V::kParamGroups[i] == ParamGroup::kResistance)
+          names.emplace_back(V::kParamNames[i]);
     }
   }
   for (const std::string& n : names) {

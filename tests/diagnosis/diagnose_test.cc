@@ -52,9 +52,10 @@ TEST(DiagnoseTest, MsdCurrentAndInputBiasAreReportedAlike) {
   const std::vector<std::string> alike = {"input_bias", "current", "surge_force"};
   ASSERT_NE(std::find(alike.begin(), alike.end(), d.cause), alike.end()) << d.cause;
   const Candidate& best = d.candidates.front();
-  for (const std::string& other : alike)
-    if (other != d.cause)
-      EXPECT_NE(std::find(best.alike.begin(), best.alike.end(), other), best.alike.end()) << other;
+  for (const std::string& other : alike) {
+    if (other == d.cause) continue;
+    EXPECT_NE(std::find(best.alike.begin(), best.alike.end(), other), best.alike.end()) << other;
+  }
 }
 
 TEST(DiagnoseTest, ProposesTheMissingTermBeyondTheCatalogue) {

@@ -39,6 +39,7 @@ const std::map<std::string, Range>& Ranges() {
       {"saturation", {0.5, 0.9}},
       // 0.25 to 1.5 kN of thrust missing or extra on a 4.9 t hull (cruise thrust 16 kN).
       {"surge_force", {0.05, 0.3, true}},
+      {"resistance", {1.3, 2.0, false, true}},
   };
   return ranges;
 }
@@ -100,18 +101,18 @@ TEST_P(HiddenEffectTest, NamesTheEffectAndItsSize) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Catalogue, HiddenEffectTest,
-                         ::testing::Combine(::testing::Values("none", "input_delay", "current",
-                                                              "actuator_lag", "input_bias",
-                                                              "sensor_bias", "inertia", "damping",
-                                                              "saturation", "surge_force"),
-                                            ::testing::Values(1, 2, 3)),
-                         [](const auto& info) {
-                           std::string name = std::get<0>(info.param) + "_seed" +
-                                              std::to_string(std::get<1>(info.param));
-                           std::erase(name, '_');
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Catalogue, HiddenEffectTest,
+    ::testing::Combine(::testing::Values("none", "input_delay", "current", "actuator_lag",
+                                         "input_bias", "sensor_bias", "inertia", "damping",
+                                         "saturation", "surge_force", "resistance"),
+                       ::testing::Values(1, 2, 3)),
+    [](const auto& info) {
+      std::string name =
+          std::get<0>(info.param) + "_seed" + std::to_string(std::get<1>(info.param));
+      std::erase(name, '_');
+      return name;
+    });
 
 }  // namespace
 }  // namespace usvid

@@ -1,0 +1,66 @@
+#include "harness/suite_data.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/csv_dataset.h"
+#include "core/error.h"
+#include "importers/column_map.h"
+#include "importers/csv_log.h"
+#include "importers/marin_dat.h"
+#include "preprocessing/heading_rate.h"
+
+namespace usvid {
+
+SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
+                         const std::string& where) {
+  if (!v.is_object()) throw InputError(where + ": each data entry is an object");
+  static const std::set<std::string> kFields = {"name", "file", "format", "map", "rate_from"};
+  for (const auto& [key, value] : v.items()) {
+    if (!kFields.contains(key)) throw InputError(where + ": unknown field '" + key + "'");
+    if (!value.is_string()) throw InputError(where + ": '" + key + "' must be a string");
+  }
+  for (const char* required : {"name", "file"})
+    if (!v.contains(required)) throw InputError(where + ": missing field '" + required + "'");
+  SuiteData d;
+  d.name = v["name"].get<std::string>();
+  d.file = v["file"].get<std::string>();
+  if (std::filesystem::path(d.file).is_relative() && !base_dir.empty())
+    d.file = (std::filesystem::path(base_dir) / d.file).lexically_normal().string();
+  d.format = v.value("format", d.format);
+  if (d.format != "csv" && d.format != "marin-dat" && d.format != "csv-log")
+    throw InputError(where + ": format '" + d.format + "' (known: csv, marin-dat, csv-log)");
+  d.map = v.value("map", std::string());
+  if (!d.map.empty() && d.format != "csv-log")
+    throw InputError(where + ": 'map' applies to format csv-log only");
+  d.rate_from = v.value("rate_from", std::string());
+  return d;
+}
+
+nlohmann::json SuiteDataToJson(const SuiteData& d) {
+  nlohmann::json j = {{"name", d.name}, {"file", d.file}, {"format", d.format}};
+  if (!d.map.empty()) j["map"] = d.map;
+  if (!d.rate_from.empty()) j["rate_from"] = d.rate_from;
+  return j;
+}
+
+Dataset LoadSuiteData(const SuiteData& d) {
+  ImportReport report;
+  Dataset data;
+  if (d.format == "marin-dat") {
+    data = ImportMarinDat(d.file, report);
+  } else if (d.format == "csv-log") {
+    std::vector<std::string> items;
+    std::stringstream s(d.map);
+    for (std::string item; std::getline(s, item, ',');) items.push_back(item);
+    data = ImportCsvLog(d.file, ParseColumnMap(items), report);
+  } else {
+    data = ReadDatasetCsv(d.file);
+  }
+  if (!d.rate_from.empty()) data.Set("r", RateFromHeading(data, d.rate_from));
+  return data;
+}
+
+}  // namespace usvid

@@ -1,0 +1,30 @@
+// Measured data in a comparison suite: instead of simulated maneuvers, a suite may train and
+// test on recorded files ("data": {"train": [...], "test": [...]}), each
+//   {"name": "zigzag 20/-20", "file": "path", "format": "csv" | "marin-dat" | "csv-log",
+//    "map": "t=time,psi=psi,delta=delta" (csv-log: import --map), "rate_from": "psi"}
+// Paths are relative to the suite file's folder. "rate_from" adds the rate of turn r from that
+// heading (preprocessing/heading_rate.h) for logs without a gyro. A file is read as
+// `usvid import` would read it, with the same repairs.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+
+namespace usvid {
+
+struct SuiteData {
+  std::string name, file, format = "csv", map, rate_from;
+};
+
+// Throws InputError naming `where` for a malformed entry.
+SuiteData ParseSuiteData(const nlohmann::json& value, const std::string& base_dir,
+                         const std::string& where);
+nlohmann::json SuiteDataToJson(const SuiteData& d);
+
+// Throws InputError for an unreadable or malformed file.
+Dataset LoadSuiteData(const SuiteData& d);
+
+}  // namespace usvid
