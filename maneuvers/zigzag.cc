@@ -1,6 +1,7 @@
 #include "maneuvers/zigzag.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "core/error.h"
@@ -13,12 +14,19 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 ZigZag::ZigZag(const Actuation& act, double rudder_deg, double heading_deg, double duration_s)
     : act_(act), rudder_deg_(rudder_deg), heading_deg_(heading_deg), duration_s_(duration_s) {
   if (act.heading_state < 0) throw InputError("--maneuver zigzag: the vessel has no heading");
-  if (!(rudder_deg > 0 && heading_deg > 0))
-    throw InputError("--maneuver zigzag:A/B: A and B must be positive degrees");
+  if (!(rudder_deg != 0 && std::isfinite(rudder_deg) && heading_deg > 0))
+    throw InputError(
+        "--maneuver zigzag:A/B: A must be non-zero degrees (negative: to port first) and B "
+        "positive");
+  if (rudder_deg < 0) {
+    sign_ = first_sign_ = -1;
+    rudder_deg_ = -rudder_deg;
+  }
 }
 
 std::string ZigZag::Spec() const {
-  return "zigzag:" + std::to_string(static_cast<int>(rudder_deg_)) + "/" +
+  return "zigzag:" + std::string(first_sign_ < 0 ? "-" : "") +
+         std::to_string(static_cast<int>(rudder_deg_)) + "/" +
          std::to_string(static_cast<int>(heading_deg_));
 }
 

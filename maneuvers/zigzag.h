@@ -1,6 +1,7 @@
-// Kempf zig-zag A/B (ITTC): after a straight approach of kLeadInS, the yaw command goes to +A; when
-// the heading has turned B degrees from the initial heading it switches to -A, when it reaches -B
-// back to +A, and so on, closed-loop on the measured heading. Thrust is held at cruise. For a
+// Kempf zig-zag A/B (ITTC): after a straight approach of kLeadInS, the yaw command goes to +A
+// degrees to starboard (zigzag:-A/B: to port first); when the heading has turned B degrees from
+// the initial heading it reverses, when it has turned B the other way it reverses again, and so
+// on, closed-loop on the measured heading. Thrust is held at cruise. For a
 // moment-driven vessel the yaw command is the moment standing for A degrees
 // (Actuation::YawCommand). Report: the first and second overshoot angles [deg] (how far the heading
 // goes beyond B after the first and second switch), the switch times, and the heading rate at each
@@ -27,7 +28,8 @@ class ZigZag : public Maneuver {
   double rudder_deg_, heading_deg_, duration_s_;
   double psi0_ = 0.0;
   bool started_ = false;
-  int sign_ = 1;  // current yaw command direction
+  int sign_ = 1;        // current yaw command direction (+1 starboard)
+  int first_sign_ = 1;  // the first turn's (zigzag:-A/B turns to port first)
   std::vector<double> switch_times_;
   // Largest excursion beyond the threshold after each switch [rad], sign-corrected.
   std::vector<double> overshoot_;

@@ -1,5 +1,6 @@
 // usvid info --data F.csv: checks a data file against the contract (section 1) and summarises
 // it: rows, duration, and per channel the samples taken, the sampling rate and the range.
+// With --zigzag B: the zig-zag overshoots (metrics/zigzag_response.h).
 
 #include <algorithm>
 #include <cstdio>
@@ -9,6 +10,8 @@
 
 #include "apps/usvid/commands.h"
 #include "core/csv_dataset.h"
+#include "core/error.h"
+#include "metrics/zigzag_response.h"
 
 namespace usvid {
 namespace {
@@ -29,7 +32,14 @@ double MedianInterval(const Eigen::VectorXd& t, const Channel& c) {
   return gaps[gaps.size() / 2];
 }
 
-void RunInfo(const std::string& path) {
+struct InfoOptions {
+  std::string data;
+  double zigzag_deg = 0.0;  // > 0: analyse as a zig-zag with this heading threshold
+  std::string heading = "psi", rudder = "delta";
+};
+
+void RunInfo(const InfoOptions& o) {
+  const std::string& path = o.data;
   const Dataset d = ReadDatasetCsv(path);
   std::printf("%s: %ld rows, t from %g to %g s (%g s)\n", path.c_str(), static_cast<long>(d.rows()),
               d.t()(0), d.t()(d.rows() - 1), d.duration());
@@ -45,16 +55,33 @@ void RunInfo(const std::string& path) {
     std::printf("%-16s %9ld %10.4g %14.6g %14.6g\n", c.name.c_str(), n, gap > 0 ? 1.0 / gap : 0.0,
                 lo, hi);
   }
+  if (o.zigzag_deg > 0) {
+    const ZigzagResponse z = AnalyseZigzag(d, o.zigzag_deg, o.heading, o.rudder);
+    std::printf("zig-zag (heading threshold %g deg): executed at %g s, first turn to %s\n",
+                o.zigzag_deg, z.execute_s, z.first_turn > 0 ? "starboard" : "port");
+    for (size_t i = 0; i < z.overshoot_deg.size(); ++i)
+      std::printf("  reversal %zu at %8.2f s: overshoot %6.2f deg%s\n", i + 1, z.reversal_s[i],
+                  z.overshoot_deg[i],
+                  i + 1 == z.overshoot_deg.size() ? " (record may end first)" : "");
+  }
 }
 
 }  // namespace
 
 void AddInfoCommand(CLI::App& app) {
-  auto path = std::make_shared<std::string>();
+  auto o = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand(
       "info", "Check a data CSV against the contract and summarise its channels and rates");
-  cmd->add_option("--data", *path, "The data CSV to check")->required();
-  cmd->callback([path] { RunInfo(*path); });
+  cmd->add_option("--data", o->data, "The data CSV to check")->required();
+  cmd->add_option("--zigzag", o->zigzag_deg,
+                  "Analyse it as a zig-zag with this heading threshold B [deg]: overshoots after "
+                  "each rudder reversal (ITTC)");
+  cmd->add_option("--heading", o->heading, "Heading channel for --zigzag")->capture_default_str();
+  cmd->add_option("--rudder", o->rudder, "Rudder channel for --zigzag")->capture_default_str();
+  cmd->callback([o] {
+    if (!(o->zigzag_deg >= 0)) throw InputError("--zigzag: must be a positive angle [deg]");
+    RunInfo(*o);
+  });
 }
 
 }  // namespace usvid

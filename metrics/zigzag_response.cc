@@ -1,0 +1,42 @@
+#include "metrics/zigzag_response.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+
+namespace usvid {
+
+ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const std::string& heading,
+                             const std::string& rudder) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  for (const std::string& c : {heading, rudder})
+    if (!data.Has(c)) throw InputError(data.SourcePrefix() + "zig-zag: no channel '" + c + "'");
+  const Eigen::VectorXd& psi = data[heading];
+  const Eigen::VectorXd& delta = data[rudder];
+  const Eigen::VectorXd& t = data.t();
+  const Eigen::Index n = data.rows();
+  Eigen::Index execute = -1;
+  for (Eigen::Index k = 0; k < n && execute < 0; ++k)
+    if (std::abs(delta(k) - delta(0)) > kDeg) execute = k;
+  if (execute < 0) throw InputError(data.SourcePrefix() + "zig-zag: the rudder never moves");
+  ZigzagResponse z;
+  z.execute_s = t(execute);
+  const double psi0 = psi(execute);
+  std::vector<Eigen::Index> reversals;
+  for (Eigen::Index k = execute + 1; k < n; ++k)
+    if ((delta(k) > 0) != (delta(k - 1) > 0)) reversals.push_back(k);
+  for (size_t i = 0; i < reversals.size(); ++i) {
+    const Eigen::Index a = reversals[i];
+    const Eigen::Index b = i + 1 < reversals.size() ? reversals[i + 1] : n;
+    const double direction = psi(a) - psi0 >= 0 ? 1.0 : -1.0;
+    if (i == 0) z.first_turn = static_cast<int>(direction);
+    double furthest = -INFINITY;
+    for (Eigen::Index k = a; k < b; ++k) furthest = std::max(furthest, direction * (psi(k) - psi0));
+    z.reversal_s.push_back(t(a));
+    z.overshoot_deg.push_back(furthest / kDeg - threshold_deg);
+  }
+  return z;
+}
+
+}  // namespace usvid

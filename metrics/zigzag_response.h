@@ -1,0 +1,29 @@
+// The zig-zag test's figures of merit (ITTC 7.5-04-02-01) read from any record, measured or
+// simulated: the rudder is executed when it first moves more than 1 deg from its initial
+// value (heading psi0 then); it is reversed where it crosses zero; the overshoot after each
+// reversal is how far the heading goes beyond the threshold B (from psi0) in the direction it
+// was turning at the reversal, before the next one. Works with either rudder sign convention
+// (the turning direction is read from the heading).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+
+namespace usvid {
+
+struct ZigzagResponse {
+  double execute_s = 0.0;             // time of the first rudder execution
+  int first_turn = 0;                 // +1 starboard (psi grows), -1 port
+  std::vector<double> reversal_s;     // rudder zero crossings after the execution
+  std::vector<double> overshoot_deg;  // after each reversal (the last may be cut short)
+};
+
+// Throws InputError (naming the data's file) when a channel is missing or the rudder never
+// moves.
+ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg,
+                             const std::string& heading = "psi",
+                             const std::string& rudder = "delta");
+
+}  // namespace usvid
