@@ -17,10 +17,13 @@ namespace usvid {
 SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
                          const std::string& where) {
   if (!v.is_object()) throw InputError(where + ": each data entry is an object");
-  static const std::set<std::string> kFields = {"name", "file", "format", "map", "rate_from"};
+  static const std::set<std::string> kFields = {"name",      "file",   "format", "map",
+                                                "rate_from", "from_s", "to_s"};
   for (const auto& [key, value] : v.items()) {
     if (!kFields.contains(key)) throw InputError(where + ": unknown field '" + key + "'");
-    if (!value.is_string()) throw InputError(where + ": '" + key + "' must be a string");
+    const bool number = key == "from_s" || key == "to_s";
+    if (number ? !value.is_number() : !value.is_string())
+      throw InputError(where + ": '" + key + "' must be a " + (number ? "number" : "string"));
   }
   for (const char* required : {"name", "file"})
     if (!v.contains(required)) throw InputError(where + ": missing field '" + required + "'");
@@ -36,6 +39,9 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
   if (!d.map.empty() && d.format != "csv-log")
     throw InputError(where + ": 'map' applies to format csv-log only");
   d.rate_from = v.value("rate_from", std::string());
+  d.from_s = v.value("from_s", d.from_s);
+  d.to_s = v.value("to_s", d.to_s);
+  if (!(d.from_s < d.to_s)) throw InputError(where + ": from_s must be before to_s");
   return d;
 }
 
@@ -43,6 +49,8 @@ nlohmann::json SuiteDataToJson(const SuiteData& d) {
   nlohmann::json j = {{"name", d.name}, {"file", d.file}, {"format", d.format}};
   if (!d.map.empty()) j["map"] = d.map;
   if (!d.rate_from.empty()) j["rate_from"] = d.rate_from;
+  if (std::isfinite(d.from_s)) j["from_s"] = d.from_s;
+  if (std::isfinite(d.to_s)) j["to_s"] = d.to_s;
   return j;
 }
 
@@ -60,6 +68,15 @@ Dataset LoadSuiteData(const SuiteData& d) {
     data = ReadDatasetCsv(d.file);
   }
   if (!d.rate_from.empty()) data.Set("r", RateFromHeading(data, d.rate_from));
+  if (std::isfinite(d.from_s) || std::isfinite(d.to_s)) {
+    std::vector<bool> keep(data.rows());
+    for (Eigen::Index k = 0; k < data.rows(); ++k)
+      keep[k] = data.t()(k) >= d.from_s && data.t()(k) < d.to_s;
+    data.KeepRows(keep);
+    if (data.rows() < 4)
+      throw InputError(d.file + ": fewer than 4 rows in [" + std::to_string(d.from_s) + ", " +
+                       std::to_string(d.to_s) + ") s");
+  }
   return data;
 }
 

@@ -1,12 +1,15 @@
 // Measured data in a comparison suite: instead of simulated maneuvers, a suite may train and
 // test on recorded files ("data": {"train": [...], "test": [...]}), each
 //   {"name": "zigzag 20/-20", "file": "path", "format": "csv" | "marin-dat" | "csv-log",
-//    "map": "t=time,psi=psi,delta=delta" (csv-log: import --map), "rate_from": "psi"}
+//    "map": "t=time,psi=psi,delta=delta" (csv-log: import --map), "rate_from": "psi",
+//    "from_s": 0, "to_s": 140}
 // Paths are relative to the suite file's folder. "rate_from" adds the rate of turn r from that
 // heading (preprocessing/heading_rate.h) for logs without a gyro. A file is read as
-// `usvid import` would read it, with the same repairs.
+// `usvid import` would read it, with the same repairs. "from_s" and "to_s" keep the rows with
+// from_s <= t < to_s (a held-back part of one log as its own test set).
 #pragma once
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -17,6 +20,7 @@ namespace usvid {
 
 struct SuiteData {
   std::string name, file, format = "csv", map, rate_from;
+  double from_s = -INFINITY, to_s = INFINITY;
 };
 
 // Throws InputError naming `where` for a malformed entry.

@@ -12,6 +12,7 @@
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/gp/gp_identify.h"
+#include "methods/nomoto/nomoto.h"
 #include "methods/refit/refit.h"
 #include "methods/sindy/sindy.h"
 #include "preprocessing/delay_estimation.h"
@@ -191,9 +192,11 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   Dataset data = recorded;
   AddSpeedAndCourse(data);
   if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" &&
-      o.method != "fossen-ceres" && o.method != "refit" && o.method != "nominal")
-    throw InputError("--method '" + o.method +
-                     "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit, nominal)");
+      o.method != "fossen-ceres" && o.method != "refit" && o.method != "nominal" &&
+      o.method != "nomoto")
+    throw InputError(
+        "--method '" + o.method +
+        "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit, nominal, nomoto)");
   if (o.method == "refit") return IdentifyRefit(data, o, log);
   if (o.method == "nominal") return NominalModel(data, o);
   const auto start = std::chrono::steady_clock::now();
@@ -210,6 +213,16 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   }
   if (states.empty() || inputs.empty())
     throw InputError("identify: give --vessel, or --states and --inputs");
+  if (o.method == "nomoto") {
+    // The first-order Nomoto model: the rate of turn from the yaw input.
+    if (!o.vessel.empty() && o.states.empty()) {
+      const Actuation& a = FindVessel(o.vessel).Info().actuation;
+      states = variables = {FindVessel(o.vessel).Info().states[a.rate_state]};
+      inputs = {a.input_names[a.yaw_input]};
+    }
+    if (states.size() != 1 || inputs.size() != 1)
+      throw InputError("--method nomoto: needs --states RATE and --inputs YAW (one each)");
+  }
   if (o.method == "eb-lr") {
     // The Eriksen-Breivik 2-DOF form: speed U and rate r, driven by thrust and yaw inputs.
     if (!o.vessel.empty() && o.states.empty()) {
@@ -273,6 +286,21 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
       model.update(IdentifyFossen<fossen::RudderModel>(o, data, prepared, log));
     else
       model.update(IdentifyFossen<fossen::Odin3DofModel>(o, data, prepared, log));
+  } else if (o.method == "nomoto") {
+    const nomoto::NomotoFit fit =
+        nomoto::FitNomoto(prepared, states[0], inputs[0], o.segment_s > 0 ? o.segment_s : 30.0);
+    model["parameters"] = {{"K", fit.K}, {"T", fit.T}, {"delta0", fit.delta0}};
+    model["equations"] = nomoto::NomotoEquations(fit, states[0], inputs[0]);
+    model["nomoto"] = {
+        {"parameter_sd", {{"K", fit.sd_K}, {"T", fit.sd_T}, {"delta0", fit.sd_delta0}}},
+        {"equation_error",
+         {{"K", fit.equation_error_K},
+          {"T", fit.equation_error_T},
+          {"delta0", fit.equation_error_delta0}}},
+        {"converged", fit.converged},
+        {"termination", fit.termination},
+        {"notes", fit.notes}};
+    for (const std::string& note : fit.notes) Log(log, note);
   } else if (o.method == "sindy") {
     const sindy::SindyIdentification id =
         sindy::IdentifyWithSindy(prepared, states, variables, inputs, sindy::SindyOptions{});

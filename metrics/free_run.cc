@@ -76,7 +76,7 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
   auto has = [&](const std::string& s) {
     return std::find(channels.begin(), channels.end(), s) != channels.end();
   };
-  enum class Kinematics { kNone, kBody, kSpeedCourse, kMsd } kin = Kinematics::kNone;
+  enum class Kinematics { kNone, kBody, kSpeedCourse, kMsd, kHeading } kin = Kinematics::kNone;
   if (has("u") && has("v") && has("r") && data.Has("psi")) {
     kin = Kinematics::kBody;
     for (const char* s : {"psi", "north", "east"}) channels.push_back(s);
@@ -86,6 +86,9 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
   } else if (has("v") && data.Has("x") && !has("x")) {
     kin = Kinematics::kMsd;
     channels.push_back("x");
+  } else if (has("r") && data.Has("psi") && !has("psi")) {
+    kin = Kinematics::kHeading;  // a heading model (Nomoto): psi' = r
+    channels.push_back("psi");
   }
   const int n = static_cast<int>(channels.size());
   auto index = [&](const std::string& s) {
@@ -149,6 +152,9 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
       }
       case Kinematics::kMsd:
         dx(index("x")) = s(index("v"));
+        break;
+      case Kinematics::kHeading:
+        dx(index("psi")) = s(index("r"));
         break;
       case Kinematics::kNone:
         break;

@@ -3,7 +3,7 @@
 // by the model's input delay), with the known kinematics for the states that have no equation:
 //   body velocities u, v, r:  psi' = r, north' = u cos psi - v sin psi, east' = u sin psi + v cos
 //   psi speed and turn U, r:      chi' = r, north' = U cos chi, east' = U sin chi msd velocity v:
-//   x' = v
+//   x' = v;  a rate of turn r alone (a heading model): psi' = r
 // A model without equations that names a registered vessel (a vessel model: {"vessel": "kvlcc2",
 // "parameters": {...}, "effects": [...]}, as `identify --method refit` and `diagnose` write them,
 // or just {"vessel": "kvlcc2"} for the nominal simulator) is free-run by that simulator on the

@@ -54,9 +54,11 @@ void AddIdentifyCommand(CLI::App& app) {
                   "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data) or fossen-ceres "
                   "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map) or "
                   "refit (the --vessel's own coefficients, Ceres multiple shooting) or nominal "
-                  "(the --vessel as it is, a baseline)")
+                  "(the --vessel as it is, a baseline) or nomoto (first-order Nomoto heading "
+                  "model, T r' + r = K (delta - delta0))")
       ->required()
-      ->check(CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit", "nominal"}));
+      ->check(
+          CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit", "nominal", "nomoto"}));
   cmd->add_option("--data", o->data, "Training data CSV")->required();
   cmd->add_option("--vessel", o->request.vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');
@@ -78,8 +80,9 @@ void AddIdentifyCommand(CLI::App& app) {
                   "fossen-ceres: simulation (multiple shooting, default) or equation error")
       ->check(CLI::IsMember({"simulation", "equation"}));
   cmd->add_option("--segment", o->request.segment_s,
-                  "fossen-ceres, refit: shooting segment length [s] (default: fossen-ceres 10 s, "
-                  "refit 1.5 hull lengths of travel, at least 10 s)");
+                  "fossen-ceres, refit, nomoto: shooting segment length [s] (default: "
+                  "fossen-ceres 10 s, nomoto 30 s, refit 1.5 hull lengths of travel, at least "
+                  "10 s)");
   cmd->add_option("--refit-params", o->request.refit_params,
                   "refit: the parameters to fit (default: the vessel's damping group, for "
                   "kvlcc2 its 17 hull coefficients)")

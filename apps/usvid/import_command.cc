@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "importers/csv_log.h"
 #include "importers/marin_dat.h"
+#include "preprocessing/heading_rate.h"
 
 namespace usvid {
 namespace {
@@ -16,6 +17,7 @@ struct ImportOptions {
   std::string format;
   std::string data;
   std::vector<std::string> map;
+  std::string rate_from;
   std::string out;
 };
 
@@ -29,6 +31,11 @@ void RunImport(const ImportOptions& o) {
     data = ImportCsvLog(o.data, ParseColumnMap(o.map), report);
   }
   if (data.rows() < 2) throw InputError(o.data + ": fewer than two rows left after repair");
+  if (!o.rate_from.empty()) {
+    if (data.Has("r")) throw InputError("--rate-from: the log already has a channel r");
+    data.Set("r", RateFromHeading(data, o.rate_from));
+    report.notes.push_back("r from the derivative of the smoothed, unwrapped " + o.rate_from);
+  }
   WriteDatasetCsv(o.out, data);
   for (const std::string& note : report.notes) std::cerr << "usvid import: " << note << '\n';
   std::cerr << "usvid import: wrote " << o.out << " (" << data.rows() << " rows, "
@@ -51,6 +58,9 @@ void AddImportCommand(CLI::App& app) {
                   "Column map for csv: NEW=OLD[:unit],... (units deg, deg/s, knots, km/h, rpm, "
                   "ms; targets vn, ve become body u, v); without it every column is kept")
       ->delimiter(',');
+  cmd->add_option("--rate-from", o->rate_from,
+                  "Add the rate of turn r [rad/s] from this heading channel [rad] (a log without "
+                  "a gyro): unwrapped, smoothing-spline derivative");
   cmd->add_option("--out", o->out, "The data CSV to write")->required();
   cmd->callback([o] { RunImport(*o); });
 }
