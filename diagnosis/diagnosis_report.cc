@@ -64,6 +64,14 @@ void WriteDiagnosisReport(const Diagnosis& d, const std::string& dir) {
     << "</h1>\n";
   h << "<p><b>Cause: " << svg::Escape(d.cause) << "</b>";
   if (d.cause_effect) h << " (" << svg::Escape(Sizes(*d.cause_effect)) << ")";
+  for (const FurtherCause& f : d.further_causes)
+    h << "; then, on the model extended so far, <b>" << svg::Escape(f.effect.name()) << "</b> ("
+      << svg::Escape(Sizes(f.effect)) << ", LR " << Fixed(f.likelihood_ratio, 1) << ")";
+  if (!d.base_effects.empty()) {
+    h << "; the nominal model already had";
+    for (const Effect& e : d.base_effects)
+      h << " " << svg::Escape(e.name()) << " (" << svg::Escape(Sizes(e)) << ")";
+  }
   h << ". Held-out error reduction " << Fixed(100.0 * d.heldout_error_reduction, 1)
     << " %. Trained on the first " << Fixed(d.train_s, 0) << " s, scored on the last "
     << Fixed(d.heldout_s, 0) << " s, in segments of " << Fixed(d.segment_s, 0)

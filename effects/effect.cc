@@ -5,6 +5,7 @@
 #include <random>
 
 #include "core/error.h"
+#include "core/json_file.h"
 #include "core/parse_number.h"
 
 namespace usvid {
@@ -151,6 +152,29 @@ Effect EffectFromJson(const nlohmann::json& value) {
     return effect;
   }
   throw InputError("unknown effect '" + name + "' (known: " + KnownNames() + ")");
+}
+
+std::vector<Effect> EffectsOfFile(const std::string& path) {
+  const nlohmann::json j = ReadJsonFile(path);
+  std::vector<Effect> effects;
+  if (!j.is_object() || !j.contains("effects")) return effects;
+  if (!j.at("effects").is_array()) throw InputError(path + ": \"effects\" is not an array");
+  for (const auto& e : j.at("effects")) {
+    try {
+      effects.push_back(EffectFromJson(e));
+    } catch (const InputError& err) {
+      throw InputError(path + ": effects: " + err.what());
+    }
+  }
+  return effects;
+}
+
+std::vector<Effect> MergeEffects(std::vector<Effect> base, const std::vector<Effect>& overrides) {
+  for (const Effect& o : overrides) {
+    std::erase_if(base, [&o](const Effect& b) { return b.kind == o.kind; });
+    base.push_back(o);
+  }
+  return base;
 }
 
 }  // namespace usvid

@@ -65,4 +65,10 @@ std::vector<Effect> ParseEffects(const std::vector<std::string>& specs, uint64_t
 nlohmann::json EffectToJson(const Effect& effect);
 Effect EffectFromJson(const nlohmann::json& value);
 
+// The "effects" of a model or truth file (a diagnose model.json, a simulate F.truth.json); none
+// when it has no such field. Errors name the file.
+std::vector<Effect> EffectsOfFile(const std::string& path);
+// `base` with each of `overrides` put in place of the same kind (or added).
+std::vector<Effect> MergeEffects(std::vector<Effect> base, const std::vector<Effect>& overrides);
+
 }  // namespace usvid

@@ -7,6 +7,7 @@
 #include "methods/expression.h"
 #include "metrics/fit_metrics.h"
 #include "preprocessing/pipeline.h"
+#include "simulation/vessel_simulator.h"
 
 namespace usvid {
 
@@ -87,7 +88,16 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
     speed = (data["u"].array().square() + data["v"].array().square()).sqrt().matrix();
   }
   if (speed.size() > 0) {
-    const double length = model.value("length_m", 10.5);
+    // The hull length: the model's "length_m", else its vessel's, else Odin's 10.5 m.
+    double length = 10.5;
+    if (model.contains("vessel") && model.at("vessel").is_string() &&
+        !model.at("vessel").get<std::string>().empty()) {
+      const std::string vessel = model.at("vessel").get<std::string>();
+      for (const std::string& known : VesselNames())
+        if (known == vessel && FindVessel(vessel).Info().length_m > 0)
+          length = FindVessel(vessel).Info().length_m;
+    }
+    length = model.value("length_m", length);
     const Eigen::ArrayXd fn = speed.array() / std::sqrt(9.81 * length);
     const std::pair<const char*, std::pair<double, double>> regimes[] = {
         {"displacement", {-INFINITY, 0.4}},

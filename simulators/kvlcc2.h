@@ -211,6 +211,8 @@ struct Kvlcc2 {
     f[2] = N_H + N_R;
   }
 
+  static double FroudeNumber(double speed) { return speed / std::sqrt(9.81 * kLength); }
+
   template <typename T>
   static void Derivative(const T* x, const T* in, const T* p, const Environment<T>& env, T* dx) {
     using std::cos;

@@ -35,21 +35,8 @@ void RunDiagnose(const DiagnoseCliOptions& o) {
   const std::vector<double> params =
       o.params.empty() ? sim.Info().default_params : sim.Info().ParamsFromFile(o.params);
   diagnosis::DiagnoseOptions options = o.options;
-  if (!o.params.empty()) {
-    // A model diagnosed before brings its effects: the next diagnosis starts from them.
-    const nlohmann::json model = ReadJsonFile(o.params);
-    if (model.is_object() && model.contains("effects")) {
-      if (!model.at("effects").is_array())
-        throw InputError(o.params + ": \"effects\" is not an array");
-      for (const auto& e : model.at("effects")) {
-        try {
-          options.base_effects.push_back(EffectFromJson(e));
-        } catch (const std::exception& err) {
-          throw InputError(o.params + ": effects: " + err.what());
-        }
-      }
-    }
-  }
+  // A model diagnosed before brings its effects: the next diagnosis starts from them.
+  if (!o.params.empty()) options.base_effects = EffectsOfFile(o.params);
   if (options.max_causes < 1) throw InputError("--causes must be at least 1");
   if (o.threads < 0) throw InputError("--threads must be 0 (all cores) or more");
   const Dataset data = ReadDatasetCsv(o.data);

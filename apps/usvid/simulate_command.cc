@@ -51,7 +51,11 @@ void RunSimulate(const SimulateOptions& o) {
   if (!(o.dt > 0) || !(o.rate_hz > 0)) throw InputError("--dt and --rate: must be positive");
   const VesselSimulator& sim = FindVessel(o.vessel);
   const VesselInfo& info = sim.Info();
-  const std::vector<Effect> effects = ParseEffects(o.effects, o.seed);
+  // A model file given as --params brings its effects (a diagnose model.json); --effect items
+  // replace those of the same kind.
+  const std::vector<Effect> effects =
+      MergeEffects(o.params.empty() ? std::vector<Effect>{} : EffectsOfFile(o.params),
+                   ParseEffects(o.effects, o.seed));
   const EffectValues<double> values = ValuesOf(effects);
   std::vector<double> params = info.default_params;
   if (!o.params.empty()) params = info.ParamsFromFile(o.params);
@@ -158,7 +162,8 @@ void AddSimulateCommand(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--params", o->params,
                   "JSON of parameter overrides (name: value), or a truth/model file's "
-                  "\"parameters\"");
+                  "\"parameters\" (and its \"effects\": a diagnose model.json simulates as "
+                  "extended)");
   cmd->add_option("--duration", o->duration, "Maneuver length [s] (0: the maneuver's default)");
   cmd->add_option("--cruise", o->cruise,
                   "Thrust command of the approach and cruise (default: the vessel's, e.g. "

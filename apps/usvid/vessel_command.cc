@@ -28,6 +28,12 @@ struct VesselOptions {
 
 constexpr double kDisplacementFn = 0.4, kPlaningFn = 1.1;
 
+std::string FormatFixed(double v, int decimals) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
 // Speed at a Froude number, by bisection on the vessel's own FroudeNumber (monotonic in speed).
 double SpeedAtFroude(const VesselSimulator& sim, double fn) {
   double lo = 0.0, hi = 100.0;
@@ -88,9 +94,10 @@ void RunVessel(const VesselOptions& o) {
         row["regime"] = regime;
       }
       report["steady"].push_back(row);
-      std::printf("%12.4g %12.3f %8.3f %18s %14.3f %12.1f\n", thrust(k), speed(k),
-                  sim.FroudeNumber(speed(k)).value_or(NAN), regime.c_str(), turn_speed(k),
-                  radius(k));
+      const auto fn = sim.FroudeNumber(speed(k));
+      const std::string fn_text = fn ? FormatFixed(*fn, 3) : "-";  // no length: no Froude number
+      std::printf("%12.4g %12.3f %8s %18s %14.3f %12.1f\n", thrust(k), speed(k), fn_text.c_str(),
+                  regime.c_str(), turn_speed(k), radius(k));
     }
     const std::string thrust_name = info.inputs[act.thrust_input];
     LinePlot steady;
