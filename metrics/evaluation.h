@@ -4,9 +4,8 @@
 // R^2 of each equation against derivatives estimated from the data; whether the free run diverged;
 // and the position drift at the end where positions are measured. With a speed channel (U, or
 // u and v) and a hull length (model "length_m", else its vessel's, else 10.5 m: Odin), the
-// channel scores are
-// also given per speed regime by Froude number U / sqrt(g L): displacement (< 0.4),
-// semi-displacement (0.4 to 1.1) and planing (> 1.1), over the rows measured in each.
+// channel scores are also given per speed regime by Froude number U / sqrt(g L): displacement
+// (< 0.4), semi-displacement (0.4 to 1.1) and planing (> 1.1), over the rows measured in each.
 #pragma once
 
 #include <nlohmann/json.hpp>
