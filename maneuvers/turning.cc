@@ -28,7 +28,10 @@ void Turning::Command(double t, std::span<const double> state, std::span<double>
     last_t_ = t;
     commanded_ = true;
   }
-  if (t < kLeadInS) return;
+  if (t < kLeadInS) {
+    last_t_ = t;  // the rudder rests until the execution, and slews from there
+    return;
+  }
   const double psi = state[act_.heading_state];
   const bool positions = act_.north_state >= 0 && act_.east_state >= 0;
   if (!started_) {

@@ -40,7 +40,10 @@ void ZigZag::Command(double t, std::span<const double> state, std::span<double> 
     last_t_ = t;
     commanded_ = true;
   }
-  if (t < kLeadInS) return;
+  if (t < kLeadInS) {
+    last_t_ = t;  // the rudder rests until the execution, and slews from there
+    return;
+  }
   const double psi = state[act_.heading_state];
   if (!started_) {
     psi0_ = psi;

@@ -3,11 +3,12 @@
 // architect starts from. Multiple shooting: the record is cut into segments of segment_s
 // seconds, each simulated by the vessel's templated dynamics from its own initial state (free,
 // estimated with the parameters); residuals are the simulated minus measured dynamic states
-// (every state but north, east and the heading), each divided by its standard deviation, at
-// every sample. The free parameters are fitted as ratios to their starting values, with a
-// Gaussian prior of relative standard deviation prior_sd around the start (a coefficient the
-// data cannot see stays at its published value instead of wandering). The model JSON it gives
-// names the vessel and its parameters; `usvid evaluate` free-runs it with the vessel itself.
+// (every state but north, east and the heading), each divided by its measurement noise (its sd
+// estimated from the data, at least 0.1 % of the channel's spread), at every sample. The free
+// parameters are fitted as ratios to their starting values, with a Gaussian prior of relative
+// standard deviation prior_sd around the start (a coefficient the data cannot see stays at its
+// published value instead of wandering). The model JSON it gives names the vessel and its
+// parameters; `usvid evaluate` free-runs it with the vessel itself.
 #pragma once
 
 #include <string>

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "methods/refit/refit.h"
+#include "preprocessing/smoothing_spline.h"
 #include "simulation/input_track.h"
 #include "simulation/open_loop.h"
 #include "simulation/recorded_inputs.h"
@@ -142,16 +143,17 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
       throw InputError(data.SourcePrefix() + "refit of " + info.name + " needs state column '" +
                        name + "'");
     result.channels.push_back(name);
-    double sum = 0, sum2 = 0;
-    long n = 0;
+    // Residuals in units of the measurement noise (its sd estimated from the samples, at least
+    // 0.1 % of the channel's spread: noise-free and quantised data), so that the data term is a
+    // chi-square and the prior's relative sd means what it says.
+    std::vector<double> samples;
     for (Eigen::Index k = 0; k < data.rows(); ++k)
-      if (channels[c]->sampled(k)) {
-        sum += channels[c]->values(k);
-        sum2 += channels[c]->values(k) * channels[c]->values(k);
-        ++n;
-      }
-    const double var = n > 1 ? sum2 / n - (sum / n) * (sum / n) : 0.0;
-    sd[c] = var > 0 ? std::sqrt(var) : 1.0;
+      if (channels[c]->sampled(k)) samples.push_back(channels[c]->values(k));
+    const Eigen::Map<const Eigen::VectorXd> y(samples.data(),
+                                              static_cast<Eigen::Index>(samples.size()));
+    const double spread = y.size() > 1 ? std::sqrt((y.array() - y.mean()).square().mean()) : 1.0;
+    const double noise = y.size() >= 16 ? EstimateNoiseSd(y) : 0.0;
+    sd[c] = std::max({noise, 1e-3 * spread, 1e-12});
   }
   if (!(o.segment_s >= 0)) throw InputError("refit: --segment must be positive (0: automatic)");
   const double segment_s = o.segment_s > 0 ? o.segment_s : AutomaticSegmentSeconds(data, info);

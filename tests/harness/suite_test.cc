@@ -7,7 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
+#include "core/csv_dataset.h"
 #include "core/error.h"
 #include "harness/results.h"
 #include "harness/run_suite.h"
@@ -121,6 +124,101 @@ TEST_F(SuiteTest, RunGivesTheSameRowsAtAnyThreadCount) {
   EXPECT_THAT(md, HasSubstr("## odin3dof"));
   EXPECT_THAT(md, HasSubstr("Best training maneuver"));
   EXPECT_EQ(ResultsCsv(one).substr(0, 6), "vessel");
+}
+
+// A suite on measured files: the entries are read strictly, paths are taken from the suite
+// file's folder, and the simulated-suite fields do not apply.
+TEST_F(SuiteTest, MeasuredDataSuitesAreReadStrictly) {
+  const nlohmann::json ok = {
+      {"name", "logs"},
+      {"vessels", {"odin3dof"}},
+      {"data",
+       {{"train", {{{"name", "a"}, {"file", "logs/a.csv"}}}},
+        {"test", {{{"name", "b"}, {"file", "/abs/b.dat"}, {"format", "marin-dat"}}}}}},
+      {"methods", {"nominal", "refit", "diagnose", "nomoto"}}};
+  const Suite suite = ParseSuite(ok, "/studies/s.json");
+  ASSERT_TRUE(suite.Measured());
+  EXPECT_EQ(suite.train_data.at(0).file, "/studies/logs/a.csv");
+  EXPECT_EQ(suite.test_data.at(0).file, "/abs/b.dat");
+  EXPECT_EQ(suite.train_maneuvers, std::vector<std::string>{"a"});
+  EXPECT_EQ(suite.noise, std::vector<double>{0.0});
+  auto expect = [](nlohmann::json suite, const std::string& what) {
+    try {
+      ParseSuite(suite, "s.json");
+      FAIL() << what;
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("s.json"));
+      EXPECT_THAT(e.what(), HasSubstr(what));
+    }
+  };
+  nlohmann::json s = ok;
+  s["data"]["train"][0]["colour"] = "blue";
+  expect(s, "unknown field 'colour'");
+  s = ok;
+  s["data"]["train"][0]["format"] = "excel";
+  expect(s, "format 'excel'");
+  s = ok;
+  s["data"]["train"][0]["map"] = "t=time";
+  expect(s, "csv-log only");
+  s = ok;
+  s["data"]["train"][0]["from_s"] = 50;
+  s["data"]["train"][0]["to_s"] = 10;
+  expect(s, "from_s must be before to_s");
+  s = ok;
+  s["data"]["test"][0].erase("file");
+  expect(s, "missing field 'file'");
+  s = ok;
+  s["train_maneuvers"] = {"prbs"};
+  expect(s, "does not apply");
+  s = ok;
+  s["vessels"] = {"odin3dof", "msd"};
+  expect(s, "at most one vessel");
+  s = ok;
+  s["data"]["train"] = nlohmann::json::array();
+  expect(s, "data: train");
+}
+
+// Trained and tested on files: the nominal vessel fits its own clean data exactly, every method
+// gives a row per test file with the heading scored too, only GP runs once per seed, and the
+// rows are the same at 1 and 2 threads.
+TEST_F(SuiteTest, MeasuredSuiteTrainsAndTestsOnTheFiles) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "usvid_suite_measured_test";
+  std::filesystem::create_directories(dir);
+  WriteDatasetCsv((dir / "train.csv").string(),
+                  SimulateForSuite("odin3dof", "random-steps", 120, 0.0, 1));
+  WriteDatasetCsv((dir / "test.csv").string(),
+                  SimulateForSuite("odin3dof", "multisine", 60, 0.0, 2));
+  const nlohmann::json j = {
+      {"name", "files"},
+      {"vessels", {"odin3dof"}},
+      {"data",
+       {{"train", {{{"name", "steps"}, {"file", "train.csv"}}}},
+        {"test",
+         {{{"name", "sines"}, {"file", "test.csv"}},
+          {{"name", "sines, last 30 s"}, {"file", "test.csv"}, {"from_s", 30}}}}}},
+      {"methods",
+       {"nominal",
+        {{"method", "refit"}, {"refit_params", {"Nv"}}},
+        "sindy",
+        {{"method", "gp"}, {"population", 50}, {"generations", 2}}}},
+      {"seeds", {1, 2}}};
+  const Suite suite = ParseSuite(j, (dir / "suite.json").string());
+  EXPECT_EQ(FitJobs(suite).size(), 5u);  // nominal, refit, sindy once; gp per seed
+  const std::vector<ResultRow> one = RunSuite(suite, 1), two = RunSuite(suite, 2);
+  ASSERT_EQ(one.size(), 10u);
+  for (size_t i = 0; i < one.size(); ++i) {
+    ASSERT_EQ(one[i].status, "ok") << one[i].method;
+    EXPECT_TRUE(one[i].channel_fit_percent.contains("psi")) << one[i].method;
+    nlohmann::json a = one[i].ToJson(), b = two[i].ToJson();
+    a.erase("fit_seconds");
+    b.erase("fit_seconds");
+    EXPECT_EQ(a, b) << i;
+    if (one[i].method == "nominal" || one[i].method == "refit")
+      EXPECT_GT(one[i].mean_fit_percent, 99.9) << one[i].method << " " << one[i].test_maneuver;
+  }
+  EXPECT_THAT(SummaryMarkdown(suite, one, 1.0), HasSubstr("sines: free-run fit % per channel"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

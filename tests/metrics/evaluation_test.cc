@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "effects/effect.h"
+#include "effects/effect_values.h"
 #include "maneuvers/maneuver_factory.h"
 #include "metrics/fit_metrics.h"
 #include "simulation/vessel_simulator.h"
@@ -91,6 +93,39 @@ TEST_F(EvaluationTest, BadModelsAreRefused) {
   model["equations"]["u"] = "tau_q";
   EXPECT_THROW(EvaluateModel(model, Odin("prbs")), InputError);
   EXPECT_THROW(EvaluateModel(nlohmann::json::object(), Odin("prbs")), InputError);
+}
+
+// A vessel model (no equations; refit, nominal and diagnose write them) is free-run by the
+// vessel itself, with its parameters and effects: the simulator that made the data reproduces
+// them, a current it lacks shows, the current in the model's effects closes the gap.
+TEST_F(EvaluationTest, VesselModelsRunTheirSimulator) {
+  const VesselSimulator& sim = FindVessel("odin3dof");
+  const Effect current{EffectKind::kCurrent, {{"current_north", 0.4}, {"current_east", 0.0}}};
+  auto m = MakeManeuver("zigzag:20/20", sim.Info().actuation, 120.0, 4);
+  const Dataset data =
+      sim.RunManeuver(*m, sim.Info().default_params, ValuesOf({current}), RunOptions{}).data;
+  nlohmann::json model = {{"method", "nominal"}, {"vessel", "odin3dof"}};
+  const Evaluation nominal = EvaluateModel(model, data);
+  EXPECT_LT(nominal.metrics.at("north").at("fit_percent").get<double>(), 99.0);
+  model["effects"] = {EffectToJson(current)};
+  const Evaluation extended = EvaluateModel(model, data);
+  for (const char* c : {"u", "v", "r", "psi", "north", "east"})
+    EXPECT_GT(extended.metrics.at(c).at("fit_percent").get<double>(), 99.9) << c;
+  EXPECT_FALSE(extended.metrics.at("diverged").get<bool>());
+}
+
+TEST_F(EvaluationTest, BadVesselModelsAreRefused) {
+  const Dataset data = Odin("zigzag:20/20");
+  EXPECT_THROW(EvaluateModel({{"vessel", "titanic"}}, data), InputError);
+  EXPECT_THROW(EvaluateModel({{"vessel", "odin3dof"}, {"parameters", {{"warp", 9}}}}, data),
+               InputError);
+  EXPECT_THROW(
+      EvaluateModel({{"vessel", "odin3dof"}, {"effects", {{{"effect", "current"}}}}}, data),
+      InputError);
+  EXPECT_THROW(EvaluateModel({{"vessel", "odin3dof"},
+                              {"effects", {{{"effect", "inertia"}, {"parameters", {{"sc", 1}}}}}}},
+                             data),
+               InputError);
 }
 
 }  // namespace

@@ -1,0 +1,157 @@
+// Zig-zag figures of merit (ITTC 7.5-04-02-01) read from a record: on a 20/20 zig-zag of a
+// first-order Nomoto ship, simulated exactly here, the analysis finds the execution, the
+// first turn's direction, the reversals at the rudder's zero crossings and the overshoots beyond
+// the threshold; the same record with the ITTC rudder sign (positive to port) gives the same
+// figures, since the direction is read from the heading; records without a rudder, or whose
+// rudder never moves, are refused.
+#include "metrics/zigzag_response.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+#include "core/error.h"
+
+namespace usvid {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+struct ZigzagRecord {
+  Dataset data;                  // t, psi, delta (positive rudder turns psi positive)
+  double execute_s = 0.0;        // when the rudder was first put over
+  std::vector<double> reversal;  // times the rudder was reversed (first sample with the new sign)
+  std::vector<double> overshoot_deg;  // true excursion beyond B after each reversal
+};
+
+// r' = (K delta - r) / T, psi' = r, K = 0.1 1/s, T = 10 s, initial heading psi0 = 0.3 rad, at
+// rest. The rudder is held at 0 for a 5 s approach, then put to first_sign * 20 deg; it is
+// reversed at the first 0.1 s tick at which psi - psi0 has passed +-20 deg in the direction of
+// the turn. Between ticks the model is solved exactly (the rudder is held), and the true
+// overshoots are taken on a 100 times finer grid than the record's.
+ZigzagRecord SimulateNomotoZigzag(int first_sign, double duration_s = 300.0) {
+  constexpr double kK = 0.1, kT = 10.0, kDt = 0.1, kLeadIn = 5.0, kPsi0 = 0.3;
+  constexpr double kRudder = 20 * kDeg, kB = 20 * kDeg;
+  constexpr int kSub = 100;
+  const int n = static_cast<int>(std::lround(duration_s / kDt)) + 1;
+  Eigen::VectorXd t(n), psi(n), delta(n);
+  ZigzagRecord rec;
+  double p = kPsi0, r = 0.0;
+  int sign = 0;  // current rudder direction, 0 during the approach
+  std::vector<double> beyond;
+  for (int k = 0; k < n; ++k) {
+    t(k) = k * kDt;
+    if (t(k) >= kLeadIn - 1e-9 && sign == 0) {
+      sign = first_sign;
+      rec.execute_s = t(k);
+    } else if (sign != 0 && sign * (p - kPsi0) >= kB) {
+      sign = -sign;
+      rec.reversal.push_back(t(k));
+      beyond.push_back(-INFINITY);
+    }
+    psi(k) = p;
+    delta(k) = sign * kRudder;
+    // Exact solution with delta held over the tick, on a fine grid for the true excursions.
+    const double rs = kK * delta(k);  // the steady rate for this rudder
+    const double h = kDt / kSub;
+    for (int s = 0; s < kSub; ++s) {
+      const double decay = std::exp(-h / kT);
+      p += rs * h + (r - rs) * kT * (1 - decay);
+      r = rs + (r - rs) * decay;
+      // After a reversal to `sign`, the heading was turning the other way (-sign).
+      if (!beyond.empty() && k + 1 < n)
+        beyond.back() = std::max(beyond.back(), -sign * (p - kPsi0));
+    }
+  }
+  for (double b : beyond) rec.overshoot_deg.push_back((b - kB) / kDeg);
+  rec.data = Dataset(t);
+  rec.data.Set("psi", psi);
+  rec.data.Set("delta", delta);
+  return rec;
+}
+
+void ExpectSameFigures(const ZigzagResponse& z, const ZigzagRecord& rec, int first_turn,
+                       const std::string& what) {
+  EXPECT_NEAR(z.execute_s, rec.execute_s, 1e-9) << what;
+  EXPECT_EQ(z.first_turn, first_turn) << what;
+  ASSERT_EQ(z.reversal_s.size(), rec.reversal.size()) << what;
+  ASSERT_EQ(z.overshoot_deg.size(), rec.overshoot_deg.size()) << what;
+  for (size_t i = 0; i < rec.reversal.size(); ++i) {
+    EXPECT_NEAR(z.reversal_s[i], rec.reversal[i], 1e-9) << what << " reversal " << i;
+    EXPECT_NEAR(z.overshoot_deg[i], rec.overshoot_deg[i], 0.05) << what << " overshoot " << i;
+  }
+}
+
+TEST(ZigzagResponseTest, NomotoZigzagOvershootsAndReversals) {
+  const ZigzagRecord rec = SimulateNomotoZigzag(+1);
+  // A real zig-zag: several reversals, overshoots of a few degrees.
+  ASSERT_GE(rec.reversal.size(), 4u);
+  for (size_t i = 0; i + 1 < rec.overshoot_deg.size(); ++i) {
+    EXPECT_GT(rec.overshoot_deg[i], 1.0) << i;
+    EXPECT_LT(rec.overshoot_deg[i], 20.0) << i;
+  }
+  const ZigzagResponse z = AnalyseZigzag(rec.data, 20.0);
+  ExpectSameFigures(z, rec, +1, "starboard first");
+  // The reversals are the rudder's zero crossings in the record.
+  const Eigen::VectorXd& delta = rec.data["delta"];
+  for (double ts : z.reversal_s) {
+    const Eigen::Index k = std::lround(ts / 0.1);
+    ASSERT_GT(k, 0);
+    EXPECT_LT(delta(k) * delta(k - 1), 0.0) << "t=" << ts;
+  }
+}
+
+TEST(ZigzagResponseTest, PortFirstTurnIsReadFromHeading) {
+  const ZigzagRecord rec = SimulateNomotoZigzag(-1);
+  ASSERT_GE(rec.reversal.size(), 4u);
+  ExpectSameFigures(AnalyseZigzag(rec.data, 20.0), rec, -1, "port first");
+}
+
+// The ITTC convention (positive rudder turns to port): the same run with delta's sign flipped
+// gives identical figures, including first_turn = +1 (psi grows first).
+TEST(ZigzagResponseTest, RudderSignConventionDoesNotMatter) {
+  const ZigzagRecord rec = SimulateNomotoZigzag(+1);
+  const ZigzagResponse starboard_positive = AnalyseZigzag(rec.data, 20.0);
+  Dataset flipped = rec.data;
+  flipped.Set("delta", -rec.data["delta"]);
+  const ZigzagResponse port_positive = AnalyseZigzag(flipped, 20.0);
+  ExpectSameFigures(port_positive, rec, +1, "ITTC sign");
+  EXPECT_EQ(port_positive.reversal_s, starboard_positive.reversal_s);
+  EXPECT_EQ(port_positive.overshoot_deg, starboard_positive.overshoot_deg);
+}
+
+TEST(ZigzagResponseTest, RudderThatNeverMovesIsRefused) {
+  ZigzagRecord rec = SimulateNomotoZigzag(+1);
+  rec.data.Set("delta", Eigen::VectorXd::Zero(rec.data.rows()));
+  EXPECT_THROW(AnalyseZigzag(rec.data, 20.0), InputError);
+  // A constant trim angle is not a rudder execution either.
+  rec.data.Set("delta", Eigen::VectorXd::Constant(rec.data.rows(), 5 * kDeg));
+  EXPECT_THROW(AnalyseZigzag(rec.data, 20.0), InputError);
+}
+
+TEST(ZigzagResponseTest, MissingRudderIsRefused) {
+  ZigzagRecord rec = SimulateNomotoZigzag(+1);
+  rec.data.metadata()["source"] = "trial.csv";
+  rec.data.Remove("delta");
+  try {
+    AnalyseZigzag(rec.data, 20.0);
+    FAIL() << "no InputError without a rudder channel";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("trial.csv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("delta"), std::string::npos) << e.what();
+  }
+  // A rudder under another name is found when named.
+  ZigzagRecord named = SimulateNomotoZigzag(+1);
+  named.data.Set("rudder", named.data["delta"]);
+  named.data.Remove("delta");
+  EXPECT_THROW(AnalyseZigzag(named.data, 20.0), InputError);
+  ExpectSameFigures(AnalyseZigzag(named.data, 20.0, "psi", "rudder"), named, +1, "named rudder");
+}
+
+}  // namespace
+}  // namespace usvid
