@@ -48,6 +48,55 @@ TEST_F(UsvidCliTest, UsageErrorsExitTwo) {
   EXPECT_THAT(missing.err, HasSubstr("/nonexistent/x.csv"));
 }
 
+// The options added for measured data refuse what they cannot do: exit 2, the option or file
+// named, no output left.
+TEST_F(UsvidCliTest, MeasuredDataOptionsRefuseBadInput) {
+  const auto dir = FreshTempDir();
+  const std::string data = (dir / "k.csv").string();
+  ASSERT_EQ(RunUsvid("simulate --vessel kvlcc2 --maneuver zigzag:20/20 --duration 60 --out " + data)
+                .exit_code,
+            0);
+  struct Case {
+    std::string args, says;
+  };
+  const std::string out = (dir / "out").string();
+  WriteText(dir / "suite.json",
+            R"({"vessels": ["kvlcc2"], "methods": ["nominal"], "data": {"train": [{"name": "a",
+            "file": "missing.csv"}], "test": [{"name": "b", "file": "missing.csv"}]}})");
+  WriteText(dir / "log.csv", "time,yaw\n0,0\n1,0.1\n2,0.2\n3,0.3\n4,0.4\n");
+  WriteText(dir / "effects.json", R"({"effects": [{"effect": "current", "parameters": {}}]})");
+  const Case cases[] = {
+      {"simulate --vessel kvlcc2 --maneuver zigzag:20/20 --cruise 500 --out " + out + ".csv",
+       "--cruise"},
+      {"simulate --vessel odin3dof --maneuver zigzag:0/20 --out " + out + ".csv", "zigzag"},
+      {"simulate --vessel kvlcc2 --maneuver zigzag:20/20 --params " +
+           (dir / "effects.json").string() + " --out " + out + ".csv",
+       "effects.json"},
+      {"identify --method refit --data " + data + " --out " + out + ".json", "needs --vessel"},
+      {"identify --method refit --vessel kvlcc2 --refit-params R_0,Z_zz --data " + data +
+           " --out " + out + ".json",
+       "Z_zz"},
+      {"identify --method nomoto --states r,u --inputs delta --data " + data + " --out " + out +
+           ".json",
+       "nomoto"},
+      {"info --data " + data + " --zigzag -5", "--zigzag"},
+      {"info --data " + data + " --zigzag 20 --rudder flap", "flap"},
+      {"diagnose --data " + data + " --vessel kvlcc2 --causes 0 --out " + out, "--causes"},
+      {"compare --suite " + (dir / "suite.json").string() + " --out " + out, "missing.csv"},
+      {"import --format csv --data " + (dir / "log.csv").string() +
+           " --map t=time,psi=yaw --rate-from heading --out " + out + ".csv",
+       "heading"},
+  };
+  for (const Case& c : cases) {
+    const auto r = RunUsvid(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_THAT(r.err, HasSubstr(c.says)) << c.args;
+    EXPECT_FALSE(fs::exists(out + ".csv") || fs::exists(out + ".json") ||
+                 fs::exists(out + "/diagnosis.json") || fs::exists(out + "/results.json"))
+        << c.args;
+  }
+}
+
 // A malformed data file: exit 2, "file:line:column: what" on stderr.
 TEST_F(UsvidCliTest, MalformedCsvIsLocated) {
   const auto dir = FreshTempDir();
