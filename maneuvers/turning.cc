@@ -23,13 +23,8 @@ std::vector<double> Turning::InitialCommand() const { return CruiseCommand(act_)
 void Turning::Command(double t, std::span<const double> state, std::span<double> u) {
   const std::vector<double> cruise = CruiseCommand(act_);
   std::copy(cruise.begin(), cruise.end(), u.begin());
-  if (!commanded_) {
-    yaw_ = cruise[act_.yaw_input];
-    last_t_ = t;
-    commanded_ = true;
-  }
   if (t < kLeadInS) {
-    last_t_ = t;  // the rudder rests until the execution, and slews from there
+    u[act_.yaw_input] = yaw_.Rest(act_, t);
     return;
   }
   const double psi = state[act_.heading_state];
@@ -59,9 +54,7 @@ void Turning::Command(double t, std::span<const double> state, std::span<double>
     const double r = state[act_.rate_state];
     if (std::abs(r) > 1e-6) last_radius_ = act_.Speed(state) / std::abs(r);
   }
-  yaw_ = act_.SlewYaw(yaw_, act_.YawCommand(rudder_deg_), t - last_t_);
-  last_t_ = t;
-  u[act_.yaw_input] = yaw_;
+  u[act_.yaw_input] = yaw_.Toward(act_, t, act_.YawCommand(rudder_deg_));
 }
 
 nlohmann::json Turning::Report() const {

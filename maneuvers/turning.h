@@ -6,6 +6,7 @@
 #pragma once
 
 #include "maneuvers/maneuver.h"
+#include "maneuvers/slewed_yaw.h"
 
 namespace usvid {
 
@@ -26,8 +27,7 @@ class Turning : public Maneuver {
   double psi0_ = 0.0, north0_ = 0.0, east0_ = 0.0;
   double advance_ = -1.0, transfer_ = -1.0, tactical_ = -1.0;
   double last_radius_ = -1.0;
-  double yaw_ = 0.0, last_t_ = 0.0;  // the yaw command sent, slewed (Actuation::SlewYaw)
-  bool commanded_ = false;
+  SlewedYaw yaw_;
 };
 
 }  // namespace usvid

@@ -35,13 +35,8 @@ std::vector<double> ZigZag::InitialCommand() const { return CruiseCommand(act_);
 void ZigZag::Command(double t, std::span<const double> state, std::span<double> u) {
   const std::vector<double> cruise = CruiseCommand(act_);
   std::copy(cruise.begin(), cruise.end(), u.begin());
-  if (!commanded_) {
-    yaw_ = cruise[act_.yaw_input];
-    last_t_ = t;
-    commanded_ = true;
-  }
   if (t < kLeadInS) {
-    last_t_ = t;  // the rudder rests until the execution, and slews from there
+    u[act_.yaw_input] = yaw_.Rest(act_, t);
     return;
   }
   const double psi = state[act_.heading_state];
@@ -61,9 +56,7 @@ void ZigZag::Command(double t, std::span<const double> state, std::span<double> 
     switch_times_.push_back(t);
     overshoot_.push_back(0.0);
   }
-  yaw_ = act_.SlewYaw(yaw_, act_.YawCommand(sign_ * rudder_deg_), t - last_t_);
-  last_t_ = t;
-  u[act_.yaw_input] = yaw_;
+  u[act_.yaw_input] = yaw_.Toward(act_, t, act_.YawCommand(sign_ * rudder_deg_));
 }
 
 nlohmann::json ZigZag::Report() const {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "maneuvers/maneuver.h"
+#include "maneuvers/slewed_yaw.h"
 
 namespace usvid {
 
@@ -33,8 +34,7 @@ class ZigZag : public Maneuver {
   std::vector<double> switch_times_;
   // Largest excursion beyond the threshold after each switch [rad], sign-corrected.
   std::vector<double> overshoot_;
-  double yaw_ = 0.0, last_t_ = 0.0;  // the yaw command sent, slewed (Actuation::SlewYaw)
-  bool commanded_ = false;
+  SlewedYaw yaw_;
 };
 
 }  // namespace usvid
