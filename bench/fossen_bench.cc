@@ -1,41 +1,65 @@
-// fossen-ceres speed (issue 6 and 10): the multiple-shooting fit of odin3dof's 10 parameters
-// (plus 3 initial velocities per 10 s segment) on 18k samples (900 s at 20 Hz), one core,
-// starting from the equation-error fit; and the equation-error fit itself.
+// Ceres fits (issue 6 and 10), on the shared fixture (bench/fixtures.h), one core:
+//  - fossen-ceres' equation-error fit of odin3dof's 10 parameters on 18k samples, and its cost
+//    against the number of samples (1k to 100k: linear);
+//  - the multiple-shooting fit of the same 10 parameters (plus 3 initial velocities per 10 s
+//    segment) from the equation-error start;
+//  - the 12-parameter multiple-shooting fit (the waterjet model's 13 with m11 held) on 18k
+//    samples (goal: under 1 s): on data of that model (its error then is the noise), and on
+//    odin-hs, which it cannot match (Ceres runs to its 100-iteration cap: the cost of a misfit).
 #include <benchmark/benchmark.h>
 
-#include "maneuvers/maneuver_factory.h"
+#include <algorithm>
+#include <cmath>
+
+#include "bench/fixtures.h"
 #include "methods/fossen_ceres/fossen_fit.h"
-#include "sensors/noise.h"
-#include "simulation/vessel_simulator.h"
 
 namespace usvid {
 namespace {
 
-const PreparedData& Data18k() {
-  static const PreparedData prepared = [] {
-    const VesselSimulator& sim = FindVessel("odin3dof");
-    auto m = MakeManeuver("random-steps", sim.Info().actuation, 900.0, 5);
-    Dataset d = sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
-    AddGaussianNoise(d, sim.Info().states, 0.005, 5);
-    return Preprocess(d, {"u", "v", "r"}, {"tau_x", "tau_y", "tau_n"}, {});
-  }();
-  return prepared;
-}
+using bench::OdinHsPrepared;
+using bench::OdinPrepared;
 
 void BM_FossenEquationError(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(fossen::FitEquationError(Data18k(), {}));
-  state.counters["samples"] = static_cast<double>(Data18k().data.rows());
+  const PreparedData& data = OdinPrepared(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(fossen::FitEquationError(data, {}));
+  state.counters["samples"] = static_cast<double>(data.data.rows());
+  state.SetComplexityN(state.range(0));
 }
-BENCHMARK(BM_FossenEquationError)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FossenEquationError)->Arg(18000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FossenEquationError)
+    ->Name("BM_FossenEquationErrorRows")
+    ->RangeMultiplier(10)
+    ->Range(1000, 100000)
+    ->Arg(30000)
+    ->Complexity(benchmark::oN)
+    ->Unit(benchmark::kMillisecond);
 
 void BM_FossenMultipleShooting(benchmark::State& state) {
-  const auto start = fossen::FitEquationError(Data18k(), {}).params;
+  const auto start = fossen::FitEquationError(OdinPrepared(), {}).params;
   fossen::FossenFit fit;
-  for (auto _ : state) fit = fossen::FitSimulationError(Data18k(), start, {});
-  state.counters["samples"] = static_cast<double>(Data18k().data.rows());
+  for (auto _ : state) fit = fossen::FitSimulationError(OdinPrepared(), start, {});
+  state.counters["samples"] = static_cast<double>(OdinPrepared().data.rows());
   state.counters["iterations"] = fit.iterations;
 }
 BENCHMARK(BM_FossenMultipleShooting)->Unit(benchmark::kMillisecond);
+
+void BM_Fossen12ParameterShooting(benchmark::State& state, const PreparedData& (*data)()) {
+  const auto start = fossen::FitWaterjetEquationError(data(), {}).params;
+  fossen::WaterjetFit fit;
+  for (auto _ : state) fit = fossen::FitWaterjetSimulationError(data(), start, {});
+  state.counters["samples"] = static_cast<double>(data().data.rows());
+  state.counters["iterations"] = fit.iterations;
+  double worst = 0.0;
+  for (int i = 0; i < 13; ++i)
+    worst = std::max(worst, std::abs(fit.params[i] / bench::WaterjetTruth()[i] - 1.0));
+  state.counters["worst_parameter_error"] = worst;
+}
+BENCHMARK_CAPTURE(BM_Fossen12ParameterShooting, own_model, &bench::WaterjetModelPrepared)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Fossen12ParameterShooting, odin_hs_misfit, &OdinHsPrepared)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace usvid

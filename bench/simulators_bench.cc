@@ -5,8 +5,10 @@
 #include <ceres/jet.h>
 
 #include "simulators/eb2dof.h"
+#include "simulators/kvlcc2.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
+#include "simulators/odin_hs.h"
 #include "simulators/rk4.h"
 
 namespace usvid {
@@ -16,6 +18,7 @@ template <typename V, typename T>
 void BM_Rk4Steps(benchmark::State& state) {
   StateVector<T, V::kStates> x0 = StateVector<T, V::kStates>::Constant(T(0.1));
   if constexpr (V::kStates > 3) x0(3) = T(6.0);
+  if constexpr (requires { V::kIdleRpm; }) x0(6) = T(1200.0), x0(8) = T(1.0);  // odin-hs jets
   StateVector<T, V::kStates> x;
   std::array<T, V::kInputs> u;
   for (int i = 0; i < V::kInputs; ++i) u[i] = T(0.3 * V::kInputMax[i]);
@@ -41,9 +44,13 @@ void BM_Rk4Steps(benchmark::State& state) {
 BENCHMARK(BM_Rk4Steps<Msd, double>);
 BENCHMARK(BM_Rk4Steps<Odin3Dof, double>);
 BENCHMARK(BM_Rk4Steps<Eb2Dof, double>);
+BENCHMARK(BM_Rk4Steps<OdinHs, double>);
+BENCHMARK(BM_Rk4Steps<Kvlcc2, double>);
 BENCHMARK(BM_Rk4Steps<Msd, ceres::Jet<double, Msd::kParams>>);
 BENCHMARK(BM_Rk4Steps<Odin3Dof, ceres::Jet<double, Odin3Dof::kParams>>);
 BENCHMARK(BM_Rk4Steps<Eb2Dof, ceres::Jet<double, Eb2Dof::kParams>>);
+BENCHMARK(BM_Rk4Steps<OdinHs, ceres::Jet<double, OdinHs::kParams>>);
+BENCHMARK(BM_Rk4Steps<Kvlcc2, ceres::Jet<double, Kvlcc2::kParams>>);
 
 }  // namespace
 }  // namespace usvid
