@@ -68,6 +68,18 @@ struct EquationResidual {
   }
 };
 
+// Equation errors of up to kBatch consecutive samples in one residual block.
+template <typename Model>
+struct EquationBatch {
+  static constexpr Eigen::Index kBatch = 64;
+  std::vector<EquationResidual<Model>> samples;
+  template <typename T>
+  bool operator()(const T* theta, T* res) const {
+    for (size_t k = 0; k < samples.size(); ++k) samples[k](theta, res + 3 * k);
+    return true;
+  }
+};
+
 // One shooting segment: rows [begin, end] simulated from the free initial velocities x0; the
 // residuals are the normalised errors of u, v, r at every row after the first, then the
 // weighted continuity error between the simulated end and the next segment's start.
@@ -149,19 +161,37 @@ void Solve(ceres::Problem& problem, const FossenOptions& o, double* p,
   fit.final_cost = summary.final_cost;
   fit.iterations = static_cast<int>(summary.iterations.size());
   for (int i = 0; i < kParams; ++i) fit.params[i] = p[i] * scale[i];
-  ceres::Covariance::Options co;
-  ceres::Covariance covariance(co);
-  std::vector<std::pair<const double*, const double*>> blocks = {{p, p}};
-  if (covariance.Compute(blocks, &problem)) {
-    double c[kParams * kParams];
-    covariance.GetCovarianceBlock(p, p, c);
-    // Scale by the residual variance per degree of freedom (the residuals are normalised).
-    const double dof = std::max(1, summary.num_residuals - summary.num_effective_parameters);
-    const double s2 = 2.0 * summary.final_cost / dof;
-    for (int i = 0; i < kParams; ++i)
-      fit.sd[i] = scale[i] * std::sqrt(std::max(0.0, c[i * kParams + i] * s2));
-    fit.covariance_ok = true;
+  // Covariance (J^T J)^-1 s^2 from the Jacobian at the solution with respect to the parameters
+  // alone (their tangent space: a held parameter has no column; for multiple shooting it is
+  // conditional on the segments' initial states). Dense and O(residuals x parameters^2):
+  // ceres::Covariance went through a sparse QR of the whole problem, the fit's largest cost on
+  // long records.
+  ceres::Problem::EvaluateOptions eo;
+  eo.parameter_blocks = {p};
+  ceres::CRSMatrix jacobian;
+  double cost = 0.0;
+  if (!problem.Evaluate(eo, &cost, nullptr, nullptr, &jacobian)) return;
+  const int n = jacobian.num_cols;
+  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(n, n);
+  for (int row = 0; row < jacobian.num_rows; ++row)
+    for (int a = jacobian.rows[row]; a < jacobian.rows[row + 1]; ++a)
+      for (int b = jacobian.rows[row]; b < jacobian.rows[row + 1]; ++b)
+        normal(jacobian.cols[a], jacobian.cols[b]) += jacobian.values[a] * jacobian.values[b];
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(normal);
+  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0).all()) return;
+  const Eigen::MatrixXd c = ldlt.solve(Eigen::MatrixXd::Identity(n, n));
+  // Scaled by the residual variance per degree of freedom (the residuals are normalised).
+  const double dof = std::max(1, summary.num_residuals - summary.num_effective_parameters);
+  const double s2 = 2.0 * summary.final_cost / dof;
+  const bool tangent = n == kParams - (Model::kFixedParam >= 0 ? 1 : 0);
+  if (!tangent && n != kParams) return;
+  for (int i = 0, column = 0; i < kParams; ++i) {
+    if (tangent && i == Model::kFixedParam) continue;  // held: no column, sd 0
+    fit.sd[i] =
+        i == Model::kFixedParam ? 0.0 : scale[i] * std::sqrt(std::max(0.0, c(column, column) * s2));
+    ++column;
   }
+  fit.covariance_ok = true;
 }
 
 template <typename Model>
@@ -198,13 +228,23 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
     scale[i] = Sd(d[normaliser]);
   }
   ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
-  for (Eigen::Index k = 0; k < d.rows(); ++k) {
-    std::array<double, Model::kInputs> input;
-    for (int i = 0; i < Model::kInputs; ++i) input[i] = d[in[i]](k);
-    auto* cost = new ceres::AutoDiffCostFunction<EquationResidual<Model>, 3, kParams>(
-        new EquationResidual<Model>{d["u"](k), d["v"](k), d["r"](k), d["u_dot"](k), d["v_dot"](k),
-                                    d["r_dot"](k), input, scale, param_scale});
-    problem.AddResidualBlock(cost, loss, p.data());
+  // Samples go into residual blocks of kBatch (one block each when the loss is robust: Huber
+  // acts on a block's squared norm). Ceres' cost per block, not per residual, made 100k blocks
+  // of 3 residuals cost 15 times 10k.
+  const Eigen::Index batch = options.robust ? 1 : EquationBatch<Model>::kBatch;
+  for (Eigen::Index first = 0; first < d.rows(); first += batch) {
+    auto* functor = new EquationBatch<Model>;
+    for (Eigen::Index k = first; k < std::min(d.rows(), first + batch); ++k) {
+      std::array<double, Model::kInputs> input;
+      for (int i = 0; i < Model::kInputs; ++i) input[i] = d[in[i]](k);
+      functor->samples.push_back({d["u"](k), d["v"](k), d["r"](k), d["u_dot"](k), d["v_dot"](k),
+                                  d["r_dot"](k), input, scale, param_scale});
+    }
+    const int residuals = static_cast<int>(3 * functor->samples.size());
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<EquationBatch<Model>, ceres::DYNAMIC, kParams>(functor,
+                                                                                       residuals),
+        loss, p.data());
   }
   Bound<Model>(problem, p.data());
   BasicFossenFit<kParams> fit;
