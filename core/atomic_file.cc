@@ -13,13 +13,17 @@
 namespace usvid {
 namespace fs = std::filesystem;
 
-void WriteFileAtomically(const std::string& path, std::string_view content) {
+void CheckOutputFile(const std::string& path) {
   if (path.empty()) throw InputError("output path is empty");
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a file");
   const fs::path parent = fs::path(path).parent_path();
   if (!parent.empty() && !fs::is_directory(parent, ec))
     throw InputError(path + ": directory '" + parent.string() + "' does not exist");
+}
+
+void WriteFileAtomically(const std::string& path, std::string_view content) {
+  CheckOutputFile(path);
 
   static std::atomic<int> counter{0};
   const std::string tmp =

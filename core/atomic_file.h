@@ -10,6 +10,10 @@ namespace usvid {
 
 void WriteFileAtomically(const std::string& path, std::string_view content);
 
+// Throws the InputError WriteFileAtomically would for a path that cannot be written (empty, a
+// directory, in a missing directory): commands call it before their work, not after.
+void CheckOutputFile(const std::string& path);
+
 // Creates `dir` (and its parents) for a command's --out DIR; throws InputError when it exists
 // as a file or cannot be created.
 void EnsureOutputDirectory(const std::string& dir);

@@ -8,6 +8,7 @@
 
 #include "apps/usvid/commands.h"
 #include "apps/usvid/preprocess_options.h"
+#include "core/atomic_file.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
@@ -26,6 +27,7 @@ struct IdentifyOptions {
 };
 
 void RunIdentify(const IdentifyOptions& o) {
+  CheckOutputFile(o.out);
   IdentifyRequest r = o.request;
   r.preprocess = o.pre.Options();
   r.data_name = o.data;

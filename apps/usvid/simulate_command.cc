@@ -49,6 +49,7 @@ void RunSimulate(const SimulateOptions& o) {
   if (o.maneuver.empty() == o.inputs.empty())
     throw InputError("simulate: give exactly one of --maneuver and --inputs");
   if (!(o.dt > 0) || !(o.rate_hz > 0)) throw InputError("--dt and --rate: must be positive");
+  CheckOutputFile(o.out);
   const VesselSimulator& sim = FindVessel(o.vessel);
   const VesselInfo& info = sim.Info();
   // A model file given as --params brings its effects (a diagnose model.json); --effect items

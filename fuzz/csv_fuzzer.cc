@@ -1,0 +1,27 @@
+// libFuzzer target: the strict data CSV reader (contract section 1). Any input either parses
+// into a dataset whose time is strictly increasing and whose sampled cells are finite, or is
+// refused with InputError; nothing else (no crash, no other exception, no sanitizer report).
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+#include "core/csv_dataset.h"
+#include "core/error.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  try {
+    const usvid::Dataset d = usvid::ParseDatasetCsv(text, "fuzz.csv");
+    for (Eigen::Index k = 1; k < d.rows(); ++k)
+      if (!(d.t()(k) > d.t()(k - 1))) std::abort();
+    for (const usvid::Channel& c : d.channels())
+      for (Eigen::Index k = 0; k < d.rows(); ++k)
+        if (c.sampled(k) && !std::isfinite(c.values(k))) std::abort();
+    // What was read writes back and reads again to the same values.
+    const usvid::Dataset again = usvid::ParseDatasetCsv(usvid::FormatDatasetCsv(d), "again.csv");
+    if (again.rows() != d.rows()) std::abort();
+  } catch (const usvid::InputError&) {
+  }
+  return 0;
+}
