@@ -39,7 +39,9 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
   fossen::FossenOptions fo;
   fo.segment_s = o.segment_s > 0 ? o.segment_s : 10.0;
   fo.robust = o.robust;
-  fo.threads = o.threads > 0 ? o.threads : 1;
+  // One thread for Ceres: its parallel evaluation sums the cost in a thread-dependent order, and
+  // the last digits of the fit would differ between 1 and 2 threads.
+  fo.threads = 1;
   auto fit_equation = [&] {
     if constexpr (kOdin3Dof)
       return fossen::FitEquationError(prepared, fo);
@@ -150,7 +152,7 @@ nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, cons
   ro.free = o.refit_params;
   ro.segment_s = o.segment_s;
   ro.prior_sd = o.prior_sd;
-  ro.threads = o.threads > 0 ? o.threads : 1;
+  ro.threads = 1;  // deterministic, as for fossen-ceres
   const RefitResult fit = RefitVessel(
       o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, ro);
   Log(log, "refit of " + std::to_string(fit.free.size()) + " parameters on " +
