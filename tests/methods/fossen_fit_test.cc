@@ -115,5 +115,20 @@ TEST_F(FossenFitTest, WaterjetMapFitsOdinHsFromThrottleNozzleAndBucket) {
   }
 }
 
+// A fit that Ceres stops before it converges says so and why (issue 11): not converged, the
+// termination type and Ceres' message in the result, the parameters finite.
+TEST_F(FossenFitTest, AFitStoppedEarlySaysWhy) {
+  const PreparedData prep = Prepare(Simulate("random-steps", 120, 0.005, 5));
+  fossen::FossenOptions o;
+  o.max_iterations = 1;
+  const fossen::FossenFit eq = fossen::FitEquationError(prep, o);
+  const fossen::FossenFit sim = fossen::FitSimulationError(prep, eq.params, o);
+  EXPECT_FALSE(sim.converged);
+  EXPECT_NE(sim.termination.find("NO_CONVERGENCE"), std::string::npos) << sim.termination;
+  EXPECT_NE(sim.termination.find("Maximum number of iterations"), std::string::npos)
+      << sim.termination;
+  for (double p : sim.params) EXPECT_TRUE(std::isfinite(p));
+}
+
 }  // namespace
 }  // namespace usvid
