@@ -3,7 +3,9 @@
 // one) or the option at fault, no output file left behind, no crash. One test per input.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -23,10 +25,12 @@ struct Malformed {
   const char* says;  // expected on stderr
 };
 
-// The inputs every case may use, made once in a folder of their own.
+// The inputs every case may use, made once per process in a folder of their own.
 const fs::path& Inputs() {
   static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / "usvid_malformed_inputs";
+    // One folder per process: ctest runs the cases as separate processes, in parallel.
+    const fs::path d =
+        fs::temp_directory_path() / ("usvid_malformed_inputs_" + std::to_string(::getpid()));
     fs::remove_all(d);
     fs::create_directories(d);
     const auto sim = RunUsvid(
