@@ -25,6 +25,13 @@ nlohmann::json ParseJson(const std::string& text, const std::string& file) {
     const auto colon = what.rfind(": ");
     if (colon != std::string::npos) what = what.substr(colon + 2);
     throw InputError(Located(file, line, column, "invalid JSON: " + what));
+  } catch (const nlohmann::json::exception& e) {
+    // Not a syntax error but a value JSON allows and nlohmann cannot hold, such as a number
+    // that overflows a double (found by fuzz/suite_fuzzer: 66666e6266).
+    std::string what = e.what();
+    const auto bracket = what.find("] ");
+    if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    throw InputError(file + ": invalid JSON: " + what);
   }
 }
 

@@ -30,6 +30,17 @@ TEST_F(JsonFileTest, SyntaxErrorNamesLineAndColumn) {
 }
 
 // What is written reads back equal.
+// A number JSON allows but a double cannot hold is bad input too, not an internal error (found
+// by fuzz/suite_fuzzer).
+TEST_F(JsonFileTest, NumberOverflowIsBadInput) {
+  try {
+    ParseJson(R"({"seeds": [66666e6266]})", "s.json");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::StartsWith("s.json: invalid JSON: number overflow"));
+  }
+}
+
 TEST_F(JsonFileTest, WriteThenReadRoundTrips) {
   const auto path = std::filesystem::temp_directory_path() / "usvid_json_file_test.json";
   const nlohmann::json value = {{"vessel", "odin3dof"}, {"seed", 7}, {"p", {1.5, -2e-9}}};
