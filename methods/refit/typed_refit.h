@@ -132,7 +132,7 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   }
   for (int i = 0; i < V::kParams; ++i)
     if (free[i]) result.free.push_back(info.params[i]);
-  // Data: inputs, dynamic states, their spread.
+  // Data: inputs, dynamic states, their measurement noise.
   const InputTrack track = RecordedInputs(data, info);
   std::array<const Channel*, C> channels;
   std::array<double, C> sd;
