@@ -10,6 +10,7 @@
 #include "plot/figure_grid.h"
 #include "plot/heat_map.h"
 #include "plot/svg_text.h"
+#include "simulators/vessel.h"
 
 namespace usvid {
 namespace {
@@ -71,8 +72,7 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
   std::set<std::string> channels;
   for (const auto& [_, e] : runs)
     for (const std::string& c : e.run.channels)
-      if ((c != "north" && c != "east" && c != "psi" && c != "chi") ||
-          (suite.Measured() && (c == "psi" || c == "chi")))
+      if (!IsPositionOrHeading(c) || (suite.Measured() && (c == "psi" || c == "chi")))
         channels.insert(c);
   FigureGrid grid;
   grid.SetTitle(vessel + ", held-out " + test + ": measured and free runs").SetXLabel("t", "s");

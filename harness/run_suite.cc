@@ -13,6 +13,7 @@
 #include "metrics/structure.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
+#include "simulators/vessel.h"
 
 namespace usvid {
 namespace {}  // namespace
@@ -118,8 +119,7 @@ std::vector<std::string> ScoredStates(const nlohmann::json& model) {
   } else if (model.contains("states")) {
     for (const auto& s : model.at("states")) {
       const std::string name = s.get<std::string>();
-      if (name != "north" && name != "east" && name != "psi" && name != "chi")
-        states.push_back(name);
+      if (!IsPositionOrHeading(name)) states.push_back(name);
     }
   }
   return states;

@@ -36,6 +36,12 @@ struct Environment {
   T current_east = T(0);
 };
 
+// Positions and heading: they follow from the velocities by the kinematics, so fits and scores
+// of the dynamics leave them out.
+constexpr bool IsPositionOrHeading(std::string_view state) {
+  return state == "north" || state == "east" || state == "psi" || state == "chi";
+}
+
 template <typename V>
 concept Vessel = requires {
   { V::kName } -> std::convertible_to<std::string_view>;

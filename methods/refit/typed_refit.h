@@ -20,15 +20,10 @@
 
 namespace usvid::refit {
 
-// Positions and heading follow from the kinematics: they are not fitted against.
-constexpr bool IsKinematic(std::string_view state) {
-  return state == "north" || state == "east" || state == "psi" || state == "chi";
-}
-
 template <Vessel V>
 constexpr int DynamicStates() {
   int n = 0;
-  for (std::string_view s : V::kStateNames) n += IsKinematic(s) ? 0 : 1;
+  for (std::string_view s : V::kStateNames) n += IsPositionOrHeading(s) ? 0 : 1;
   return n;
 }
 
@@ -37,7 +32,7 @@ constexpr std::array<int, DynamicStates<V>()> DynamicIndices() {
   std::array<int, DynamicStates<V>()> idx{};
   int n = 0;
   for (int i = 0; i < V::kStates; ++i)
-    if (!IsKinematic(V::kStateNames[i])) idx[n++] = i;
+    if (!IsPositionOrHeading(V::kStateNames[i])) idx[n++] = i;
   return idx;
 }
 
