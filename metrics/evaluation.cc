@@ -1,5 +1,6 @@
 #include "metrics/evaluation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -93,9 +94,9 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
     if (model.contains("vessel") && model.at("vessel").is_string() &&
         !model.at("vessel").get<std::string>().empty()) {
       const std::string vessel = model.at("vessel").get<std::string>();
-      for (const std::string& known : VesselNames())
-        if (known == vessel && FindVessel(vessel).Info().length_m > 0)
-          length = FindVessel(vessel).Info().length_m;
+      const std::vector<std::string> known = VesselNames();
+      if (std::ranges::find(known, vessel) != known.end() && FindVessel(vessel).Info().length_m > 0)
+        length = FindVessel(vessel).Info().length_m;
     }
     length = model.value("length_m", length);
     const Eigen::ArrayXd fn = speed.array() / std::sqrt(9.81 * length);
