@@ -53,11 +53,11 @@ void AddIdentifyCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("identify", "Fit one identification method to data");
   cmd->add_option("--method", o->request.method,
                   "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge), "
-                  "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data) or fossen-ceres "
-                  "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map) or "
-                  "refit (the --vessel's own coefficients, Ceres multiple shooting) or nominal "
-                  "(the --vessel as it is, a baseline) or nomoto (first-order Nomoto heading "
-                  "model, T r' + r = K (delta - delta0))")
+                  "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data), fossen-ceres "
+                  "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map), "
+                  "refit (the --vessel's own coefficients, Ceres multiple shooting), nominal (the "
+                  "--vessel as it is, a baseline), nomoto (first-order Nomoto heading model, "
+                  "T r' + r = K (delta - delta0))")
       ->required()
       ->check(
           CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit", "nominal", "nomoto"}));
