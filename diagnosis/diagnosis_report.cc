@@ -33,8 +33,10 @@ std::string FitCells(const FitPercent& fit, const std::vector<std::string>& chan
 }
 
 std::string HeldoutFigure(const Diagnosis& d) {
+  std::string causes = d.cause;  // every cause the extended model has
+  for (const FurtherCause& f : d.further_causes) causes += " + " + std::string(f.effect.name());
   FigureGrid grid;
-  grid.SetTitle("held-out part: measured, nominal and extended (" + d.cause +
+  grid.SetTitle("held-out part: measured, nominal and extended (" + causes +
                 "), each segment from its estimated initial state")
       .SetXLabel("t", "s");
   for (const std::string& c : d.channels) {
