@@ -6,18 +6,23 @@ namespace usvid {
 
 void AddSpeedAndCourse(Dataset& data) {
   if (!data.Has("u") || !data.Has("v")) return;
-  const Channel& u = data.Get("u");
-  const Channel& v = data.Get("v");
+  // Set() may move the channels: no reference into `data` lives across it.
   if (!data.Has("U")) {
+    const Channel& u = data.Get("u");
+    const Channel& v = data.Get("v");
     Eigen::VectorXd speed = (u.values.array().square() + v.values.array().square()).sqrt().matrix();
-    data.Set("U", std::move(speed), u.sampled && v.sampled);
+    Eigen::ArrayX<bool> sampled = u.sampled && v.sampled;
+    data.Set("U", std::move(speed), std::move(sampled));
   }
   if (!data.Has("chi") && data.Has("psi")) {
+    const Channel& u = data.Get("u");
+    const Channel& v = data.Get("v");
     const Channel& psi = data.Get("psi");
     Eigen::VectorXd course(data.rows());
     for (Eigen::Index k = 0; k < data.rows(); ++k)
       course(k) = psi.values(k) + std::atan2(v.values(k), u.values(k));
-    data.Set("chi", std::move(course), u.sampled && v.sampled && psi.sampled);
+    Eigen::ArrayX<bool> sampled = u.sampled && v.sampled && psi.sampled;
+    data.Set("chi", std::move(course), std::move(sampled));
   }
 }
 
