@@ -7,6 +7,20 @@
 
 #include <Eigen/Core>
 
+// Under AddressSanitizer the flattened Jet steps of several vessels in one file take GCC tens of
+// minutes to compile, and speed is not what a sanitizer build is for: there the step is a plain
+// function.
+#if defined(__SANITIZE_ADDRESS__)
+#define USVID_FLATTEN
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define USVID_FLATTEN
+#endif
+#endif
+#ifndef USVID_FLATTEN
+#define USVID_FLATTEN [[gnu::flatten]]
+#endif
+
 namespace usvid {
 
 template <typename T, int N>
@@ -17,7 +31,7 @@ using StateVector = Eigen::Matrix<T, N, 1>;
 // stops inlining them once a translation unit grows (several vessels instantiated in one file
 // made the Jet step 3x slower).
 template <typename T, int N, typename F>
-[[gnu::flatten]] void Rk4Step(const F& f, double h, StateVector<T, N>& x) {
+USVID_FLATTEN void Rk4Step(const F& f, double h, StateVector<T, N>& x) {
   StateVector<T, N> k1, k2, k3, k4, y;
   f(x.data(), k1.data());
   y = x + (0.5 * h) * k1;
