@@ -150,7 +150,7 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
 
   // Fallback for unmeasured states: the nominal free run, its last row held if it diverged.
   RunOptions run;
-  run.dt = options.max_step;
+  run.dt = d.max_step;  // as resolved above: options.max_step 0 means the data's interval
   const SimulationResult free = sim.RunInputs(data, nominal_params, {}, run);
   d.fallback_states = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(info.states.size()));
   for (size_t i = 0; i < info.states.size(); ++i) {

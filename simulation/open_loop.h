@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "simulation/input_track.h"
@@ -29,6 +30,7 @@ size_t RolloutOpenLoop(const OpenLoopSetup& setup, const T* x0, const T* params,
                        const EffectValues<T>& effects, const std::array<double, V::kInputs>& limits,
                        T* out) {
   constexpr int N = Plant<V>::kStates;
+  if (!(setup.max_step > 0.0)) throw std::invalid_argument("RolloutOpenLoop: max_step must be > 0");
   std::array<T, V::kParams> p_eff;
   Plant<V>::ScaleParams(params, effects, p_eff.data());
   PlantStepper<V, T> stepper{p_eff.data(), &effects, limits, setup.integrator, {}};
