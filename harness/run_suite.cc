@@ -127,44 +127,19 @@ std::vector<std::string> ScoredStates(const nlohmann::json& model) {
 
 }  // namespace
 
-nlohmann::json ResultRow::ToJson() const {
-  nlohmann::json j = {{"vessel", vessel},
-                      {"train_maneuver", train_maneuver},
-                      {"test_maneuver", test_maneuver},
-                      {"method", method},
-                      {"noise", noise},
-                      {"seed", seed},
-                      {"test_seed", test_seed},
-                      {"status", status}};
-  if (status == "ok") {
-    j["fit_percent"] = fit_percent;
-    j["channel_fit_percent"] = channel_fit_percent;
-    j["nrmse"] = nrmse;
-    j["mean_fit_percent"] = mean_fit_percent;
-    j["diverged"] = diverged;
-    j["fit_seconds"] = fit_seconds;
-    j["terms"] = terms;
-    if (!regime_fit_percent.empty()) j["regime_fit_percent"] = regime_fit_percent;
-    if (precision) j["structure_precision"] = *precision;
-    if (recall) j["structure_recall"] = *recall;
-    if (parameter_error) j["parameter_error"] = *parameter_error;
-  }
-  return j;
-}
-
-std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
-                                const std::function<void(const std::string&)>& progress) {
-  const std::vector<FitJob> jobs = FitJobs(suite);
+std::vector<std::vector<ResultRow>> RunCells(
+    const Suite& suite, const std::vector<FitJob>& jobs, const std::vector<size_t>& which,
+    int threads, const std::function<void(size_t, const std::vector<ResultRow>&)>& done) {
   // Measured data are read once, before the parallel part (a bad file stops the run: exit 2).
   std::map<std::string, Dataset> train_sets, test_sets;
   for (const SuiteData& d : suite.train_data) train_sets[d.name] = LoadSuiteData(d);
   for (const SuiteData& d : suite.test_data) test_sets[d.name] = LoadSuiteData(d);
-  std::vector<std::vector<ResultRow>> rows(jobs.size());
+  std::vector<std::vector<ResultRow>> rows(which.size());
   if (threads > 0) omp_set_num_threads(threads);
-  int done = 0;
+  std::string save_failure;
 #pragma omp parallel for schedule(dynamic, 1)
-  for (size_t j = 0; j < jobs.size(); ++j) {
-    const FitJob& job = jobs[j];
+  for (size_t k = 0; k < which.size(); ++k) {
+    const FitJob& job = jobs.at(which[k]);
     ResultRow base;
     base.vessel = job.vessel.empty() ? suite.name : job.vessel;  // vessel-less data: the suite
     base.train_maneuver = job.train_maneuver;
@@ -194,7 +169,7 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
       row.model = model;
       if (!failure.empty()) {
         row.status = failure;
-        rows[j].push_back(row);
+        rows[k].push_back(row);
         continue;
       }
       try {
@@ -225,19 +200,46 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
       } catch (const std::exception& e) {
         row.status = std::string("failed: ") + e.what();
       }
-      rows[j].push_back(row);
+      rows[k].push_back(row);
     }
-#pragma omp critical
-    {
-      ++done;
-      if (progress)
-        progress("[" + std::to_string(done) + "/" + std::to_string(jobs.size()) + "] " + job.Id() +
-                 (failure.empty() ? "" : " " + failure));
+    // The callback saves the cell; a failure to save stops the run after the loop (no
+    // exception may leave the parallel region).
+#pragma omp critical(usvid_cell_done)
+    try {
+      if (done) done(which[k], rows[k]);
+    } catch (const std::exception& e) {
+      if (save_failure.empty()) save_failure = e.what();
     }
   }
+  if (!save_failure.empty()) throw InputError(save_failure);
+  return rows;
+}
+
+std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
+                                const std::function<void(const std::string&)>& progress) {
+  const std::vector<FitJob> jobs = FitJobs(suite);
+  std::vector<size_t> all(jobs.size());
+  for (size_t j = 0; j < jobs.size(); ++j) all[j] = j;
+  size_t finished = 0;
+  const auto cells =
+      RunCells(suite, jobs, all, threads, [&](size_t j, const std::vector<ResultRow>& rows) {
+        ++finished;
+        if (progress) progress(CellProgress(finished, jobs.size(), jobs[j], rows));
+      });
   std::vector<ResultRow> out;
-  for (auto& r : rows) out.insert(out.end(), r.begin(), r.end());
+  for (const auto& c : cells) out.insert(out.end(), c.begin(), c.end());
   return out;
+}
+
+std::string CellProgress(size_t finished, size_t total, const FitJob& job,
+                         const std::vector<ResultRow>& rows) {
+  std::string line = "[" + std::to_string(finished) + "/" + std::to_string(total) + "] " + job.Id();
+  // A fit that failed fails every test row the same way: say it once.
+  if (!rows.empty() && rows.front().status != "ok" &&
+      std::all_of(rows.begin(), rows.end(),
+                  [&](const ResultRow& r) { return r.status == rows.front().status; }))
+    line += " " + rows.front().status;
+  return line;
 }
 
 }  // namespace usvid

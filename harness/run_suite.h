@@ -6,44 +6,33 @@
 #pragma once
 
 #include <functional>
-#include <map>
-#include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/dataset.h"
+#include "harness/result_row.h"
 #include "harness/suite.h"
 
 namespace usvid {
-
-struct ResultRow {
-  std::string vessel, train_maneuver, test_maneuver, method;
-  double noise = 0.0;
-  uint64_t seed = 1, test_seed = 1;
-  std::map<std::string, double> fit_percent;  // per identified state
-  std::map<std::string, double> nrmse;
-  std::map<std::string, double> channel_fit_percent;  // every channel of the free run (psi too)
-  double mean_fit_percent = 0.0;
-  std::map<std::string, double> regime_fit_percent;  // mean over states, per speed regime
-  bool diverged = false;
-  double fit_seconds = 0.0;
-  int terms = 0;                          // complexity: additive terms over all equations
-  std::optional<double> precision;        // structure recovery, mean over states, where the true
-  std::optional<double> recall;           //   terms are known (msd, odin3dof)
-  std::optional<double> parameter_error;  // largest relative error of named true parameters
-  std::string status = "ok";              // or "failed: why"
-  nlohmann::json model;  // the fitted model (kept in memory for the report, not written)
-
-  nlohmann::json ToJson() const;
-};
 
 // The data a suite trains or tests on: `maneuver` on `vessel` (step grids run to the end of
 // their grid), noise on every measured channel, all from `seed`.
 Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
                          double noise, uint64_t seed);
 
+// Every cell (fit job) of the suite, in one process; rows in job order.
 std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
                                 const std::function<void(const std::string&)>& progress = {});
+
+// The cells jobs[which[k]], in parallel; result k holds the rows of jobs[which[k]]. `done` is
+// called as each cell finishes (one call at a time, in completion order); an exception it
+// throws ends the run once the running cells are done (InputError with its message).
+std::vector<std::vector<ResultRow>> RunCells(
+    const Suite& suite, const std::vector<FitJob>& jobs, const std::vector<size_t>& which,
+    int threads, const std::function<void(size_t, const std::vector<ResultRow>&)>& done = {});
+
+// The progress line of a finished cell: "[finished/total] job id", and why when its fit failed.
+std::string CellProgress(size_t finished, size_t total, const FitJob& job,
+                         const std::vector<ResultRow>& rows);
 
 }  // namespace usvid

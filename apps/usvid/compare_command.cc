@@ -1,6 +1,9 @@
-// usvid compare [--suite S.json | --quick] [--threads N] [--baseline PREV/results.json] --out DIR
+// usvid compare [--suite S.json | --quick] [--threads N] [--baseline PREV/results.json]
+//               [--fresh] --out DIR
 // The whole benchmark: every method fitted on every training maneuver and scored in free run on
-// held-out test maneuvers; writes DIR/results.json, DIR/results.csv and DIR/summary.md.
+// held-out test maneuvers; writes DIR/results.json, DIR/results.csv and DIR/summary.md. Each
+// finished cell is kept in DIR/cells, so the same command resumes a killed run; under
+// `mpirun -n N` (built with -DUSVID_WITH_MPI=ON) the cells are spread over the ranks.
 
 #include <chrono>
 #include <iostream>
@@ -9,7 +12,10 @@
 #include "apps/usvid/commands.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/executable_identity.h"
 #include "core/json_file.h"
+#include "harness/distributed_run.h"
+#include "harness/ranks.h"
 #include "harness/regression.h"
 #include "harness/report.h"
 #include "harness/results.h"
@@ -22,6 +28,7 @@ struct CompareOptions {
   std::string suite;
   std::string baseline;
   bool quick = false;
+  bool fresh = false;
   int threads = 0;
   std::string out;
 };
@@ -32,11 +39,16 @@ void RunCompare(const CompareOptions& o) {
       o.suite.empty() ? DefaultSuite(o.quick) : ParseSuite(ReadJsonFile(o.suite), o.suite);
   EnsureOutputDirectory(o.out);
   const auto start = std::chrono::steady_clock::now();
-  std::cerr << "usvid compare: suite '" << suite.name << "', " << FitJobs(suite).size()
-            << " fits x " << suite.test_maneuvers.size() << " test maneuvers\n";
-  const std::vector<ResultRow> rows = RunSuite(suite, o.threads, [](const std::string& line) {
-    std::cerr << "usvid compare: " << line << '\n';
-  });
+  if (ranks::Rank() == 0)
+    std::cerr << "usvid compare: suite '" << suite.name << "', " << FitJobs(suite).size()
+              << " fits x " << suite.test_maneuvers.size() << " test maneuvers"
+              << (ranks::Size() > 1 ? " on " + std::to_string(ranks::Size()) + " ranks" : "")
+              << '\n';
+  const DistributedRun run = RunSuiteDistributed(
+      suite, o.out, {.threads = o.threads, .fresh = o.fresh, .build = ExecutableIdentity()},
+      [](const std::string& line) { std::cerr << "usvid compare: " << line << '\n'; });
+  if (ranks::Rank() != 0) return;  // rank 0 writes the outputs
+  const std::vector<ResultRow>& rows = run.rows;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   WriteJsonFile(o.out + "/results.json", ResultsJson(suite, rows, seconds));
@@ -70,7 +82,10 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("--baseline", o->baseline,
                   "A previous results.json: mark groups that got worse beyond the spread over "
                   "seeds, and exit 3 when any did");
-  cmd->add_option("--threads", o->threads, "Fits in parallel (0: all cores)");
+  cmd->add_option("--threads", o->threads,
+                  "Fits in parallel, per MPI rank (0: OMP_NUM_THREADS, else all cores)");
+  cmd->add_flag("--fresh", o->fresh,
+                "Run every cell again, discarding the finished cells DIR/cells keeps for resuming");
   cmd->add_option("--out", o->out,
                   "Directory for results.json, results.csv, summary.md, plots, report.html")
       ->required();

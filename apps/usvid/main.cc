@@ -1,6 +1,7 @@
 // usvid: identification of high-speed USV dynamics, and a benchmark of the methods.
 // Exit codes: 0 success, 2 bad input or usage (one line naming the file, line or option),
 // 3 `compare --baseline` found results worse than the baseline, 1 an internal failure.
+// Built with MPI, an error on one of several ranks ends all of them with its exit code.
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -8,12 +9,15 @@
 
 #include "apps/usvid/commands.h"
 #include "core/error.h"
+#include "harness/ranks.h"
 
 #ifndef USVID_VERSION
 #define USVID_VERSION "unknown"
 #endif
 
-int main(int argc, char** argv) {
+namespace {
+
+int Run(int argc, char** argv) {
   CLI::App app{
       "usvid: identify the dynamics of high-speed unmanned surface vessels from data, and "
       "measure how well each identification method does."};
@@ -53,4 +57,14 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  usvid::RanksSession session(argc, argv);
+  const int code = Run(argc, argv);
+  // One rank's failure must not leave the others waiting for it in a collective.
+  if (code != 0 && usvid::ranks::Size() > 1) usvid::ranks::Abort(code);
+  return code;
 }

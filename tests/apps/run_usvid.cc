@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -47,5 +48,25 @@ RunResult RunUsvid(const std::string& args) {
   std::filesystem::remove(err);
   return r;
 }
+
+int StartUsvid(const std::string& args, const std::filesystem::path& err_file) {
+  // exec: the shell becomes usvid, so the pid is usvid's.
+  const std::string cmd =
+      "exec " + std::string(USVID_BINARY) + " " + args + " >/dev/null 2>" + err_file.string();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+int WaitUsvid(int pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string UsvidBinary() { return USVID_BINARY; }
 
 }  // namespace usvid::testing

@@ -1,0 +1,35 @@
+// The processes a run is spread over: the MPI ranks of `mpirun -n N usvid ...` when usvid is
+// built with -DUSVID_WITH_MPI=ON, otherwise one. Every call is collective where MPI's would be
+// (Broadcast, Gather: all ranks call them in the same order). Built without MPI, Rank() is 0,
+// Size() is 1 and the collectives return their argument: the default build has no MPI at all.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace usvid {
+
+// Starts MPI for the life of main (a no-op without MPI). Threads: OpenMP inside a rank; only
+// the main thread calls MPI (MPI_THREAD_FUNNELED).
+class RanksSession {
+ public:
+  RanksSession(int& argc, char**& argv);
+  ~RanksSession();
+  RanksSession(const RanksSession&) = delete;
+  RanksSession& operator=(const RanksSession&) = delete;
+};
+
+namespace ranks {
+
+int Rank();
+int Size();
+// Rank 0's `text`, on every rank.
+std::string Broadcast(const std::string& text);
+// On rank 0: every rank's `text`, in rank order. Elsewhere: empty.
+std::vector<std::string> Gather(const std::string& text);
+// Ends every rank with exit code `code` (a failure on one rank must not leave the others
+// waiting in a collective). Without MPI: std::exit(code).
+[[noreturn]] void Abort(int code);
+
+}  // namespace ranks
+}  // namespace usvid

@@ -1,0 +1,40 @@
+// One result of a comparison: a method's model, fitted on one training maneuver, scored in free
+// run on one held-out test maneuver. Rows are what results.json, the tables and the report are
+// made of, and what a resumed or MPI-distributed run stores and exchanges.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+namespace usvid {
+
+struct ResultRow {
+  std::string vessel, train_maneuver, test_maneuver, method;
+  double noise = 0.0;
+  uint64_t seed = 1, test_seed = 1;
+  std::map<std::string, double> fit_percent;  // per identified state
+  std::map<std::string, double> nrmse;
+  std::map<std::string, double> channel_fit_percent;  // every channel of the free run (psi too)
+  double mean_fit_percent = 0.0;
+  std::map<std::string, double> regime_fit_percent;  // mean over states, per speed regime
+  bool diverged = false;
+  double fit_seconds = 0.0;
+  int terms = 0;                          // complexity: additive terms over all equations
+  std::optional<double> precision;        // structure recovery, mean over states, where the true
+  std::optional<double> recall;           //   terms are known (msd, odin3dof)
+  std::optional<double> parameter_error;  // largest relative error of named true parameters
+  std::string status = "ok";              // or "failed: why"
+  nlohmann::json model;  // the fitted model (kept in memory for the report, not written)
+
+  // The row as results.json holds it (no model; a failed row only says why).
+  nlohmann::json ToJson() const;
+  // Everything but the model (a cell keeps that once for its rows, cell_store.h): what a
+  // resumed run reads back and MPI ranks exchange.
+  nlohmann::json ToCellJson() const;
+  static ResultRow FromCellJson(const nlohmann::json& j);
+};
+
+}  // namespace usvid
