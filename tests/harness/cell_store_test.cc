@@ -128,6 +128,27 @@ TEST_F(CellStoreTest, RefusesAnotherSuiteOrBuild) {
       InputError);
 }
 
+TEST_F(CellStoreTest, ADamagedRecordOfTheSuiteIsNamed) {
+  fs::create_directories(out_ / "cells");
+  for (const char* text : {"[1, 2]", R"({"suite": {}})", R"({"suite": {}, "usvid_build": 7})",
+                           R"({"suite": )"}) {
+    std::ofstream(out_ / "cells" / "suite.json") << text;
+    EXPECT_THROW(
+        {
+          try {
+            CellStore(out_.string(), suite_, "build-a", false);
+          } catch (const InputError& e) {
+            EXPECT_THAT(e.what(), HasSubstr("cells/suite.json")) << text;
+            throw;
+          }
+        },
+        InputError)
+        << text;
+  }
+  // --fresh starts over whatever was there.
+  EXPECT_NO_THROW(CellStore(out_.string(), suite_, "build-a", true));
+}
+
 TEST_F(CellStoreTest, ACellOfAnotherJobOrDamagedIsNamed) {
   const CellStore store(out_.string(), suite_, "build-a", false);
   store.Save(3, jobs_[1], Rows(jobs_[1]));  // job 1's rows under job 3's name
