@@ -107,7 +107,7 @@ TEST_F(EvaluationTest, VesselModelsRunTheirSimulator) {
   nlohmann::json model = {{"method", "nominal"}, {"vessel", "odin3dof"}};
   const Evaluation nominal = EvaluateModel(model, data);
   EXPECT_LT(nominal.metrics.at("north").at("fit_percent").get<double>(), 99.0);
-  model["effects"] = {EffectToJson(current)};
+  model["effects"] = nlohmann::json::array({EffectToJson(current)});
   const Evaluation extended = EvaluateModel(model, data);
   for (const char* c : {"u", "v", "r", "psi", "north", "east"})
     EXPECT_GT(extended.metrics.at(c).at("fit_percent").get<double>(), 99.9) << c;
