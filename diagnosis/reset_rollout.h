@@ -59,6 +59,7 @@ bool RolloutRows(const MeasuredData& d, Eigen::Index part_begin, Eigen::Index a,
   const int channels = static_cast<int>(d.channels.size());
   bool diverged = false;
   std::array<T, V::kInputs> u;
+  InputTrack::Cursor cursor;
   for (Eigen::Index k = a; k < b; ++k) {
     T* res = residual + (k - part_begin) * channels;
     for (int c = 0; c < channels; ++c) {
@@ -80,7 +81,8 @@ bool RolloutRows(const MeasuredData& d, Eigen::Index part_begin, Eigen::Index a,
     const int n = std::max(1, static_cast<int>(std::ceil(span / d.max_step - 1e-9)));
     const double h = span / n;
     for (int s = 0; s < n; ++s) {
-      d.inputs.DelayedMean(d.times[k] + s * h, h, plant.delay, plant.e->input_delays_s, u.data());
+      d.inputs.DelayedMean(d.times[k] + s * h, h, plant.delay, plant.e->input_delays_s, u.data(),
+                           cursor);
       stepper.Step(u.data(), h, x);
     }
     for (int i = 0; i < N; ++i) {
@@ -98,8 +100,9 @@ template <Vessel V, typename T>
 void LagStatesAt(const MeasuredData& d, Eigen::Index from, Eigen::Index at,
                  const EffectPlant<V, T>& plant, T* lag) {
   std::array<T, V::kInputs> u;
+  InputTrack::Cursor cursor;
   auto command = [&](double t, double h) {
-    d.inputs.DelayedMean(t, h, plant.delay, plant.e->input_delays_s, u.data());
+    d.inputs.DelayedMean(t, h, plant.delay, plant.e->input_delays_s, u.data(), cursor);
     for (int i = 0; i < V::kInputs; ++i) {
       if (ValueOf(u[i]) > plant.limits[i]) u[i] = T(plant.limits[i]);
       if (ValueOf(u[i]) < -plant.limits[i]) u[i] = T(-plant.limits[i]);

@@ -72,6 +72,7 @@ ClosedLoopRun RunClosedLoop(Maneuver& maneuver, const std::array<double, V::kPar
     if (i >= 0) x(i) = 0.0;
 
   std::vector<double> u(V::kInputs);
+  InputTrack::Cursor cursor;
   const long ticks = static_cast<long>(std::floor(maneuver.Duration() * opt.rate_hz + 1e-9)) + 1;
   for (long k = 0; k < ticks; ++k) {
     const double t = k * period;
@@ -82,7 +83,7 @@ ClosedLoopRun RunClosedLoop(Maneuver& maneuver, const std::array<double, V::kPar
     if (maneuver.Done() || k + 1 == ticks) break;
     std::array<double, V::kInputs> cmd;
     for (int s = 0; s < substeps; ++s) {
-      run.commands.Delayed(t + s * h, delay, effects.input_delays_s, cmd.data());
+      run.commands.Delayed(t + s * h, delay, effects.input_delays_s, cmd.data(), cursor);
       stepper.Step(cmd.data(), h, x);
     }
     if (!x.allFinite() || x.cwiseAbs().maxCoeff() > 1e7) {

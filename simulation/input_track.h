@@ -1,6 +1,7 @@
 // A commanded input signal under zero-order hold: samples (t_k, u_k) appended in time order;
 // the command in force at t is the last sample at or before t (the first one before t_0).
-// Lookups that move forward in time are O(1) amortised.
+// Lookups through a Cursor that move forward in time are O(1) amortised; the track itself is
+// never written by a lookup, so threads share one track, each rollout with its own cursor.
 #pragma once
 
 #include <algorithm>
@@ -12,6 +13,12 @@ namespace usvid {
 
 class InputTrack {
  public:
+  // Where the last lookup landed: one per rollout (per thread).
+  class Cursor {
+    friend class InputTrack;
+    size_t k_ = 0;
+  };
+
   explicit InputTrack(int inputs) : inputs_(inputs) {}
 
   int inputs() const { return inputs_; }
@@ -24,19 +31,25 @@ class InputTrack {
   }
 
   // Pointer to the `inputs()` values in force at t; the track must not be empty.
-  const double* At(double t) const {
-    if (hint_ >= times_.size() || times_[hint_] > t) {
+  const double* At(double t, Cursor& c) const {
+    const size_t n = times_.size();
+    // The cursor's sample or the next one: O(1). Anything else: a binary search.
+    if (c.k_ < n && times_[c.k_] <= t && c.k_ + 1 < n && times_[c.k_ + 1] <= t) ++c.k_;
+    if (c.k_ >= n || times_[c.k_] > t || (c.k_ + 1 < n && times_[c.k_ + 1] <= t)) {
       const auto it = std::upper_bound(times_.begin(), times_.end(), t);
-      hint_ = it == times_.begin() ? 0 : static_cast<size_t>(it - times_.begin()) - 1;
+      c.k_ = it == times_.begin() ? 0 : static_cast<size_t>(it - times_.begin()) - 1;
     }
-    while (hint_ + 1 < times_.size() && times_[hint_ + 1] <= t) ++hint_;
-    return values_.data() + hint_ * inputs_;
+    return values_.data() + c.k_ * inputs_;
+  }
+  const double* At(double t) const {
+    Cursor c;
+    return At(t, c);
   }
 
   // The commands in force at t - delay (and, per input, t - delay - extra[i]) into u.
   template <typename T>
-  void Delayed(double t, double delay, const std::vector<double>& extra, T* u) const {
-    const double* cmd = At(t - delay);
+  void Delayed(double t, double delay, const std::vector<double>& extra, T* u, Cursor& c) const {
+    const double* cmd = At(t - delay, c);
     for (int i = 0; i < inputs_; ++i) u[i] = T(cmd[i]);
     if (extra.empty()) return;
     for (int i = 0; i < inputs_; ++i)
@@ -47,7 +60,8 @@ class InputTrack {
   // zero-order-hold signal shifted by any delay, as one value per step, so that a simulation
   // with step h is continuous in the delay.
   template <typename T>
-  void DelayedMean(double t, double h, double delay, const std::vector<double>& extra, T* u) const {
+  void DelayedMean(double t, double h, double delay, const std::vector<double>& extra, T* u,
+                   Cursor& c) const {
     for (int i = 0; i < inputs_; ++i) {
       const double shift = delay + (extra.empty() ? 0.0 : extra[i]);
       double a = t - shift;
@@ -55,8 +69,8 @@ class InputTrack {
       double sum = 0.0;
       while (a < end) {
         // Seek the sample in force at a and the time the next one takes over.
-        const double* cmd = At(a);
-        const double next = hint_ + 1 < times_.size() ? times_[hint_ + 1] : INFINITY;
+        const double* cmd = At(a, c);
+        const double next = c.k_ + 1 < times_.size() ? times_[c.k_ + 1] : INFINITY;
         const double until = std::min(end, next);
         sum += cmd[i] * (until - a);
         a = until;
@@ -78,7 +92,6 @@ class InputTrack {
   int inputs_;
   std::vector<double> times_;
   std::vector<double> values_;
-  mutable size_t hint_ = 0;
 };
 
 }  // namespace usvid

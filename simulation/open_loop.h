@@ -38,13 +38,15 @@ size_t RolloutOpenLoop(const OpenLoopSetup& setup, const T* x0, const T* params,
   typename PlantStepper<V, T>::State x;
   for (int i = 0; i < N; ++i) x(i) = x0[i];
   std::array<T, V::kInputs> u;
+  InputTrack::Cursor cursor;
   for (size_t k = 0; k < setup.times.size(); ++k) {
     if (k > 0) {
       const double span = setup.times[k] - setup.times[k - 1];
       const int n = std::max(1, static_cast<int>(std::ceil(span / setup.max_step - 1e-9)));
       const double h = span / n;
       for (int s = 0; s < n; ++s) {
-        setup.inputs->Delayed(setup.times[k - 1] + s * h, delay, effects.input_delays_s, u.data());
+        setup.inputs->Delayed(setup.times[k - 1] + s * h, delay, effects.input_delays_s, u.data(),
+                              cursor);
         if (!stepper.Step(u.data(), h, x)) return k;
       }
     }

@@ -43,13 +43,14 @@ TEST(ResetRolloutTest, DelayedMeanIsContinuousInTheDelayAndZeroOrderHoldOnTheGri
   InputTrack track(1);
   for (int k = 0; k < 10; ++k) track.Append(0.1 * k, std::vector<double>{k % 2 ? 1.0 : 0.0});
   double on_grid = 0.0, a = 0.0, b = 0.0;
+  InputTrack::Cursor cursor;
   // A delay of one whole sample gives the previous sample's value.
-  track.DelayedMean(0.5, 0.1, 0.1, {}, &on_grid);
+  track.DelayedMean(0.5, 0.1, 0.1, {}, &on_grid, cursor);
   EXPECT_DOUBLE_EQ(on_grid, 0.0);  // sample 4
   // Half a sample: the mean of the two commands in force over the step.
-  track.DelayedMean(0.5, 0.1, 0.05, {}, &a);
+  track.DelayedMean(0.5, 0.1, 0.05, {}, &a, cursor);
   EXPECT_NEAR(a, 0.5, 1e-12);
-  track.DelayedMean(0.5, 0.1, 0.05 + 1e-6, {}, &b);
+  track.DelayedMean(0.5, 0.1, 0.05 + 1e-6, {}, &b, cursor);
   EXPECT_NEAR(a, b, 1e-4);
 }
 
