@@ -1,5 +1,6 @@
 #include "harness/distributed_run.h"
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -41,24 +42,30 @@ DistributedRun RunSuiteDistributed(const Suite& suite, const std::string& out_di
     progress("resuming: " + std::to_string(run.resumed) + " of " + std::to_string(jobs.size()) +
              " cells are in " + store->Directory() + " and are not run again");
 
-  // Round-robin over the cells left: neighbouring jobs differ in method and seed, so each rank
-  // gets a similar mix of cheap and expensive fits.
-  std::vector<size_t> mine;
+  // The cells left go to whichever thread of whichever rank is free (ranks::WorkQueue).
   const std::vector<size_t> pending = plan["pending"].get<std::vector<size_t>>();
-  for (size_t k = rank; k < pending.size(); k += size) mine.push_back(pending[k]);
   const std::string who = size > 1 ? "rank " + std::to_string(rank) + ": " : "";
   size_t count = 0;
-  const std::vector<std::vector<ResultRow>> cells = RunCells(
-      suite, jobs, mine, options.threads, [&](size_t j, const std::vector<ResultRow>& rows) {
-        store->Save(j, jobs[j], rows);
-        ++count;
-        if (progress) progress(who + CellProgress(count, mine.size(), jobs[j], rows));
-      });
+  std::map<size_t, std::vector<ResultRow>> mine;
+  {
+    ranks::WorkQueue queue(pending.size());
+    mine = RunCells(
+        suite, jobs, options.threads,
+        [&]() -> std::optional<size_t> {
+          const std::optional<size_t> k = queue.Next();
+          if (!k) return std::nullopt;
+          return pending[*k];
+        },
+        [&](size_t j, const std::vector<ResultRow>& rows) {
+          store->Save(j, jobs[j], rows);
+          ++count;
+          if (progress) progress(who + CellProgress(count, pending.size(), jobs[j], rows));
+        });
+  }
 
   // Rank 0 gathers every rank's cells as text and puts all rows in job order.
   nlohmann::json sent = nlohmann::json::array();
-  for (size_t k = 0; k < mine.size(); ++k)
-    sent.push_back({{"index", mine[k]}, {"cell", CellJson(jobs[mine[k]], cells[k])}});
+  for (const auto& [j, rows] : mine) sent.push_back({{"index", j}, {"cell", CellJson(jobs[j], rows)}});
   const std::vector<std::string> received = ranks::Gather(sent.dump());
   if (rank != 0) return run;
   for (const std::string& text : received)

@@ -1,6 +1,6 @@
 // A comparison run that survives being killed and spreads over MPI ranks: the cells already in
-// OUT/cells (cell_store.h) are taken as they are, and the rest are dealt round-robin to the
-// ranks (ranks.h), each running its share with OpenMP and saving every cell as it finishes.
+// OUT/cells (cell_store.h) are taken as they are, and the rest go one at a time to whichever
+// thread of whichever rank is free (ranks::WorkQueue), each saved as it finishes.
 // Rank 0 gathers the rows and returns them in job order, the same rows a single process gives:
 // each cell depends only on its seed. A cell whose fit fails is a row saying why, on any rank.
 #pragma once

@@ -16,7 +16,6 @@
 #include "simulators/vessel.h"
 
 namespace usvid {
-namespace {}  // namespace
 
 Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
                          double noise, uint64_t seed) {
@@ -125,109 +124,128 @@ std::vector<std::string> ScoredStates(const nlohmann::json& model) {
   return states;
 }
 
+// One cell: the job's fit, scored on every test maneuver. Never throws: a failure is a row.
+std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
+                               const std::map<std::string, Dataset>& train_sets,
+                               const std::map<std::string, Dataset>& test_sets) {
+  std::vector<ResultRow> rows;
+  ResultRow base;
+  base.vessel = job.vessel.empty() ? suite.name : job.vessel;  // vessel-less data: the suite
+  base.train_maneuver = job.train_maneuver;
+  base.method = job.method.Label();
+  base.noise = job.noise;
+  base.seed = job.seed;
+  base.test_seed = job.seed + 1000;
+  // No exception leaves the parallel region: a failure is a row.
+  nlohmann::json model;
+  std::string failure;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const Dataset train = suite.Measured()
+                              ? train_sets.at(job.train_maneuver)
+                              : SimulateForSuite(job.vessel, job.train_maneuver,
+                                                 suite.train_seconds, job.noise, job.seed);
+    model = job.method.method == "diagnose" ? DiagnosedModel(job, train)
+                                            : Identify(train, RequestFor(job));
+  } catch (const std::exception& e) {
+    failure = std::string("failed: ") + e.what();
+  }
+  base.fit_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const std::string& test : suite.test_maneuvers) {
+    ResultRow row = base;
+    row.test_maneuver = test;
+    row.model = model;
+    if (!failure.empty()) {
+      row.status = failure;
+      rows.push_back(row);
+      continue;
+    }
+    try {
+      const Dataset held =
+          suite.Measured()
+              ? test_sets.at(test)
+              : SimulateForSuite(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
+      const Evaluation e = EvaluateModel(model, held);
+      for (const auto& [channel, score] : e.metrics.at("channels").items())
+        row.channel_fit_percent[channel] = score.at("fit_percent").get<double>();
+      double sum = 0.0;
+      for (const std::string& state : ScoredStates(model)) {
+        row.fit_percent[state] = e.metrics.at(state).at("fit_percent").get<double>();
+        row.nrmse[state] = e.metrics.at(state).at("nrmse").get<double>();
+        sum += row.fit_percent[state];
+      }
+      row.mean_fit_percent = sum / static_cast<double>(row.fit_percent.size());
+      if (e.metrics.contains("regimes"))
+        for (const auto& [regime, scores] : e.metrics["regimes"].items()) {
+          double regime_sum = 0.0;
+          for (const auto& [state, _] : row.fit_percent)
+            regime_sum += scores.at(state).at("fit_percent").get<double>();
+          row.regime_fit_percent[regime] =
+              regime_sum / static_cast<double>(row.fit_percent.size());
+        }
+      ScoreModel(job.vessel, model, suite.Measured(), row);
+      row.diverged = e.metrics.at("diverged").get<bool>();
+    } catch (const std::exception& e) {
+      row.status = std::string("failed: ") + e.what();
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 }  // namespace
 
-std::vector<std::vector<ResultRow>> RunCells(
-    const Suite& suite, const std::vector<FitJob>& jobs, const std::vector<size_t>& which,
-    int threads, const std::function<void(size_t, const std::vector<ResultRow>&)>& done) {
+std::map<size_t, std::vector<ResultRow>> RunCells(
+    const Suite& suite, const std::vector<FitJob>& jobs, int threads,
+    const std::function<std::optional<size_t>()>& next,
+    const std::function<void(size_t, const std::vector<ResultRow>&)>& done) {
   // Measured data are read once, before the parallel part (a bad file stops the run: exit 2).
   std::map<std::string, Dataset> train_sets, test_sets;
   for (const SuiteData& d : suite.train_data) train_sets[d.name] = LoadSuiteData(d);
   for (const SuiteData& d : suite.test_data) test_sets[d.name] = LoadSuiteData(d);
-  std::vector<std::vector<ResultRow>> rows(which.size());
+  std::map<size_t, std::vector<ResultRow>> cells;
   if (threads > 0) omp_set_num_threads(threads);
   std::string save_failure;
-#pragma omp parallel for schedule(dynamic, 1)
-  for (size_t k = 0; k < which.size(); ++k) {
-    const FitJob& job = jobs.at(which[k]);
-    ResultRow base;
-    base.vessel = job.vessel.empty() ? suite.name : job.vessel;  // vessel-less data: the suite
-    base.train_maneuver = job.train_maneuver;
-    base.method = job.method.Label();
-    base.noise = job.noise;
-    base.seed = job.seed;
-    base.test_seed = job.seed + 1000;
-    // No exception leaves the parallel region: a failure is a row.
-    nlohmann::json model;
-    std::string failure;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      const Dataset train = suite.Measured()
-                                ? train_sets.at(job.train_maneuver)
-                                : SimulateForSuite(job.vessel, job.train_maneuver,
-                                                   suite.train_seconds, job.noise, job.seed);
-      model = job.method.method == "diagnose" ? DiagnosedModel(job, train)
-                                              : Identify(train, RequestFor(job));
-    } catch (const std::exception& e) {
-      failure = std::string("failed: ") + e.what();
-    }
-    base.fit_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (const std::string& test : suite.test_maneuvers) {
-      ResultRow row = base;
-      row.test_maneuver = test;
-      row.model = model;
-      if (!failure.empty()) {
-        row.status = failure;
-        rows[k].push_back(row);
-        continue;
-      }
+#pragma omp parallel
+  while (true) {
+    std::optional<size_t> j;
+#pragma omp critical(usvid_next_cell)
+    j = save_failure.empty() ? next() : std::nullopt;
+    if (!j) break;
+    std::vector<ResultRow> rows = RunCell(suite, jobs.at(*j), train_sets, test_sets);
+    // The callback saves the cell; a failure to save ends the run once the running cells are
+    // done (no exception may leave the parallel region).
+#pragma omp critical(usvid_next_cell)
+    {
       try {
-        const Dataset held =
-            suite.Measured()
-                ? test_sets.at(test)
-                : SimulateForSuite(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
-        const Evaluation e = EvaluateModel(model, held);
-        for (const auto& [channel, score] : e.metrics.at("channels").items())
-          row.channel_fit_percent[channel] = score.at("fit_percent").get<double>();
-        double sum = 0.0;
-        for (const std::string& state : ScoredStates(model)) {
-          row.fit_percent[state] = e.metrics.at(state).at("fit_percent").get<double>();
-          row.nrmse[state] = e.metrics.at(state).at("nrmse").get<double>();
-          sum += row.fit_percent[state];
-        }
-        row.mean_fit_percent = sum / static_cast<double>(row.fit_percent.size());
-        if (e.metrics.contains("regimes"))
-          for (const auto& [regime, scores] : e.metrics["regimes"].items()) {
-            double regime_sum = 0.0;
-            for (const auto& [state, _] : row.fit_percent)
-              regime_sum += scores.at(state).at("fit_percent").get<double>();
-            row.regime_fit_percent[regime] =
-                regime_sum / static_cast<double>(row.fit_percent.size());
-          }
-        ScoreModel(job.vessel, model, suite.Measured(), row);
-        row.diverged = e.metrics.at("diverged").get<bool>();
+        if (done) done(*j, rows);
       } catch (const std::exception& e) {
-        row.status = std::string("failed: ") + e.what();
+        if (save_failure.empty()) save_failure = e.what();
       }
-      rows[k].push_back(row);
-    }
-    // The callback saves the cell; a failure to save stops the run after the loop (no
-    // exception may leave the parallel region).
-#pragma omp critical(usvid_cell_done)
-    try {
-      if (done) done(which[k], rows[k]);
-    } catch (const std::exception& e) {
-      if (save_failure.empty()) save_failure = e.what();
+      cells[*j] = std::move(rows);
     }
   }
   if (!save_failure.empty()) throw InputError(save_failure);
-  return rows;
+  return cells;
 }
 
 std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
                                 const std::function<void(const std::string&)>& progress) {
   const std::vector<FitJob> jobs = FitJobs(suite);
-  std::vector<size_t> all(jobs.size());
-  for (size_t j = 0; j < jobs.size(); ++j) all[j] = j;
-  size_t finished = 0;
-  const auto cells =
-      RunCells(suite, jobs, all, threads, [&](size_t j, const std::vector<ResultRow>& rows) {
+  size_t handed_out = 0, finished = 0;
+  const auto cells = RunCells(
+      suite, jobs, threads,
+      [&]() -> std::optional<size_t> {
+        if (handed_out == jobs.size()) return std::nullopt;
+        return handed_out++;
+      },
+      [&](size_t j, const std::vector<ResultRow>& rows) {
         ++finished;
         if (progress) progress(CellProgress(finished, jobs.size(), jobs[j], rows));
       });
   std::vector<ResultRow> out;
-  for (const auto& c : cells) out.insert(out.end(), c.begin(), c.end());
+  for (const auto& [_, rows] : cells) out.insert(out.end(), rows.begin(), rows.end());
   return out;
 }
 

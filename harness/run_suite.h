@@ -6,6 +6,8 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,12 +26,14 @@ Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver,
 std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
                                 const std::function<void(const std::string&)>& progress = {});
 
-// The cells jobs[which[k]], in parallel; result k holds the rows of jobs[which[k]]. `done` is
-// called as each cell finishes (one call at a time, in completion order); an exception it
-// throws ends the run once the running cells are done (InputError with its message).
-std::vector<std::vector<ResultRow>> RunCells(
-    const Suite& suite, const std::vector<FitJob>& jobs, const std::vector<size_t>& which,
-    int threads, const std::function<void(size_t, const std::vector<ResultRow>&)>& done = {});
+// Runs cells on `threads` OpenMP threads (0: OpenMP's default), each thread taking the next job
+// index from `next` (called by one thread at a time) until it returns nothing: the rows of every
+// cell run here, by job index. `done` is called as each cell finishes (one call at a time); an
+// exception it throws ends the run once the running cells are done (InputError, its message).
+std::map<size_t, std::vector<ResultRow>> RunCells(
+    const Suite& suite, const std::vector<FitJob>& jobs, int threads,
+    const std::function<std::optional<size_t>()>& next,
+    const std::function<void(size_t, const std::vector<ResultRow>&)>& done = {});
 
 // The progress line of a finished cell: "[finished/total] job id", and why when its fit failed.
 std::string CellProgress(size_t finished, size_t total, const FitJob& job,

@@ -46,7 +46,10 @@ void RunCompare(const CompareOptions& o) {
               << '\n';
   const DistributedRun run = RunSuiteDistributed(
       suite, o.out, {.threads = o.threads, .fresh = o.fresh, .build = ExecutableIdentity()},
-      [](const std::string& line) { std::cerr << "usvid compare: " << line << '\n'; });
+      [](const std::string& line) {
+        // One write per line: the lines of several MPI ranks must not interleave.
+        std::cerr << "usvid compare: " + line + "\n" << std::flush;
+      });
   if (ranks::Rank() != 0) return;  // rank 0 writes the outputs
   const std::vector<ResultRow>& rows = run.rows;
   const double seconds =
