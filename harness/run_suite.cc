@@ -136,7 +136,6 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
   base.noise = job.noise;
   base.seed = job.seed;
   base.test_seed = job.seed + 1000;
-  // No exception leaves the parallel region: a failure is a row.
   nlohmann::json model;
   std::string failure;
   const auto start = std::chrono::steady_clock::now();
