@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "core/atomic_file.h"
-#include "core/error.h"
 #include "core/csv_tokenizer.h"
+#include "core/error.h"
 #include "core/json_file.h"
 
 namespace usvid {

@@ -65,7 +65,8 @@ DistributedRun RunSuiteDistributed(const Suite& suite, const std::string& out_di
 
   // Rank 0 gathers every rank's cells as text and puts all rows in job order.
   nlohmann::json sent = nlohmann::json::array();
-  for (const auto& [j, rows] : mine) sent.push_back({{"index", j}, {"cell", CellJson(jobs[j], rows)}});
+  for (const auto& [j, rows] : mine)
+    sent.push_back({{"index", j}, {"cell", CellJson(jobs[j], rows)}});
   const std::vector<std::string> received = ranks::Gather(sent.dump());
   if (rank != 0) return run;
   for (const std::string& text : received)

@@ -16,13 +16,13 @@
 namespace usvid {
 
 struct DistributedRunOptions {
-  int threads = 0;     // OpenMP threads per rank (0: OpenMP's default, OMP_NUM_THREADS)
-  bool fresh = false;  // run every cell again, ignoring OUT/cells
+  int threads = 0;                // OpenMP threads per rank (0: OpenMP's default, OMP_NUM_THREADS)
+  bool fresh = false;             // run every cell again, ignoring OUT/cells
   std::string build = "unknown";  // the usvid build (core/executable_identity.h)
 };
 
 struct DistributedRun {
-  std::vector<ResultRow> rows;  // rank 0: every row in job order; other ranks: empty
+  std::vector<ResultRow> rows;    // rank 0: every row in job order; other ranks: empty
   size_t cells = 0, resumed = 0;  // cells in the suite, and those taken from OUT/cells
 };
 

@@ -1,9 +1,9 @@
 // ranks.h on MPI (-DUSVID_WITH_MPI=ON).
 #include <mpi.h>
 
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
-#include <chrono>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -50,8 +50,7 @@ std::string Broadcast(const std::string& text) {
   unsigned long long length = text.size();
   Check(MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD), "MPI_Bcast");
   std::string out = Rank() == 0 ? text : std::string(length, '\0');
-  Check(MPI_Bcast(out.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD),
-        "MPI_Bcast");
+  Check(MPI_Bcast(out.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD), "MPI_Bcast");
   return out;
 }
 

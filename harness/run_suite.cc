@@ -161,10 +161,9 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       continue;
     }
     try {
-      const Dataset held =
-          suite.Measured()
-              ? test_sets.at(test)
-              : SimulateForSuite(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
+      const Dataset held = suite.Measured() ? test_sets.at(test)
+                                            : SimulateForSuite(job.vessel, test, suite.test_seconds,
+                                                               job.noise, row.test_seed);
       const Evaluation e = EvaluateModel(model, held);
       for (const auto& [channel, score] : e.metrics.at("channels").items())
         row.channel_fit_percent[channel] = score.at("fit_percent").get<double>();
@@ -180,8 +179,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
           double regime_sum = 0.0;
           for (const auto& [state, _] : row.fit_percent)
             regime_sum += scores.at(state).at("fit_percent").get<double>();
-          row.regime_fit_percent[regime] =
-              regime_sum / static_cast<double>(row.fit_percent.size());
+          row.regime_fit_percent[regime] = regime_sum / static_cast<double>(row.fit_percent.size());
         }
       ScoreModel(job.vessel, model, suite.Measured(), row);
       row.diverged = e.metrics.at("diverged").get<bool>();

@@ -1,6 +1,6 @@
 // `mpirun -n N usvid compare` (issue 12, built with -DUSVID_WITH_MPI=ON): the cells go to
-// whichever rank is free, rank 0 writes the outputs, and the rows are those of one process: each cell
-// depends on its seed alone. Cells a method cannot fit are rows saying why, on whichever rank
+// whichever rank is free, rank 0 writes the outputs, and the rows are those of one process: each
+// cell depends on its seed alone. Cells a method cannot fit are rows saying why, on whichever rank
 // ran them; a killed MPI run resumes like any other.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -112,9 +112,9 @@ TEST_F(MpiCompareTest, TwoRanksResumeWhatOneRankLeft) {
 }
 
 TEST_F(MpiCompareTest, BadInputEndsEveryRankWithExitCode2) {
-  const MpiResult r = MpiRun(2, "compare --suite " + (dir_ / "missing.json").string() + " --out " +
-                              (dir_ / "x").string(),
-                       dir_);
+  const MpiResult r = MpiRun(
+      2, "compare --suite " + (dir_ / "missing.json").string() + " --out " + (dir_ / "x").string(),
+      dir_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("missing.json"));
 }

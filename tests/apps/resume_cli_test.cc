@@ -105,8 +105,7 @@ TEST_F(ResumeCliTest, OnlyTheCellsRemovedAreRunAgain) {
   ASSERT_EQ(again.exit_code, 0) << again.err;
   // Jobs are methods x seeds: job 1 is gp with seed 2, job 6 sindy with seed 3.
   EXPECT_THAT(ComputedCells(again.err),
-              ::testing::ElementsAre(::testing::EndsWith("seed=2"),
-                                     ::testing::EndsWith("seed=3")));
+              ::testing::ElementsAre(::testing::EndsWith("seed=2"), ::testing::EndsWith("seed=3")));
   // The cells kept are the rows as they were, down to the time their fit took.
   const nlohmann::json after = Rows(out, /*keep_time=*/true);
   ASSERT_EQ(after.size(), before.size());

@@ -66,9 +66,8 @@ class CellStoreTest : public ::testing::Test {
  protected:
   void SetUp() override {
     out_ = fs::temp_directory_path() /
-           ("usvid_cells_" + std::string(::testing::UnitTest::GetInstance()
-                                             ->current_test_info()
-                                             ->name()));
+           ("usvid_cells_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(out_);
   }
   fs::path out_;
@@ -130,8 +129,8 @@ TEST_F(CellStoreTest, RefusesAnotherSuiteOrBuild) {
 
 TEST_F(CellStoreTest, ADamagedRecordOfTheSuiteIsNamed) {
   fs::create_directories(out_ / "cells");
-  for (const char* text : {"[1, 2]", R"({"suite": {}})", R"({"suite": {}, "usvid_build": 7})",
-                           R"({"suite": )"}) {
+  for (const char* text :
+       {"[1, 2]", R"({"suite": {}})", R"({"suite": {}, "usvid_build": 7})", R"({"suite": )"}) {
     std::ofstream(out_ / "cells" / "suite.json") << text;
     EXPECT_THROW(
         {
