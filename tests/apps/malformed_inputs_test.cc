@@ -123,6 +123,9 @@ const Malformed kCatalogue[] = {
     {"suite_wrong_type", "compare --suite {D}/suite_types.json --out {OUT}", "vessels"},
     {"suite_truncated", "compare --suite {D}/suite_truncated.json --out {OUT}",
      "suite_truncated.json:1"},
+    // A bad baseline is refused before the fits, not after them.
+    {"baseline_truncated", "compare --quick --baseline {D}/suite_truncated.json --out {OUT}",
+     "suite_truncated.json:1"},
     // Parameter files.
     {"params_unknown",
      "simulate --vessel odin3dof --maneuver zigzag --params {D}/params_unknown.json "
