@@ -1,8 +1,12 @@
 #include "harness/suite.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 #include "core/error.h"
 #include "simulation/vessel_simulator.h"
@@ -15,13 +19,69 @@ std::vector<T> ListOf(const nlohmann::json& v, const std::string& where) {
   if (!v.is_array() || v.empty()) throw InputError(where + ": expected a non-empty array");
   std::vector<T> out;
   for (const auto& item : v) {
+    // Integers must be integers in range: nlohmann would turn 1e128 or -1 into some uint64_t.
+    const bool fits = !std::is_integral_v<T> ||
+                      (item.is_number_integer() && (!std::is_unsigned_v<T> ||
+                                                    item.is_number_unsigned() ||
+                                                    item.get<int64_t>() >= 0));
     try {
+      if (!fits) throw InputError("");
       out.push_back(item.get<T>());
-    } catch (const nlohmann::json::exception&) {
-      throw InputError(where + ": element " + item.dump() + " has the wrong type");
+    } catch (const std::exception&) {
+      throw InputError(where + ": element " + item.dump() + " has the wrong type" +
+                       (std::is_unsigned_v<T> ? " (expected a whole number >= 0)" : ""));
     }
   }
   return out;
+}
+
+// The options a suite's method may carry, and what each must be.
+enum class OptionKind { kText, kCount, kNumber, kNames };
+const std::map<std::string, OptionKind>& MethodOptions() {
+  static const std::map<std::string, OptionKind> options = {
+      {"operators", OptionKind::kText},       {"population", OptionKind::kCount},
+      {"generations", OptionKind::kCount},    {"max_depth", OptionKind::kCount},
+      {"ols_threshold", OptionKind::kNumber}, {"fit", OptionKind::kText},
+      {"segment_s", OptionKind::kNumber},     {"rate", OptionKind::kNumber},
+      {"prior_sd", OptionKind::kNumber},      {"refit_params", OptionKind::kNames},
+      {"states", OptionKind::kNames},         {"inputs", OptionKind::kNames},
+      {"causes", OptionKind::kCount}};
+  return options;
+}
+
+void CheckMethodOptions(const nlohmann::json& options, const std::string& where) {
+  for (const auto& [key, value] : options.items()) {
+    const auto known = MethodOptions().find(key);
+    if (known == MethodOptions().end()) {
+      std::string names;
+      for (const auto& [name, _] : MethodOptions()) names += (names.empty() ? "" : ", ") + name;
+      throw InputError(where + ": unknown option '" + key + "' (known: " + names + ")");
+    }
+    bool ok = false;
+    switch (known->second) {
+      case OptionKind::kText:
+        ok = value.is_string();
+        break;
+      case OptionKind::kCount:  // a whole number a C++ int holds
+        ok = value.is_number_integer() && value.get<int64_t>() >= 0 &&
+             value.get<int64_t>() <= 1000000000;
+        break;
+      case OptionKind::kNumber:
+        ok = value.is_number() && std::isfinite(value.get<double>()) && value.get<double>() >= 0;
+        break;
+      case OptionKind::kNames:
+        ok = value.is_array() && std::all_of(value.begin(), value.end(),
+                                             [](const auto& n) { return n.is_string(); });
+        break;
+    }
+    if (!ok)
+      throw InputError(where + ": option '" + key + "' " + value.dump() + " must be " +
+                       (known->second == OptionKind::kText    ? "a string"
+                        : known->second == OptionKind::kCount ? "a whole number from 0 to 1e9"
+                        : known->second == OptionKind::kNumber
+                            ? "a finite number >= 0"
+                            : "a list of names"));
+  }
 }
 
 const std::set<std::string> kMethods = {"gp",    "sindy",   "eb-lr",    "fossen-ceres",
@@ -118,6 +178,7 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     if (!kMethods.contains(sm.method))
       throw InputError(file + ": methods: unknown method '" + sm.method +
                        "' (known: " + kKnownMethods + ")");
+    CheckMethodOptions(sm.options, file + ": methods: " + sm.method);
     s.methods.push_back(sm);
   }
   s.noise = v.contains("noise") ? ListOf<double>(v["noise"], file + ": noise")

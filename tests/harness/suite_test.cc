@@ -64,6 +64,30 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
   s = Small();
   s["train_seconds"] = -5;
   expect(s, "train_seconds");
+  // Seeds are whole numbers >= 0: nlohmann would turn these into some uint64_t (fuzzing found
+  // 1.9e128, undefined behaviour).
+  for (const nlohmann::json& seed : {nlohmann::json(-1), nlohmann::json(1.5),
+                                     nlohmann::json::parse("188888888888888888888888888888")}) {
+    s = Small();
+    s["seeds"] = {seed};
+    expect(s, "seeds: element " + seed.dump() + " has the wrong type");
+  }
+  // Method options: known names, each of its kind.
+  s = Small();
+  s["methods"] = {{{"method", "gp"}, {"populaton", 50}}};
+  expect(s, "methods: gp: unknown option 'populaton'");
+  for (const auto& [key, value] :
+       std::vector<std::pair<std::string, nlohmann::json>>{{"population", 1e300},
+                                                           {"population", -3},
+                                                           {"generations", 2.5},
+                                                           {"operators", 5},
+                                                           {"ols_threshold", "small"},
+                                                           {"segment_s", -1},
+                                                           {"states", {"u", 3}}}) {
+    s = Small();
+    s["methods"] = {{{"method", "gp"}, {key, value}}};
+    expect(s, "option '" + key + "'");
+  }
   EXPECT_THROW(ParseSuite(nlohmann::json{{"vessels", {"titanic"}},
                                          {"train_maneuvers", {"prbs"}},
                                          {"test_maneuvers", {"prbs"}},
