@@ -69,12 +69,12 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
   for (const nlohmann::json& seed : {nlohmann::json(-1), nlohmann::json(1.5),
                                      nlohmann::json::parse("188888888888888888888888888888")}) {
     s = Small();
-    s["seeds"] = {seed};
+    s["seeds"] = nlohmann::json::array({seed});  // not {seed}: clang reads that as a copy
     expect(s, "seeds: element " + seed.dump() + " has the wrong type");
   }
   // Method options: known names, each of its kind.
   s = Small();
-  s["methods"] = {{{"method", "gp"}, {"populaton", 50}}};
+  s["methods"] = nlohmann::json::array({{{"method", "gp"}, {"populaton", 50}}});
   expect(s, "methods: gp: unknown option 'populaton'");
   for (const auto& [key, value] :
        std::vector<std::pair<std::string, nlohmann::json>>{{"population", 1e300},
@@ -85,7 +85,7 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
                                                            {"segment_s", -1},
                                                            {"states", {"u", 3}}}) {
     s = Small();
-    s["methods"] = {{{"method", "gp"}, {key, value}}};
+    s["methods"] = nlohmann::json::array({{{"method", "gp"}, {key, value}}});
     expect(s, "option '" + key + "'");
   }
   EXPECT_THROW(ParseSuite(nlohmann::json{{"vessels", {"titanic"}},
