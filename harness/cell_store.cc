@@ -4,7 +4,6 @@
 #include <filesystem>
 
 #include "core/atomic_file.h"
-#include "core/csv_tokenizer.h"
 #include "core/error.h"
 #include "core/json_file.h"
 
@@ -79,7 +78,7 @@ std::map<size_t, std::vector<ResultRow>> CellStore::Load(const std::vector<FitJo
     const std::string file = CellFile(j);
     std::error_code ec;
     if (!fs::exists(file, ec)) continue;
-    done[j] = CellRows(ParseJson(ReadTextFile(file), file), jobs[j].Id(), file);
+    done[j] = CellRows(ReadJsonFile(file), jobs[j].Id(), file);
   }
   return done;
 }
