@@ -79,10 +79,17 @@ IdentifyRequest RequestFor(const FitJob& job) {
   r.data_name = job.vessel + "/" + job.train_maneuver;
   const nlohmann::json& o = job.method.options;
   r.operators = o.value("operators", r.operators);
-  r.population = o.value("population", r.population);
-  r.generations = o.value("generations", r.generations);
-  r.max_depth = o.value("max_depth", r.max_depth);
-  r.ols_threshold = o.value("ols_threshold", r.ols_threshold);
+  r.preset = o.value("preset", r.preset);
+  auto set = [&](const char* key, auto& field) {
+    if (o.contains(key)) field = o[key].get<typename std::decay_t<decltype(field)>::value_type>();
+  };
+  set("population", r.population);
+  set("generations", r.generations);
+  set("max_depth", r.max_depth);
+  set("ols_threshold", r.ols_threshold);
+  set("validation_fraction", r.validation_fraction);
+  set("constant_iterations", r.constant_iterations);
+  set("restarts", r.restarts);
   r.fossen_mode = o.value("fit", r.fossen_mode);
   r.segment_s = o.value("segment_s", r.segment_s);
   r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)

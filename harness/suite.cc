@@ -45,7 +45,10 @@ const std::map<std::string, OptionKind>& MethodOptions() {
       {"segment_s", OptionKind::kNumber},     {"rate", OptionKind::kNumber},
       {"prior_sd", OptionKind::kNumber},      {"refit_params", OptionKind::kNames},
       {"states", OptionKind::kNames},         {"inputs", OptionKind::kNames},
-      {"causes", OptionKind::kCount}};
+      {"causes", OptionKind::kCount},         {"preset", OptionKind::kText},
+      {"validation_fraction", OptionKind::kNumber},
+      {"constant_iterations", OptionKind::kCount},
+      {"restarts", OptionKind::kCount}};
   return options;
 }
 

@@ -12,6 +12,7 @@
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/gp/gp_identify.h"
+#include "methods/gp/term_selection.h"
 #include "methods/nomoto/nomoto.h"
 #include "methods/refit/refit.h"
 #include "methods/sindy/sindy.h"
@@ -187,6 +188,43 @@ nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, cons
           {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", fit.seconds}}}};
 }
 
+// GP's options: the preset's, with what the request sets in their place; throws InputError
+// for an unknown preset or an option out of its range.
+gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& o) {
+  gp::GpIdentifyOptions g;
+  if (o.preset == "report") {
+    g.search = gp::ReportOptions();
+    g.validation_fraction = 0.0;
+  } else if (o.preset != "default") {
+    throw InputError("--preset '" + o.preset + "': unknown preset (known: default, report)");
+  }
+  gp::GpOptions& s = g.search;
+  s.functions = gp::ParseOperators(o.operators);
+  s.population = o.population.value_or(s.population);
+  s.generations = o.generations.value_or(s.generations);
+  s.max_depth = o.max_depth.value_or(s.max_depth);
+  s.restarts = o.restarts.value_or(s.restarts);
+  s.constant_iterations = o.constant_iterations.value_or(s.constant_iterations);
+  if (o.ols_threshold) s.ols_threshold = o.ols_threshold;
+  s.fit_rows = o.fit_rows.value_or(s.fit_rows);
+  s.fitness_mse = o.fitness == "mse";
+  s.seed = o.seed;
+  s.threads = o.threads;
+  g.validation_fraction = o.validation_fraction.value_or(g.validation_fraction);
+  if (s.population < 4 || s.generations < 1 || s.max_depth < 2 || s.max_depth > 17)
+    throw InputError("identify: --population >= 4, --generations >= 1, --max-depth in [2, 17]");
+  if (s.ols_threshold && !(*s.ols_threshold >= 0 && *s.ols_threshold < 1))
+    throw InputError("--ols-threshold: must be in [0, 1)");
+  if (!(g.validation_fraction >= 0 && g.validation_fraction <= 0.5))
+    throw InputError("--validation-fraction: must be in [0, 0.5] (the share of the record kept "
+                     "to choose the model by simulation; 0: none)");
+  if (s.constant_iterations < 0)
+    throw InputError("--constant-iterations: must be >= 0 (0: no constant optimisation)");
+  if (s.restarts < 0) throw InputError("--restarts: must be >= 0");
+  if (s.fit_rows < 0) throw InputError("--fit-rows: must be >= 0 (0: every row)");
+  return g;
+}
+
 }  // namespace
 
 nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const Logger& log) {
@@ -247,20 +285,7 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
         "--method fossen-ceres: fits the Fossen 3-DOF model, states u,v,r with inputs "
         "tau_x,tau_y,tau_n (--vessel odin3dof), throttle,nozzle,bucket through a waterjet map "
         "(--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel kvlcc2)");
-  if (o.population < 4 || o.generations < 1 || o.max_depth < 2 || o.max_depth > 17)
-    throw InputError("identify: --population >= 4, --generations >= 1, --max-depth in [2, 17]");
-  if (!(o.ols_threshold >= 0 && o.ols_threshold < 1))
-    throw InputError("--ols-threshold: must be in [0, 1)");
-  gp::GpOptions gpo;
-  gpo.functions = gp::ParseOperators(o.operators);
-  gpo.population = o.population;
-  gpo.generations = o.generations;
-  gpo.max_depth = o.max_depth;
-  gpo.ols_threshold = o.ols_threshold;
-  gpo.fitness_mse = o.fitness == "mse";
-  gpo.fit_rows = o.fit_rows;
-  gpo.seed = o.seed;
-  gpo.threads = o.threads;
+  const gp::GpIdentifyOptions gpo = GpOptionsFor(o);
   const PreprocessOptions& pre = o.preprocess;
   const PreparedData prepared = Preprocess(data, variables, inputs, pre);
   for (const std::string& note : prepared.notes) Log(log, note);
@@ -321,17 +346,28 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
                         g.node_evals_per_second);
           Log(log, line);
         });
+    const gp::GpOptions& so = gpo.search;
     model["parameters"] = gp.parameters;
     model["equations"] = gp.equations;
-    model["gp"] = {{"operators", gp::OperatorList(gpo.functions)},
-                   {"population", gpo.population},
-                   {"generations", gpo.generations},
-                   {"max_depth", gpo.max_depth},
-                   {"crossover", gpo.crossover},
-                   {"mutation", gpo.mutation},
-                   {"ols_threshold", gpo.ols_threshold},
+    model["gp"] = {{"preset", o.preset},
+                   {"operators", gp::OperatorList(so.functions)},
+                   {"population", so.population},
+                   {"generations", so.generations},
+                   {"max_depth", so.max_depth},
+                   {"crossover", so.crossover},
+                   {"mutation", so.mutation},
+                   {"term_selection", so.ols_threshold ? "ols threshold" : "held-out blocks"},
+                   {"ols_threshold", so.ols_threshold ? nlohmann::json(*so.ols_threshold)
+                                                      : nlohmann::json(nullptr)},
+                   {"held_out_blocks", so.ols_threshold ? 0 : gp::kHeldOutBlocks},
+                   {"term_mutation", so.term_mutation},
+                   {"restarts", so.restarts},
+                   {"constant_iterations", so.constant_iterations},
+                   {"constant_elites", so.constant_elites},
+                   {"validation_fraction", gpo.validation_fraction},
+                   {"horizon_s", gpo.horizon_s},
                    {"fitness", o.fitness},
-                   {"fit_rows", gpo.fit_rows},
+                   {"fit_rows", so.fit_rows},
                    {"node_evaluations", gp.node_evaluations},
                    {"equations", gp.details}};
   }

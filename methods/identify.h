@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,14 +21,15 @@ struct IdentifyRequest {
   std::vector<std::string> states, inputs;
   std::string data_name;  // for model.json's train.data
   PreprocessOptions preprocess;
-  // gp
+  // gp: an unset option takes its value from the preset: "default" (gp::GpOptions, terms
+  // chosen by held-out error, model chosen by short-horizon simulation) or "report" (the
+  // reference report's Table 3.1, gp::ReportOptions, no validation part).
+  std::string preset = "default";
   std::string operators = "+,-,*";
-  int population = 2000;
-  int generations = 50;
-  int max_depth = 6;
-  double ols_threshold = 0.05;
+  std::optional<int> population, generations, max_depth, restarts, constant_iterations;
+  std::optional<double> ols_threshold, validation_fraction;
   std::string fitness = "r2";
-  long fit_rows = 4000;
+  std::optional<long> fit_rows;
   uint64_t seed = 1;
   int threads = 0;
   // fossen-ceres

@@ -1,6 +1,8 @@
 // usvid identify --method gp --data F.csv (--vessel V | --states u,v,r --inputs a,b)
-//                [preprocessing flags] [--operators +,-,*] [--population N] [--generations N]
-//                [--max-depth D] [--seed N] [--threads N] --out model.json
+//                [preprocessing flags] [--preset default|report] [--operators +,-,*]
+//                [--population N] [--generations N] [--max-depth D] [--ols-threshold E]
+//                [--validation-fraction F] [--constant-iterations N] [--restarts N]
+//                [--seed N] [--threads N] --out model.json
 // Fits one method and writes model.json (contract section 5).
 
 #include <iostream>
@@ -66,16 +68,30 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');
   cmd->add_option("--inputs", o->request.inputs, "Input channels")->delimiter(',');
   o->pre.Add(*cmd);
+  cmd->add_option("--preset", o->request.preset,
+                  "gp: default (terms chosen by held-out error, constant optimisation, restarts, "
+                  "the model chosen by short-horizon simulation) or report (the reference "
+                  "report's Table 3.1 exactly); the options below override it")
+      ->check(CLI::IsMember({"default", "report"}));
   cmd->add_option("--operators", o->request.operators,
                   "GP functions: + - * (default, the report's), / abs tanh sin cos exp sqrt");
-  cmd->add_option("--population", o->request.population, "GP population (the report's 2000)");
-  cmd->add_option("--generations", o->request.generations, "Most GP generations");
-  cmd->add_option("--max-depth", o->request.max_depth, "Deepest tree (the report's 6)");
+  cmd->add_option("--population", o->request.population, "GP population (2000, the report's)");
+  cmd->add_option("--generations", o->request.generations, "Most GP generations (50)");
+  cmd->add_option("--max-depth", o->request.max_depth, "Deepest tree (6, the report's)");
   cmd->add_option("--ols-threshold", o->request.ols_threshold,
-                  "Cut terms whose error reduction ratio is below this (the report's 0.05)");
+                  "Cut terms whose error reduction ratio is below this (the report's 0.05; "
+                  "default: the number of terms chosen by held-out error)");
+  cmd->add_option("--validation-fraction", o->request.validation_fraction,
+                  "gp: the last share of the record, in [0, 0.5], on which the model is chosen "
+                  "among the Pareto candidates by short-horizon simulation (0.2; 0: none)");
+  cmd->add_option("--constant-iterations", o->request.constant_iterations,
+                  "gp: Levenberg-Marquardt iterations on the constants inside terms, per elite "
+                  "(5; 0: none)");
+  cmd->add_option("--restarts", o->request.restarts,
+                  "gp: restarts on stagnation before the search stops (2)");
   cmd->add_option("--fitness", o->request.fitness, "r2 (with a size penalty) or mse")
       ->check(CLI::IsMember({"r2", "mse"}));
-  cmd->add_option("--fit-rows", o->request.fit_rows, "Rows the search scores on (0: all)");
+  cmd->add_option("--fit-rows", o->request.fit_rows, "Rows the search scores on (4000; 0: all)");
   cmd->add_option("--seed", o->request.seed, "Seed of the search");
   cmd->add_option("--threads", o->request.threads, "OpenMP threads (0: all cores)");
   cmd->add_option("--fit", o->request.fossen_mode,

@@ -1,8 +1,12 @@
 #include "methods/gp/gp_identify.h"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/parse_number.h"
+#include "methods/gp/model_selection.h"
 
 namespace usvid::gp {
 
@@ -34,31 +38,88 @@ std::string OperatorList(const std::vector<Op>& ops) {
   return s;
 }
 
+namespace {
+
+// The first `rows` rows of every variable and of the target.
+GpProblem Head(const GpProblem& p, long rows) {
+  GpProblem out;
+  out.names = p.names;
+  for (const Eigen::VectorXd& v : p.variables) out.variables.push_back(v.head(rows));
+  out.target = p.target.head(rows);
+  return out;
+}
+
+nlohmann::json CandidateJson(const Model& m, const std::vector<std::string>& names) {
+  return {{"size", m.Size()}, {"r2_heldout", m.r2_heldout}, {"equation", m.Equation(names)}};
+}
+
+}  // namespace
+
 GpIdentification IdentifyWithGp(
     const PreparedData& prepared, const std::vector<std::string>& states,
     const std::vector<std::string>& variables, const std::vector<std::string>& inputs,
-    const GpOptions& options,
+    const GpIdentifyOptions& options,
     const std::function<void(const std::string&, const GenerationLog&)>& progress) {
-  GpProblem problem;
+  GpProblem all;
   for (const auto& names : {variables, inputs})
     for (const std::string& n : names) {
-      problem.names.push_back(n);
-      problem.variables.push_back(prepared.data[n]);
+      all.names.push_back(n);
+      all.variables.push_back(prepared.data[n]);
     }
+  const long rows = prepared.data.rows();
+  const double f = options.validation_fraction;
+  const long train_rows = f > 0 ? std::lround((1.0 - f) * static_cast<double>(rows)) : rows;
+  if (f > 0 && (train_rows < 10 || rows - train_rows < 2))
+    throw InputError("gp: --validation-fraction " + FormatNumber(f) + " leaves " +
+                     std::to_string(train_rows) + " rows to search on and " +
+                     std::to_string(rows - train_rows) + " to validate on (need 10 and 2)");
+
   GpIdentification out;
+  std::vector<StateCandidates> candidates;
+  std::vector<GpResult> results;
   for (const std::string& state : states) {
-    problem.target = prepared.data[state + "_dot"];
-    const GpResult r = RunGp(problem, options, [&](const GenerationLog& log) {
-      if (progress) progress(state, log);
-    });
+    all.target = prepared.data[state + "_dot"];
+    results.push_back(RunGp(Head(all, train_rows), options.search,
+                            [&](const GenerationLog& log) {
+                              if (progress) progress(state, log);
+                            }));
+    const GpResult& r = results.back();
     out.node_evaluations += r.node_evaluations;
-    out.equations[state] = r.best.Equation(problem.names);
-    out.parameters[state + ".bias"] = r.best.bias;
-    for (size_t t = 0; t < r.best.weights.size(); ++t)
-      out.parameters[state + ".w" + std::to_string(t + 1)] = r.best.weights[t];
+    StateCandidates c{state, {r.best}};
+    for (const ParetoPoint& p : r.pareto)
+      if (std::none_of(c.models.begin(), c.models.end(), [&](const Model& m) {
+            return m.Equation(all.names) == p.equation;
+          }))
+        c.models.push_back(p.model);
+    candidates.push_back(std::move(c));
+  }
+
+  Selection selection;
+  selection.chosen.assign(states.size(), 0);
+  const bool select = f > 0 && std::all_of(states.begin(), states.end(), [&](const std::string& s) {
+                        return std::find(all.names.begin(), all.names.end(), s) != all.names.end();
+                      });
+  if (select) {
+    SelectionData data{prepared.data.t(), all.names, all.variables, train_rows, options.horizon_s};
+    selection = SelectModels(data, candidates);
+  }
+
+  for (size_t i = 0; i < states.size(); ++i) {
+    const std::string& state = states[i];
+    const GpResult& r = results[i];
+    all.target = prepared.data[state + "_dot"];
+    const Model& candidate = candidates[i].models[selection.chosen[i]];
+    const Model best = FitTree(candidate.tree, all, options.search);  // on every row
+    out.equations[state] = best.Equation(all.names);
+    out.parameters[state + ".bias"] = best.bias;
+    for (size_t t = 0; t < best.weights.size(); ++t)
+      out.parameters[state + ".w" + std::to_string(t + 1)] = best.weights[t];
     nlohmann::json pareto = nlohmann::json::array();
     for (const ParetoPoint& p : r.pareto)
-      pareto.push_back({{"size", p.size}, {"mse", p.mse}, {"equation", p.equation}});
+      pareto.push_back({{"size", p.size},
+                        {"mse", p.mse},
+                        {"r2_heldout", p.r2_heldout},
+                        {"equation", p.equation}});
     nlohmann::json log = nlohmann::json::array();
     for (const GenerationLog& g : r.log)
       log.push_back({{"generation", g.generation},
@@ -66,11 +127,41 @@ GpIdentification IdentifyWithGp(
                      {"best_r2", g.best_r2},
                      {"best_size", g.best_size},
                      {"mean_size", g.mean_size}});
-    out.details[state] = {{"r2_train", r.best.r2},
-                          {"size", r.best.Size()},
+    nlohmann::json chosen = {{"candidate", CandidateJson(candidate, all.names)}};
+    if (select) {
+      nlohmann::json scored = nlohmann::json::array();
+      for (const ScoredCandidate& c : selection.last_pass[i]) {
+        nlohmann::json j = CandidateJson(candidates[i].models[c.index], all.names);
+        j["short_horizon_error"] = c.score;
+        scored.push_back(j);
+      }
+      chosen["candidates"] = scored;
+      chosen["short_horizon_error"] = selection.score;
+      chosen["free_run_diverged"] = selection.free_run_diverged;
+      chosen["reason"] =
+          std::string(selection.free_run_diverged
+                          ? "every combination scored diverged in a free run of the training "
+                            "record; the one with the smallest"
+                          : "the combination of candidates with the smallest") +
+          " short-horizon simulation error (" + FormatNumber(options.horizon_s) +
+          " s segments) on the last " + FormatNumber(100.0 * f) + " % of the training record" +
+          (selection.rejected_for_divergence > 0
+               ? ", after " + std::to_string(selection.rejected_for_divergence) +
+                     " better ones diverged in a free run of the training record"
+               : ", and it free-runs the training record within bounds");
+    } else {
+      chosen["reason"] = f > 0 ? "a state has no variable of its own to simulate: the search's best"
+                               : "no validation part (--validation-fraction 0): the search's best";
+    }
+    out.details[state] = {{"r2_train", best.r2},
+                          {"r2_heldout", best.r2_heldout},
+                          {"size", best.Size()},
                           {"generations", r.log.size()},
+                          {"restarts", r.restarts},
                           {"stop_reason", r.stop_reason},
                           {"evaluations", r.evaluations},
+                          {"seconds", r.seconds},
+                          {"selection", chosen},
                           {"pareto", pareto},
                           {"log", log}};
   }

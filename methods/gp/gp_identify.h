@@ -1,7 +1,10 @@
 // GP-SR identification of a whole model: one GP-OLS search per state derivative (after
-// preprocessing), with the states and inputs as variables. The result is the model JSON of
-// contract section 5 (equations in channel names) plus, per equation, the Pareto front of error
-// against size, the generation log and why the search stopped.
+// preprocessing), with the states and inputs as variables, on the first part of the record;
+// then the model chosen among each search's Pareto candidates by short-horizon simulation on the
+// rest, the validation part (model_selection.h), and the chosen terms refitted on every row.
+// The result is the model JSON of contract section 5 (equations in channel names) plus, per
+// equation, the Pareto front of held-out error against size, the generation log, why the search
+// stopped, and which candidate was chosen and why.
 #pragma once
 
 #include <functional>
@@ -18,6 +21,12 @@ namespace usvid::gp {
 std::vector<Op> ParseOperators(const std::string& list);
 std::string OperatorList(const std::vector<Op>& ops);
 
+struct GpIdentifyOptions {
+  GpOptions search;
+  double validation_fraction = 0.2;  // the record's last part; 0: the search's best is kept
+  double horizon_s = 10.0;           // of the short-horizon simulations
+};
+
 struct GpIdentification {
   nlohmann::json equations = nlohmann::json::object();   // state -> expression of its derivative
   nlohmann::json parameters = nlohmann::json::object();  // "<state>.bias", "<state>.w1", ...
@@ -31,7 +40,7 @@ struct GpIdentification {
 GpIdentification IdentifyWithGp(
     const PreparedData& prepared, const std::vector<std::string>& states,
     const std::vector<std::string>& variables, const std::vector<std::string>& inputs,
-    const GpOptions& options,
+    const GpIdentifyOptions& options,
     const std::function<void(const std::string&, const GenerationLog&)>& progress = {});
 
 }  // namespace usvid::gp

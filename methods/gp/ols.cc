@@ -97,6 +97,7 @@ OlsFit FitOls(const NormalEquations& eq, double threshold) {
     fit.err.push_back(err[cols[a]]);
   }
   fit.r2 = 1.0 - ssr / sst;
+  fit.r2_heldout = fit.r2;
   fit.mse = ssr / static_cast<double>(eq.rows);
   fit.valid = std::isfinite(fit.r2);
   return fit;

@@ -37,6 +37,7 @@ struct OlsFit {
   std::vector<double> err;      // ERR of each kept term
   double bias = 0.0;
   double r2 = 0.0;
+  double r2_heldout = 0.0;  // on held-out blocks (term_selection.h); r2 for a threshold fit
   double mse = 0.0;
   bool valid = false;  // false: degenerate data (no variance, non-finite values)
 };

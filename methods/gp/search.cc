@@ -10,8 +10,10 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
+#include "methods/gp/constant_fit.h"
 #include "methods/gp/interpreter.h"
 #include "methods/gp/ols.h"
+#include "methods/gp/term_selection.h"
 #include "methods/gp/variation.h"
 
 namespace usvid::gp {
@@ -40,39 +42,52 @@ struct Columns {
   }
 };
 
-// Evaluates, prunes and scores one tree.
+// Evaluates, prunes and scores one tree. The rows' normal equations are kept per contiguous
+// block for the held-out term selection, or summed for the threshold.
 template <typename T>
 Model Score(const Tree& tree, const Columns<T>& data, Interpreter<T>& interp,
             const GpOptions& opt) {
   Model m;
   const std::vector<int> terms = SplitTerms(tree);
-  NormalEquations eq(static_cast<int>(terms.size()));
-  Eigen::MatrixXd x(Interpreter<T>::kBatch, static_cast<Eigen::Index>(terms.size()));
+  const int k = static_cast<int>(terms.size());
+  const long blocks = opt.ols_threshold ? 1 : std::min<long>(kHeldOutBlocks, data.rows);
+  std::vector<NormalEquations> eq(static_cast<size_t>(blocks), NormalEquations(k));
+  auto block_start = [&](long b) { return b * data.rows / blocks; };
+  Eigen::MatrixXd x(Interpreter<T>::kBatch, k);
+  long block = 0;
   for (long begin = 0; begin < data.rows; begin += Interpreter<T>::kBatch) {
     const int count = static_cast<int>(std::min<long>(Interpreter<T>::kBatch, data.rows - begin));
     interp.Evaluate(tree, begin, count);
-    for (size_t t = 0; t < terms.size(); ++t) {
+    for (int t = 0; t < k; ++t) {
       const T* col = interp.Column(terms[t]);
-      for (int r = 0; r < count; ++r) x(r, static_cast<Eigen::Index>(t)) = col[r];
+      for (int r = 0; r < count; ++r) x(r, t) = col[r];
     }
-    eq.Add(x.topRows(count), Eigen::Map<const Eigen::VectorXd>(data.target.data() + begin, count));
+    for (long row = begin; row < begin + count;) {
+      while (block + 1 < blocks && block_start(block + 1) <= row) ++block;
+      const long end = block + 1 < blocks ? std::min(begin + count, block_start(block + 1))
+                                          : begin + count;
+      eq[block].Add(x.middleRows(row - begin, end - row),
+                    Eigen::Map<const Eigen::VectorXd>(data.target.data() + row, end - row));
+      row = end;
+    }
   }
-  const OlsFit fit = FitOls(eq, opt.ols_threshold);
+  const OlsFit fit = opt.ols_threshold ? FitOls(eq[0], *opt.ols_threshold) : FitOlsHeldOut(eq);
   if (!fit.valid) {
     m.tree = tree;
     m.fitness = -1.0;  // worst, and finite
     return m;
   }
   std::vector<int> kept_roots;
-  for (int k : fit.kept) kept_roots.push_back(terms[k]);
+  for (int kept : fit.kept) kept_roots.push_back(terms[kept]);
   m.tree = kept_roots.size() == terms.size() ? tree : SumOfTerms(tree, kept_roots);
   m.term_roots = SplitTerms(m.tree);
   m.weights = fit.weights;
   m.bias = fit.bias;
   m.r2 = fit.r2;
+  m.r2_heldout = fit.r2_heldout;
   m.mse = fit.mse;
-  m.fitness =
-      opt.fitness_mse ? -fit.mse : fit.r2 - opt.parsimony * static_cast<double>(m.tree.size());
+  m.fitness = opt.fitness_mse ? -fit.mse
+                              : fit.r2_heldout - opt.parsimony * static_cast<double>(m.tree.size());
   if (!std::isfinite(m.fitness)) m.fitness = -1.0;
   return m;
 }
@@ -84,14 +99,24 @@ std::vector<long> SpreadRows(long total, long wanted) {
   return index;
 }
 
+// The front of held-out error (1 - r2_heldout) against size.
 void UpdatePareto(std::vector<ParetoPoint>& front, const Model& m,
                   const std::vector<std::string>& names) {
+  const double error = 1.0 - m.r2_heldout;
   for (const ParetoPoint& p : front)
-    if (p.size <= m.Size() && p.mse <= m.mse) return;  // dominated or equal
-  std::erase_if(front, [&](const ParetoPoint& p) { return m.Size() <= p.size && m.mse <= p.mse; });
-  front.push_back({m.Size(), m.mse, m.Equation(names)});
+    if (p.size <= m.Size() && 1.0 - p.r2_heldout <= error) return;  // dominated or equal
+  std::erase_if(front, [&](const ParetoPoint& p) {
+    return m.Size() <= p.size && error <= 1.0 - p.r2_heldout;
+  });
+  front.push_back({m.Size(), m.mse, m.r2_heldout, m.Equation(names), m});
   std::sort(front.begin(), front.end(),
             [](const ParetoPoint& a, const ParetoPoint& b) { return a.size < b.size; });
+}
+
+// The population sorted by fitness, stably (ties by index): the same at any thread count.
+void SortByFitness(std::vector<Model>& population) {
+  std::stable_sort(population.begin(), population.end(),
+                   [](const Model& a, const Model& b) { return a.fitness > b.fitness; });
 }
 
 template <typename T>
@@ -99,17 +124,20 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
              const std::function<void(const GenerationLog&)>& progress) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  const Columns<T> data(p, SpreadRows(p.target.size(), opt.fit_rows));
+  const std::vector<long> rows = SpreadRows(p.target.size(), opt.fit_rows);
+  const Columns<T> data(p, rows);
+  const Columns<double> exact(p, rows);  // for the constant optimisation
+  const std::vector<const double*> exact_columns = exact.Pointers();
   PrimitiveSet set{opt.functions, static_cast<int>(p.names.size()), opt.constant_probability};
   const int n = opt.population;
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
 
   GpResult result;
   std::vector<Model> population(n), next(n);
-  // Generation 0: ramped half-and-half over depths 2..max_depth.
-  auto breed = [&](int generation, int i, const std::vector<Model>& parents) {
+  // `fresh`: ramped half-and-half over depths 2..max_depth (generation 0 and restarts).
+  auto breed = [&](int generation, int i, bool fresh, const std::vector<Model>& parents) {
     Rng rng = StreamFor(opt.seed, static_cast<uint64_t>(generation), static_cast<uint64_t>(i));
-    if (generation == 0) {
+    if (fresh) {
       const int depth = 2 + i % std::max(1, opt.max_depth - 1);
       return RandomTree(rng, set, depth, i % 2 == 0);
     }
@@ -124,14 +152,44 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     Tree child = tournament().tree;
     if (unit(rng) < opt.crossover) child = Crossover(rng, child, tournament().tree, opt.max_depth);
-    if (unit(rng) < opt.mutation) child = Mutate(rng, child, set, opt.max_depth);
+    if (unit(rng) < opt.mutation) {
+      child = opt.term_mutation && rng() % 3 == 0 ? MutateTerm(rng, child, set, opt.max_depth)
+                                                  : Mutate(rng, child, set, opt.max_depth);
+    }
     return child;
+  };
+
+  // Levenberg-Marquardt on the constants of the best few not tuned yet; a tuned tree replaces
+  // its parent when it scores better.
+  auto tune_elites = [&]() {
+    std::vector<int> chosen;
+    for (int i = 0; i < n && static_cast<int>(chosen.size()) < opt.constant_elites; ++i)
+      if (!population[i].constants_tuned) chosen.push_back(i);
+#pragma omp parallel
+    {
+      Interpreter<T> interp(data.Pointers());
+#pragma omp for schedule(dynamic, 1)
+      for (size_t c = 0; c < chosen.size(); ++c) {
+        Model& m = population[chosen[c]];
+        m.constants_tuned = true;
+        if (!HasTunableConstants(m)) continue;
+        const ConstantFitResult fit = FitConstants(m, exact_columns, exact.target.data(),
+                                                   exact.rows, opt.constant_iterations);
+        if (!fit.improved) continue;
+        Model tuned = Score(fit.tree, data, interp, opt);
+        tuned.constants_tuned = true;
+        if (tuned.fitness > m.fitness) m = tuned;
+      }
+    }
+    SortByFitness(population);
   };
 
   double best_fitness = -INFINITY;
   int since_improvement = 0;
+  bool fresh = true;  // the next generation is drawn anew
   for (int g = 0; g < opt.generations; ++g) {
     const auto gen_start = Clock::now();
+    const bool drawn = fresh;
     double nodes = 0.0;
 #pragma omp parallel reduction(+ : nodes)
     {
@@ -142,20 +200,15 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
           next[i] = population[i];  // the best, sorted first below
           continue;
         }
-        const Tree tree = breed(g, i, population);
+        const Tree tree = breed(g, i, drawn, population);
         next[i] = Score(tree, data, interp, opt);
         nodes += static_cast<double>(tree.size()) * static_cast<double>(data.rows);
       }
     }
+    fresh = false;
     std::swap(population, next);
-    // Stable order by fitness (ties by index): the same at any thread count.
-    std::vector<int> order(n);
-    for (int i = 0; i < n; ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return population[a].fitness > population[b].fitness; });
-    std::vector<Model> sorted(n);
-    for (int i = 0; i < n; ++i) sorted[i] = population[order[i]];
-    population.swap(sorted);
+    SortByFitness(population);
+    if (opt.constant_iterations > 0 && opt.constant_elites > 0) tune_elites();
 
     const double seconds = std::chrono::duration<double>(Clock::now() - gen_start).count();
     GenerationLog log{g,
@@ -171,20 +224,33 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
     for (int i = 0; i < std::min(n, 50); ++i) UpdatePareto(result.pareto, population[i], p.names);
     if (progress) progress(log);
 
-    if (population[0].fitness > best_fitness + 1e-12) {
-      best_fitness = population[0].fitness;
-      since_improvement = 0;
-    } else if (++since_improvement >= opt.stagnation) {
-      result.stop_reason = "no improvement for " + std::to_string(opt.stagnation) + " generations";
-      break;
-    }
     if (population[0].r2 > 1.0 - 1e-12) {
       result.stop_reason = "exact fit";
       break;
     }
+    if (population[0].fitness > best_fitness + 1e-12) {
+      best_fitness = population[0].fitness;
+      since_improvement = 0;
+    } else if (++since_improvement >= opt.stagnation) {
+      if (result.restarts >= opt.restarts) {
+        result.stop_reason = "no improvement for " + std::to_string(opt.stagnation) +
+                             " generations" +
+                             (opt.restarts > 0
+                                  ? " after " + std::to_string(result.restarts) + " restarts"
+                                  : "");
+        break;
+      }
+      ++result.restarts;  // all but the elites drawn anew in the next generation
+      since_improvement = 0;
+      fresh = true;
+    }
   }
   if (result.stop_reason.empty()) result.stop_reason = "generation limit";
-  result.best = FitTree(population[0].tree, p, opt.ols_threshold);
+  result.best = FitTree(population[0].tree, p, opt);
+  for (ParetoPoint& point : result.pareto) {
+    point.model = FitTree(point.model.tree, p, opt);
+    point.equation = point.model.Equation(p.names);
+  }
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }
@@ -202,12 +268,19 @@ std::string Model::Equation(const std::vector<std::string>& names) const {
   return s.str();
 }
 
-Model FitTree(const Tree& tree, const GpProblem& problem, double ols_threshold) {
+Model FitTree(const Tree& tree, const GpProblem& problem, const GpOptions& options) {
   const Columns<double> data(problem, SpreadRows(problem.target.size(), 0));
   Interpreter<double> interp(data.Pointers());
-  GpOptions opt;
-  opt.ols_threshold = ols_threshold;
-  return Score(tree, data, interp, opt);
+  return Score(tree, data, interp, options);
+}
+
+GpOptions ReportOptions() {
+  GpOptions o;
+  o.ols_threshold = 0.05;
+  o.restarts = 0;
+  o.term_mutation = false;
+  o.constant_iterations = 0;
+  return o;
 }
 
 Eigen::VectorXd Predict(const Model& model, const std::vector<Eigen::VectorXd>& variables) {
@@ -235,6 +308,8 @@ GpResult RunGp(const GpProblem& problem, const GpOptions& options,
     throw InputError("gp: needs named variables and at least 10 rows");
   if (options.population < 4 || options.generations < 1 || options.max_depth < 2)
     throw InputError("gp: population >= 4, generations >= 1 and max depth >= 2");
+  if (options.restarts < 0 || options.constant_iterations < 0 || options.constant_elites < 0)
+    throw InputError("gp: restarts, constant iterations and constant elites must be >= 0");
   return options.single_precision ? Run<float>(problem, options, progress)
                                   : Run<double>(problem, options, progress);
 }

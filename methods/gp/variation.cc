@@ -1,5 +1,7 @@
 #include "methods/gp/variation.h"
 
+#include "methods/gp/ols.h"
+
 namespace usvid::gp {
 namespace {
 
@@ -93,6 +95,18 @@ Tree Mutate(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth) 
     if (!same.empty()) n.op = same[rng() % same.size()];
   }
   return child;
+}
+
+Tree MutateTerm(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth) {
+  const Tree term = RandomTree(rng, set, 2 + static_cast<int>(rng() % 2), false);
+  Tree sum = tree;
+  sum.insert(sum.end(), term.begin(), term.end());
+  sum.push_back({Op::kAdd, 0, 1, 0.0});
+  UpdateLengths(sum);
+  if (Depth(sum) <= max_depth && sum.size() < 1000) return sum;
+  const std::vector<int> terms = SplitTerms(tree);
+  Tree child = Splice(tree, terms[rng() % terms.size()], term, static_cast<int>(term.size()) - 1);
+  return Depth(child) <= max_depth && child.size() < 1000 ? child : tree;
 }
 
 }  // namespace usvid::gp

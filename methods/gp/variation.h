@@ -32,4 +32,9 @@ Tree Crossover(Rng& rng, const Tree& a, const Tree& b, int max_depth);
 // (one node changed to another of the same arity), half and half, within `max_depth`.
 Tree Mutate(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth);
 
+// Term mutation: a new random term (depth <= 3) added to the tree's top-level sum, or put in
+// place of one of its terms when the sum would grow past `max_depth`. GP-OLS weighs and prunes
+// terms, so a search over which terms are in the sum is what it needs most.
+Tree MutateTerm(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth);
+
 }  // namespace usvid::gp
