@@ -136,15 +136,16 @@ GpIdentification IdentifyWithGp(
         scored.push_back(j);
       }
       chosen["candidates"] = scored;
-      chosen["short_horizon_error"] = selection.score;
+      chosen["short_horizon_error"] = selection.scores[i];
+      chosen["standard_error"] = selection.standard_errors[i];
       chosen["free_run_diverged"] = selection.free_run_diverged;
       chosen["reason"] =
           std::string(selection.free_run_diverged
-                          ? "every combination scored diverged in a free run of the training "
-                            "record; the one with the smallest"
-                          : "the combination of candidates with the smallest") +
+                          ? "every combination tried diverged in a free run of the training "
+                            "record; the candidate with the smallest"
+                          : "the smallest candidate within one standard error of the smallest") +
           " short-horizon simulation error (" + FormatNumber(options.horizon_s) +
-          " s segments) on the last " + FormatNumber(100.0 * f) + " % of the training record" +
+          " s segments, the other states as measured) on the last " + FormatNumber(100.0 * f) + " % of the training record" +
           (selection.rejected_for_divergence > 0
                ? ", after " + std::to_string(selection.rejected_for_divergence) +
                      " better ones diverged in a free run of the training record"

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "core/error.h"
 #include "methods/gp/interpreter.h"
@@ -15,6 +14,7 @@ constexpr double kDivergedPenalty = 100.0;  // variances per sample left after l
 // Integrates segments side by side: segment j starts at row starts[j] and runs `steps` samples.
 class SegmentSimulator {
  public:
+  // `state_vars`: the variables integrated; the others are read from the data.
   SegmentSimulator(const SelectionData& data, const std::vector<int>& state_vars)
       : data_(data), state_vars_(state_vars) {
     is_state_.assign(data.names.size(), -1);
@@ -29,13 +29,14 @@ class SegmentSimulator {
   }
 
   // The mean over segments, steps and states of the squared error over the state's variance;
-  // `diverged` says whether any segment left the bounds.
+  // `diverged` says whether any segment left the bounds. `per_segment` (when given) receives
+  // each segment's mean.
   double Error(const std::vector<const Model*>& models, const std::vector<long>& starts,
-               long steps, bool& diverged) const {
+               long steps, bool& diverged, std::vector<double>* per_segment = nullptr) const {
     const int ns = static_cast<int>(state_vars_.size());
     const int nv = static_cast<int>(data_.names.size());
     diverged = false;
-    double total = 0.0;
+    std::vector<double> segment(starts.size(), 0.0);
     for (size_t first = 0; first < starts.size(); first += Interpreter<double>::kBatch) {
       const int count = static_cast<int>(
           std::min<size_t>(Interpreter<double>::kBatch, starts.size() - first));
@@ -75,18 +76,18 @@ class SegmentSimulator {
         for (int j = 0; j < count; ++j) {
           const long row = starts[first + j] + k + 1;
           if (!active[j]) {
-            total += kDivergedPenalty * ns;
+            segment[first + j] += kDivergedPenalty * ns;
           } else {
             bool out = false;
             for (int s = 0; s < ns; ++s) out |= !(std::abs(x(s, j)) <= bound_[s]);
             if (out) {
               active[j] = false;
               diverged = true;
-              total += kDivergedPenalty * ns;
+              segment[first + j] += kDivergedPenalty * ns;
             } else {
               for (int s = 0; s < ns; ++s) {
                 const double e = x(s, j) - data_.variables[state_vars_[s]](row);
-                total += e * e / variance_[s];
+                segment[first + j] += e * e / variance_[s];
               }
             }
           }
@@ -95,7 +96,13 @@ class SegmentSimulator {
         }
       }
     }
-    return total / (static_cast<double>(starts.size()) * static_cast<double>(steps) * ns);
+    double total = 0.0;
+    for (double& e : segment) {
+      e /= static_cast<double>(steps) * ns;
+      total += e;
+    }
+    if (per_segment) *per_segment = segment;
+    return total / static_cast<double>(starts.size());
   }
 
  private:
@@ -119,7 +126,6 @@ Selection SelectModels(const SelectionData& data, const std::vector<StateCandida
   }
   if (data.validation_begin < 0 || rows - data.validation_begin < 2)
     throw InputError("gp model selection: the validation part has fewer than 2 samples");
-  const SegmentSimulator sim(data, state_vars);
 
   // Segments of the horizon over the validation rows (one shorter segment when it is short).
   const double dt = (data.t(rows - 1) - data.t(0)) / static_cast<double>(rows - 1);
@@ -129,62 +135,87 @@ Selection SelectModels(const SelectionData& data, const std::vector<StateCandida
   for (long s = data.validation_begin; s + steps <= rows - 1; s += steps) starts.push_back(s);
 
   Selection out;
-  std::map<std::vector<size_t>, double> scored;
-  auto score = [&](const std::vector<size_t>& combo) {
-    if (const auto it = scored.find(combo); it != scored.end()) return it->second;
+  out.last_pass.resize(states.size());
+  // Each state's candidates on their own: that state integrated, the others as measured, so a
+  // wrong equation of one state cannot make a wrong one of another look right.
+  std::vector<std::vector<size_t>> ranked(states.size());
+  for (size_t s = 0; s < states.size(); ++s) {
+    const std::vector<Model>& models = states[s].models;
+    const SegmentSimulator sim(data, {state_vars[s]});
+    std::vector<std::vector<double>> segments(models.size());
+    for (size_t c = 0; c < models.size(); ++c) {
+      bool diverged = false;
+      const double e = sim.Error({&models[c]}, starts, steps, diverged, &segments[c]);
+      out.last_pass[s].push_back({c, std::isfinite(e) ? e : INFINITY});
+      ++out.candidates_scored;
+    }
+    // The one-standard-error rule: the smallest candidate within one standard error (over
+    // segments) of the smallest error comes first, then the rest by error.
+    size_t best = 0;
+    for (size_t c = 1; c < models.size(); ++c)
+      if (out.last_pass[s][c].score < out.last_pass[s][best].score) best = c;
+    double se = 0.0;
+    const std::vector<double>& e = segments[best];
+    if (e.size() > 1 && std::isfinite(out.last_pass[s][best].score)) {
+      const double mean = out.last_pass[s][best].score;
+      for (double x : e) se += (x - mean) * (x - mean);
+      se = std::sqrt(se / static_cast<double>(e.size() - 1) / static_cast<double>(e.size()));
+    }
+    size_t pick = best;
+    for (size_t c = 0; c < models.size(); ++c)
+      if (out.last_pass[s][c].score <= out.last_pass[s][best].score + se &&
+          (models[c].Size() < models[pick].Size() ||
+           (models[c].Size() == models[pick].Size() &&
+            out.last_pass[s][c].score < out.last_pass[s][pick].score)))
+        pick = c;
+    std::vector<ScoredCandidate> order = out.last_pass[s];
+    std::stable_sort(order.begin(), order.end(),
+                     [&](const ScoredCandidate& a, const ScoredCandidate& b) {
+                       if ((a.index == pick) != (b.index == pick)) return a.index == pick;
+                       return a.score < b.score ||
+                              (a.score == b.score && models[a.index].Size() < models[b.index].Size());
+                     });
+    for (const ScoredCandidate& c : order) ranked[s].push_back(c.index);
+    out.standard_errors.push_back(se);
+  }
+
+  // The best of each, then one state at a time moved to its next best, until the whole model
+  // free-runs the training record within the bounds.
+  const SegmentSimulator joint(data, state_vars);
+  std::vector<std::vector<size_t>> tries = {std::vector<size_t>(states.size(), 0)};
+  for (size_t k = 1; tries.size() < 20; ++k) {
+    bool any = false;
+    for (size_t s = 0; s < states.size() && tries.size() < 20; ++s)
+      if (k < ranked[s].size()) {
+        std::vector<size_t> rank(states.size(), 0);
+        rank[s] = k;
+        tries.push_back(rank);
+        any = true;
+      }
+    if (!any) break;
+  }
+  auto combination = [&](const std::vector<size_t>& rank) {
+    std::vector<size_t> combo;
+    for (size_t s = 0; s < states.size(); ++s) combo.push_back(ranked[s][rank[s]]);
+    return combo;
+  };
+  out.chosen = combination(tries[0]);
+  out.free_run_diverged = true;
+  for (const std::vector<size_t>& rank : tries) {
+    const std::vector<size_t> combo = combination(rank);
     std::vector<const Model*> models;
     for (size_t s = 0; s < states.size(); ++s) models.push_back(&states[s].models[combo[s]]);
     bool diverged = false;
-    const double e = sim.Error(models, starts, steps, diverged);
-    ++out.combinations_scored;
-    return scored[combo] = std::isfinite(e) ? e : INFINITY;
-  };
-  auto size_of = [&](const std::vector<size_t>& combo) {
-    size_t n = 0;
-    for (size_t s = 0; s < states.size(); ++s) n += states[s].models[combo[s]].Size();
-    return n;
-  };
-
-  std::vector<size_t> chosen(states.size(), 0);
-  out.last_pass.resize(states.size());
-  for (int pass = 0; pass < 2; ++pass) {
-    for (size_t s = 0; s < states.size(); ++s) {
-      std::vector<size_t> combo = chosen;
-      out.last_pass[s].clear();
-      for (size_t c = 0; c < states[s].models.size(); ++c) {
-        combo[s] = c;
-        const double e = score(combo);
-        out.last_pass[s].push_back({c, e});
-        std::vector<size_t> current = chosen;
-        const double best = score(current);
-        if (e < best || (e == best && size_of(combo) < size_of(current))) chosen[s] = c;
-      }
-    }
-  }
-
-  // The best combination scored that free-runs the training record within the bounds.
-  std::vector<std::pair<double, std::vector<size_t>>> ranked;
-  for (const auto& [combo, e] : scored) ranked.emplace_back(e, combo);
-  std::stable_sort(ranked.begin(), ranked.end(), [&](const auto& a, const auto& b) {
-    return a.first < b.first || (a.first == b.first && size_of(a.second) < size_of(b.second));
-  });
-  out.chosen = ranked.front().second;
-  out.score = ranked.front().first;
-  out.free_run_diverged = true;
-  for (size_t i = 0; i < ranked.size() && i < 20; ++i) {
-    std::vector<const Model*> models;
-    for (size_t s = 0; s < states.size(); ++s)
-      models.push_back(&states[s].models[ranked[i].second[s]]);
-    bool diverged = false;
-    sim.Error(models, {0}, rows - 1, diverged);
+    joint.Error(models, {0}, rows - 1, diverged);
     if (!diverged) {
-      out.chosen = ranked[i].second;
-      out.score = ranked[i].first;
+      out.chosen = combo;
       out.free_run_diverged = false;
       break;
     }
     ++out.rejected_for_divergence;
   }
+  for (size_t s = 0; s < states.size(); ++s)
+    out.scores.push_back(out.last_pass[s][out.chosen[s]].score);
   return out;
 }
 

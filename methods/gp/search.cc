@@ -276,6 +276,7 @@ Model FitTree(const Tree& tree, const GpProblem& problem, const GpOptions& optio
 
 GpOptions ReportOptions() {
   GpOptions o;
+  o.mutation = 0.1;
   o.ols_threshold = 0.05;
   o.restarts = 0;
   o.term_mutation = false;
