@@ -2,7 +2,9 @@
 //  - the batch interpreter's node evaluations per second, float and double, 1 and 2 threads
 //    (goal: Operon's 3e9 to 6e9 per core in float with AVX2);
 //  - evaluation cost against the number of rows, 1k to 100k (it should grow linearly);
-//  - the GP-OLS scoring of one individual;
+//  - the GP-OLS scoring of one individual: the report's ERR threshold, and the default
+//    held-out term selection over contiguous blocks;
+//  - the constant optimisation of one elite (Levenberg-Marquardt, 5 iterations, 4000 rows);
 //  - one generation at population 2000 (with the initial population it is bred from);
 //  - the peak heap a search of population 2000 x 10 generations needs;
 //  - a full search of population 2000 x 50 generations on 10k rows (r', + - * abs), at 1 and
@@ -11,6 +13,7 @@
 
 #include "bench/fixtures.h"
 #include "bench/heap_counter.h"
+#include "methods/gp/constant_fit.h"
 #include "methods/gp/interpreter.h"
 #include "methods/gp/search.h"
 
@@ -84,6 +87,39 @@ void BM_OlsScore(benchmark::State& state) {
     benchmark::DoNotOptimize(FitTree(RandomTrees()[i++ % RandomTrees().size()], p, ReportOptions()));
 }
 BENCHMARK(BM_OlsScore)->Unit(benchmark::kMicrosecond);
+
+// The same with the default term selection: held-out error over contiguous blocks.
+void BM_OlsHeldOutScore(benchmark::State& state) {
+  const GpProblem& p = OdinGpProblem();
+  const GpOptions options;
+  size_t i = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(FitTree(RandomTrees()[i++ % RandomTrees().size()], p, options));
+}
+BENCHMARK(BM_OlsHeldOutScore)->Unit(benchmark::kMicrosecond);
+
+// Constant optimisation of one elite as the search does it: r' = b + w1 abs(r - c) r + w2 v +
+// w3 tau_n on 4000 rows, c starting at 0.1 (truth: 0), 5 Levenberg-Marquardt iterations.
+void BM_ConstantFit(benchmark::State& state) {
+  const GpProblem& p = OdinGpProblem();
+  const long rows = std::min<long>(4000, p.target.size());
+  Model m;
+  m.tree = {{Op::kVar, 2, 1, 0.0}, {Op::kConst, 0, 1, 0.1}, {Op::kSub, 0, 1, 0.0},
+            {Op::kAbs, 0, 1, 0.0}, {Op::kVar, 2, 1, 0.0},   {Op::kMul, 0, 1, 0.0},
+            {Op::kVar, 1, 1, 0.0}, {Op::kAdd, 0, 1, 0.0},   {Op::kVar, 5, 1, 0.0},
+            {Op::kAdd, 0, 1, 0.0}};
+  UpdateLengths(m.tree);
+  m.term_roots = {5, 6, 8};
+  m.weights = {-0.1, -0.06, 4.7e-5};
+  std::vector<const double*> columns;
+  for (const Eigen::VectorXd& v : p.variables) columns.push_back(v.data());
+  ConstantFitResult r;
+  for (auto _ : state) r = FitConstants(m, columns, p.target.data(), rows, 5);
+  state.counters["c"] = r.tree[1].value;
+  state.counters["iterations"] = r.iterations;
+  state.counters["rows"] = static_cast<double>(rows);
+}
+BENCHMARK(BM_ConstantFit)->Unit(benchmark::kMillisecond);
 
 GpOptions SearchOptions(int generations, int threads) {
   GpOptions opt;

@@ -108,27 +108,47 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
 
   std::vector<Eigen::MatrixXd> block_gram;
   for (const NormalEquations& b : blocks) block_gram.push_back(b.gram.selfadjointView<Eigen::Lower>());
-  // Held-out SSE of each prefix of the forward order.
-  double best_sse = INFINITY;
-  size_t best_terms = 1;
+  // Held-out SSE of each prefix of the forward order, per block.
+  std::vector<std::vector<double>> sse(order.size() + 1);
   std::vector<int> cols = {0};
+  size_t best = 0;
+  auto total_of = [&](size_t m) {
+    double t = 0.0;
+    for (double e : sse[m]) t += e;
+    return t;
+  };
   for (size_t m = 1; m <= order.size(); ++m) {
     cols.push_back(order[m - 1]);
-    double sse = 0.0;
-    for (size_t b = 0; b < blocks.size() && std::isfinite(sse); ++b) {
-      if (blocks[b].rows == 0) continue;
+    for (size_t b = 0; b < blocks.size(); ++b) {
       Eigen::VectorXd w;
-      if (!Solve(g - block_gram[b], total.xty - blocks[b].xty, cols, w)) {
-        sse = INFINITY;
-        break;
+      if (blocks[b].rows == 0) {
+        sse[m].push_back(0.0);
+      } else if (Solve(g - block_gram[b], total.xty - blocks[b].xty, cols, w)) {
+        sse[m].push_back(BlockSse(blocks[b], block_gram[b], cols, w));
+      } else {
+        sse[m].push_back(INFINITY);
       }
-      sse += BlockSse(blocks[b], block_gram[b], cols, w);
     }
-    if (sse < best_sse) {
-      best_sse = sse;
+    if (best == 0 || total_of(m) < total_of(best)) best = m;
+  }
+  if (!std::isfinite(total_of(best))) best = 1;
+  // The one-standard-error rule on paired block differences: the shortest prefix whose
+  // held-out SSE exceeds the best's by no more than one standard error of that excess.
+  size_t best_terms = best;
+  const double k = static_cast<double>(blocks.size());
+  for (size_t m = 1; m < best && k > 1; ++m) {
+    double mean = 0.0, var = 0.0;
+    for (size_t b = 0; b < blocks.size(); ++b) mean += (sse[m][b] - sse[best][b]) / k;
+    for (size_t b = 0; b < blocks.size(); ++b) {
+      const double d = sse[m][b] - sse[best][b] - mean;
+      var += d * d / (k - 1);
+    }
+    if (std::isfinite(mean) && mean <= std::sqrt(var / k)) {
       best_terms = m;
+      break;
     }
   }
+  const double best_sse = total_of(best_terms);
 
   // The kept terms in their order in the tree, refitted on all rows.
   std::vector<std::pair<int, double>> kept;

@@ -7,7 +7,10 @@
 // those already in. For each prefix of that order, the weights fitted on all blocks but b
 // predict block b; from the Gram matrices alone, without touching rows again,
 //   SSE_b = y_b'y_b - 2 w' X_b'y_b + w' X_b'X_b w,   w = (G - G_b)^-1 (X'y - X_b'y_b).
-// The prefix with the smallest sum of SSE_b is kept (at least one term), refitted on all rows.
+// Of the prefixes, the shortest whose held-out SSE exceeds the smallest by no more than one
+// standard error of the excess (over blocks, paired) is kept, at least one term, refitted on
+// all rows: the one-standard-error rule, so that a term which only fits noise, and helps
+// held-out error by chance, is not kept.
 // Contiguous blocks, not scattered rows: neighbouring samples share the derivative estimate's
 // smoothing error, so scattered held-out rows would reward terms that fit that error.
 // The held-out r^2 = 1 - sum SSE_b / SST is what the search ranks trees by.

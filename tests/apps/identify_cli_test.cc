@@ -82,6 +82,41 @@ TEST_F(IdentifyCliTest, FindsTheInputDelay) {
   EXPECT_NEAR(ReadJsonFile(out).at("preprocessing").at("delay_s").get<double>(), 0.5, 0.01);
 }
 
+// The defaults choose the number of terms by held-out error and the model by simulation, and
+// model.json says which candidate was chosen and why; --preset report is the reference
+// report's Table 3.1 (population 2000, crossover 0.9, mutation 0.1, OLS threshold 0.05, max
+// depth 6, + - *) with nothing added.
+TEST_F(IdentifyCliTest, DefaultsSayWhichCandidateAndPresetReportIsTableThreeOne) {
+  const auto ours = (dir_ / "default.json").string(), report = (dir_ / "report.json").string();
+  const std::string common = "identify --method gp --vessel msd --data " + data_ +
+                             " --population 200 --generations 8 --out ";
+  ASSERT_EQ(RunUsvid(common + ours).exit_code, 0);
+  const nlohmann::json d = ReadJsonFile(ours).at("gp");
+  EXPECT_EQ(d.at("term_selection"), "held-out blocks");
+  EXPECT_TRUE(d.at("ols_threshold").is_null());
+  const nlohmann::json& selection = d.at("equations").at("v").at("selection");
+  EXPECT_THAT(selection.at("reason").get<std::string>(), HasSubstr("short-horizon simulation"));
+  EXPECT_FALSE(selection.at("candidates").empty());
+  EXPECT_FALSE(selection.at("free_run_diverged").get<bool>());
+
+  ASSERT_EQ(RunUsvid("identify --method gp --vessel msd --data " + data_ + " --preset report " +
+                     "--generations 3 --out " + report)
+                .exit_code,
+            0);
+  const nlohmann::json r = ReadJsonFile(report).at("gp");
+  EXPECT_EQ(r.at("population"), 2000);
+  EXPECT_EQ(r.at("crossover"), 0.9);
+  EXPECT_EQ(r.at("mutation"), 0.1);
+  EXPECT_EQ(r.at("ols_threshold"), 0.05);
+  EXPECT_EQ(r.at("max_depth"), 6);
+  EXPECT_EQ(r.at("operators"), "+,-,*");
+  EXPECT_EQ(r.at("constant_iterations"), 0);
+  EXPECT_EQ(r.at("restarts"), 0);
+  EXPECT_EQ(r.at("validation_fraction"), 0.0);
+  EXPECT_THAT(r.at("equations").at("v").at("selection").at("reason").get<std::string>(),
+              HasSubstr("no validation part"));
+}
+
 // Bad options: exit 2, the option named, no model written.
 TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
   const auto out = (dir_ / "bad.json").string();
@@ -92,6 +127,11 @@ TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
       {"--method gp --vessel msd --population 2", "--population"},
       {"--method gp --vessel msd --derivative sg:20", "window must be odd"},
       {"--method gp", "give --vessel, or --states and --inputs"},
+      {"--method gp --vessel msd --preset fast", "--preset"},
+      {"--method gp --vessel msd --validation-fraction 0.9", "--validation-fraction"},
+      {"--method gp --vessel msd --validation-fraction -0.1", "--validation-fraction"},
+      {"--method gp --vessel msd --constant-iterations -1", "--constant-iterations"},
+      {"--method gp --vessel msd --ols-threshold 1.5", "--ols-threshold"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = RunUsvid("identify " + args + " --data " + data_ + " --out " + out);
