@@ -151,7 +151,11 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
     };
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     Tree child = tournament().tree;
-    if (unit(rng) < opt.crossover) child = Crossover(rng, child, tournament().tree, opt.max_depth);
+    if (unit(rng) < opt.crossover) {
+      child = opt.term_mutation && rng() % 2 == 0
+                  ? CrossoverTerms(rng, child, tournament().tree, opt.max_depth)
+                  : Crossover(rng, child, tournament().tree, opt.max_depth);
+    }
     if (unit(rng) < opt.mutation) {
       child = opt.term_mutation && rng() % 3 == 0 ? MutateTerm(rng, child, set, opt.max_depth)
                                                   : Mutate(rng, child, set, opt.max_depth);

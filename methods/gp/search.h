@@ -4,8 +4,10 @@
 // fitness is that held-out r^2 minus parsimony x size; with an `ols_threshold` (the report's
 // GP-OLS, ols.h) terms under the threshold are cut and fitness is the training r^2 minus
 // parsimony x size (or minus the MSE). Tournament selection, elitism, crossover with
-// probability p_c, mutation with p_m (subtree, point, and term mutation: a new small term added
-// to the sum or put in place of one), constant optimisation of the elites (constant_fit.h),
+// probability p_c (subtree crossover, and term crossover: a whole term of the second parent
+// added to the first one's sum), mutation with p_m (subtree, point, and term mutation: a new
+// small term added to the sum or put in place of one), constant optimisation of the elites
+// (constant_fit.h),
 // and on stagnation a restart: all but the elites drawn anew, up to `restarts` times, before
 // the search stops. Offspring i of generation g draws from its own stream StreamFor(seed, g, i),
 // and OpenMP only divides the offspring among threads, so the result is the same at any thread
@@ -34,7 +36,7 @@ struct GpOptions {
   int elites = 2;
   int stagnation = 10;
   int restarts = 2;             // restarts on stagnation before stopping
-  bool term_mutation = true;    // mutation may add a term to the sum or replace one
+  bool term_mutation = true;    // term crossover and mutation (variation.h) besides subtree ones
   int constant_iterations = 5;  // Levenberg-Marquardt iterations per elite (0: none)
   int constant_elites = 4;      // how many of the best are tuned each generation
   std::vector<Op> functions = {Op::kAdd, Op::kSub, Op::kMul};

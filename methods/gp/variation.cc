@@ -97,16 +97,32 @@ Tree Mutate(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth) 
   return child;
 }
 
-Tree MutateTerm(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth) {
-  const Tree term = RandomTree(rng, set, 2 + static_cast<int>(rng() % 2), false);
+namespace {
+
+// `term` added to the sum of `tree`, or in place of one of its terms, within `max_depth`.
+Tree AddOrReplaceTerm(Rng& rng, const Tree& tree, const Tree& term, int term_root,
+                      int max_depth) {
+  const int start = term_root + 1 - term[term_root].length;
   Tree sum = tree;
-  sum.insert(sum.end(), term.begin(), term.end());
+  sum.insert(sum.end(), term.begin() + start, term.begin() + term_root + 1);
   sum.push_back({Op::kAdd, 0, 1, 0.0});
   UpdateLengths(sum);
   if (Depth(sum) <= max_depth && sum.size() < 1000) return sum;
   const std::vector<int> terms = SplitTerms(tree);
-  Tree child = Splice(tree, terms[rng() % terms.size()], term, static_cast<int>(term.size()) - 1);
+  Tree child = Splice(tree, terms[rng() % terms.size()], term, term_root);
   return Depth(child) <= max_depth && child.size() < 1000 ? child : tree;
+}
+
+}  // namespace
+
+Tree MutateTerm(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth) {
+  const Tree term = RandomTree(rng, set, 2 + static_cast<int>(rng() % 2), false);
+  return AddOrReplaceTerm(rng, tree, term, static_cast<int>(term.size()) - 1, max_depth);
+}
+
+Tree CrossoverTerms(Rng& rng, const Tree& a, const Tree& b, int max_depth) {
+  const std::vector<int> terms = SplitTerms(b);
+  return AddOrReplaceTerm(rng, a, b, terms[rng() % terms.size()], max_depth);
 }
 
 }  // namespace usvid::gp

@@ -37,4 +37,10 @@ Tree Mutate(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth);
 // terms, so a search over which terms are in the sum is what it needs most.
 Tree MutateTerm(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth);
 
+// Term crossover (multi-gene GP's high-level crossover): one of `b`'s terms added to `a`'s sum,
+// or put in place of one of `a`'s terms when the sum would grow past `max_depth`. Terms that
+// explain little alone can explain much together (in odin3dof's v' = -u r - d(v) + b tau_y the
+// terms nearly cancel), so whole terms have to meet in one sum.
+Tree CrossoverTerms(Rng& rng, const Tree& a, const Tree& b, int max_depth);
+
 }  // namespace usvid::gp
