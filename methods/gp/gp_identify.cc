@@ -161,7 +161,6 @@ GpIdentification IdentifyWithGp(
                           {"restarts", r.restarts},
                           {"stop_reason", r.stop_reason},
                           {"evaluations", r.evaluations},
-                          {"seconds", r.seconds},
                           {"selection", chosen},
                           {"pareto", pareto},
                           {"log", log}};

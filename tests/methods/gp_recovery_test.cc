@@ -89,7 +89,7 @@ const Odin3DofRun& RunOdin3Dof(const std::vector<gp::Op>& functions) {
                                      TrueDerivative<Odin3Dof>(held, index++));
     const nlohmann::json& d = model["gp"]["equations"][state];
     std::cout << "[" << key << "] " << state << "' = " << eq << "\n  held-out error " << err
-              << " (" << d["seconds"] << " s, " << d["generations"] << " generations, "
+              << " (" << d["generations"] << " generations, "
               << d["stop_reason"] << ")\n";
     run.errors.push_back(err);
     run.equations[state] = eq;
