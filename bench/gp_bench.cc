@@ -84,7 +84,8 @@ void BM_OlsScore(benchmark::State& state) {
   const GpProblem& p = OdinGpProblem();
   size_t i = 0;
   for (auto _ : state)
-    benchmark::DoNotOptimize(FitTree(RandomTrees()[i++ % RandomTrees().size()], p, ReportOptions()));
+    benchmark::DoNotOptimize(
+        FitTree(RandomTrees()[i++ % RandomTrees().size()], p, ReportOptions()));
 }
 BENCHMARK(BM_OlsScore)->Unit(benchmark::kMicrosecond);
 

@@ -216,8 +216,9 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& o) {
   if (s.ols_threshold && !(*s.ols_threshold >= 0 && *s.ols_threshold < 1))
     throw InputError("--ols-threshold: must be in [0, 1)");
   if (!(g.validation_fraction >= 0 && g.validation_fraction <= 0.5))
-    throw InputError("--validation-fraction: must be in [0, 0.5] (the share of the record kept "
-                     "to choose the model by simulation; 0: none)");
+    throw InputError(
+        "--validation-fraction: must be in [0, 0.5] (the share of the record kept "
+        "to choose the model by simulation; 0: none)");
   if (s.constant_iterations < 0)
     throw InputError("--constant-iterations: must be >= 0 (0: no constant optimisation)");
   if (s.restarts < 0) throw InputError("--restarts: must be >= 0");
@@ -357,8 +358,8 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
                    {"crossover", so.crossover},
                    {"mutation", so.mutation},
                    {"term_selection", so.ols_threshold ? "ols threshold" : "held-out blocks"},
-                   {"ols_threshold", so.ols_threshold ? nlohmann::json(*so.ols_threshold)
-                                                      : nlohmann::json(nullptr)},
+                   {"ols_threshold",
+                    so.ols_threshold ? nlohmann::json(*so.ols_threshold) : nlohmann::json(nullptr)},
                    {"held_out_blocks", so.ols_threshold ? 0 : gp::kHeldOutBlocks},
                    {"term_mutation", so.term_mutation},
                    {"restarts", so.restarts},

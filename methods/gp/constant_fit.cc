@@ -151,8 +151,8 @@ ConstantFitResult FitConstants(const Model& model, const std::vector<const doubl
   result.final_cost = summary.final_cost;
   result.iterations = static_cast<int>(summary.iterations.size());
   const bool finite = std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); });
-  result.improved = finite && std::isfinite(summary.final_cost) &&
-                    summary.final_cost < summary.initial_cost;
+  result.improved =
+      finite && std::isfinite(summary.final_cost) && summary.final_cost < summary.initial_cost;
   if (result.improved)
     for (size_t k = 0; k < constants.size(); ++k) result.tree[constants[k]].value = p[k];
   return result;

@@ -15,7 +15,7 @@
 namespace usvid::gp {
 
 struct ConstantFitResult {
-  Tree tree;             // with the tuned constants
+  Tree tree;                                    // with the tuned constants
   double initial_cost = 0.0, final_cost = 0.0;  // half the sum of squared residuals
   int iterations = 0;
   bool improved = false;  // final < initial, and every value finite

@@ -79,17 +79,15 @@ GpIdentification IdentifyWithGp(
   std::vector<GpResult> results;
   for (const std::string& state : states) {
     all.target = prepared.data[state + "_dot"];
-    results.push_back(RunGp(Head(all, train_rows), options.search,
-                            [&](const GenerationLog& log) {
-                              if (progress) progress(state, log);
-                            }));
+    results.push_back(RunGp(Head(all, train_rows), options.search, [&](const GenerationLog& log) {
+      if (progress) progress(state, log);
+    }));
     const GpResult& r = results.back();
     out.node_evaluations += r.node_evaluations;
     StateCandidates c{state, {r.best}};
     for (const ParetoPoint& p : r.pareto)
-      if (std::none_of(c.models.begin(), c.models.end(), [&](const Model& m) {
-            return m.Equation(all.names) == p.equation;
-          }))
+      if (std::none_of(c.models.begin(), c.models.end(),
+                       [&](const Model& m) { return m.Equation(all.names) == p.equation; }))
         c.models.push_back(p.model);
     candidates.push_back(std::move(c));
   }
@@ -145,7 +143,8 @@ GpIdentification IdentifyWithGp(
                             "record; the candidate with the smallest"
                           : "the smallest candidate within one standard error of the smallest") +
           " short-horizon simulation error (" + FormatNumber(options.horizon_s) +
-          " s segments, the other states as measured) on the last " + FormatNumber(100.0 * f) + " % of the training record" +
+          " s segments, the other states as measured) on the last " + FormatNumber(100.0 * f) +
+          " % of the training record" +
           (selection.rejected_for_divergence > 0
                ? ", after " + std::to_string(selection.rejected_for_divergence) +
                      " better ones diverged in a free run of the training record"

@@ -31,15 +31,15 @@ class SegmentSimulator {
   // The mean over segments, steps and states of the squared error over the state's variance;
   // `diverged` says whether any segment left the bounds. `per_segment` (when given) receives
   // each segment's mean.
-  double Error(const std::vector<const Model*>& models, const std::vector<long>& starts,
-               long steps, bool& diverged, std::vector<double>* per_segment = nullptr) const {
+  double Error(const std::vector<const Model*>& models, const std::vector<long>& starts, long steps,
+               bool& diverged, std::vector<double>* per_segment = nullptr) const {
     const int ns = static_cast<int>(state_vars_.size());
     const int nv = static_cast<int>(data_.names.size());
     diverged = false;
     std::vector<double> segment(starts.size(), 0.0);
     for (size_t first = 0; first < starts.size(); first += Interpreter<double>::kBatch) {
-      const int count = static_cast<int>(
-          std::min<size_t>(Interpreter<double>::kBatch, starts.size() - first));
+      const int count =
+          static_cast<int>(std::min<size_t>(Interpreter<double>::kBatch, starts.size() - first));
       std::vector<std::vector<double>> cols(nv, std::vector<double>(count));
       std::vector<const double*> pointers;
       for (const auto& c : cols) pointers.push_back(c.data());
@@ -169,12 +169,12 @@ Selection SelectModels(const SelectionData& data, const std::vector<StateCandida
             out.last_pass[s][c].score < out.last_pass[s][pick].score)))
         pick = c;
     std::vector<ScoredCandidate> order = out.last_pass[s];
-    std::stable_sort(order.begin(), order.end(),
-                     [&](const ScoredCandidate& a, const ScoredCandidate& b) {
-                       if ((a.index == pick) != (b.index == pick)) return a.index == pick;
-                       return a.score < b.score ||
-                              (a.score == b.score && models[a.index].Size() < models[b.index].Size());
-                     });
+    std::stable_sort(
+        order.begin(), order.end(), [&](const ScoredCandidate& a, const ScoredCandidate& b) {
+          if ((a.index == pick) != (b.index == pick)) return a.index == pick;
+          return a.score < b.score ||
+                 (a.score == b.score && models[a.index].Size() < models[b.index].Size());
+        });
     for (const ScoredCandidate& c : order) ranked[s].push_back(c.index);
     out.standard_errors.push_back(se);
   }

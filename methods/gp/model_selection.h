@@ -46,10 +46,10 @@ struct ScoredCandidate {
 };
 
 struct Selection {
-  std::vector<size_t> chosen;      // per state, into its models
-  std::vector<double> scores;      // per state, the chosen one's short-horizon error
+  std::vector<size_t> chosen;           // per state, into its models
+  std::vector<double> scores;           // per state, the chosen one's short-horizon error
   std::vector<double> standard_errors;  // per state, of the smallest error
-  bool free_run_diverged = false;  // even the last one tried diverged on the training record
+  bool free_run_diverged = false;       // even the last one tried diverged on the training record
   int candidates_scored = 0;
   int rejected_for_divergence = 0;  // combinations that diverged before the chosen one
   std::vector<std::vector<ScoredCandidate>> last_pass;  // per state: each candidate's score

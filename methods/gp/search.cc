@@ -64,8 +64,8 @@ Model Score(const Tree& tree, const Columns<T>& data, Interpreter<T>& interp,
     }
     for (long row = begin; row < begin + count;) {
       while (block + 1 < blocks && block_start(block + 1) <= row) ++block;
-      const long end = block + 1 < blocks ? std::min(begin + count, block_start(block + 1))
-                                          : begin + count;
+      const long end =
+          block + 1 < blocks ? std::min(begin + count, block_start(block + 1)) : begin + count;
       eq[block].Add(x.middleRows(row - begin, end - row),
                     Eigen::Map<const Eigen::VectorXd>(data.target.data() + row, end - row));
       row = end;
@@ -237,11 +237,9 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
       since_improvement = 0;
     } else if (++since_improvement >= opt.stagnation) {
       if (result.restarts >= opt.restarts) {
-        result.stop_reason = "no improvement for " + std::to_string(opt.stagnation) +
-                             " generations" +
-                             (opt.restarts > 0
-                                  ? " after " + std::to_string(result.restarts) + " restarts"
-                                  : "");
+        result.stop_reason =
+            "no improvement for " + std::to_string(opt.stagnation) + " generations" +
+            (opt.restarts > 0 ? " after " + std::to_string(result.restarts) + " restarts" : "");
         break;
       }
       ++result.restarts;  // all but the elites drawn anew in the next generation

@@ -30,7 +30,8 @@ double BlockSse(const NormalEquations& b, const Eigen::MatrixXd& gb, const std::
   for (size_t a = 0; a < cols.size(); ++a) {
     sse -= 2.0 * w(static_cast<Eigen::Index>(a)) * b.xty(cols[a]);
     for (size_t c = 0; c < cols.size(); ++c)
-      sse += w(static_cast<Eigen::Index>(a)) * gb(cols[a], cols[c]) * w(static_cast<Eigen::Index>(c));
+      sse +=
+          w(static_cast<Eigen::Index>(a)) * gb(cols[a], cols[c]) * w(static_cast<Eigen::Index>(c));
   }
   return std::max(0.0, sse);
 }
@@ -107,7 +108,8 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
   if (order.empty()) return fit;
 
   std::vector<Eigen::MatrixXd> block_gram;
-  for (const NormalEquations& b : blocks) block_gram.push_back(b.gram.selfadjointView<Eigen::Lower>());
+  for (const NormalEquations& b : blocks)
+    block_gram.push_back(b.gram.selfadjointView<Eigen::Lower>());
   // Held-out SSE of each prefix of the forward order, per block.
   std::vector<std::vector<double>> sse(order.size() + 1);
   std::vector<int> cols = {0};
@@ -159,7 +161,8 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
   Eigen::VectorXd w;
   if (!Solve(g, total.xty, cols, w)) return fit;
   double rhs_dot = 0.0;
-  for (size_t a = 0; a < cols.size(); ++a) rhs_dot += w(static_cast<Eigen::Index>(a)) * total.xty(cols[a]);
+  for (size_t a = 0; a < cols.size(); ++a)
+    rhs_dot += w(static_cast<Eigen::Index>(a)) * total.xty(cols[a]);
   const double ssr = std::max(0.0, total.yty - rhs_dot);
   fit.bias = w(0);
   for (size_t a = 1; a < cols.size(); ++a) {

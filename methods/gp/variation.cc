@@ -100,8 +100,7 @@ Tree Mutate(Rng& rng, const Tree& tree, const PrimitiveSet& set, int max_depth) 
 namespace {
 
 // `term` added to the sum of `tree`, or in place of one of its terms, within `max_depth`.
-Tree AddOrReplaceTerm(Rng& rng, const Tree& tree, const Tree& term, int term_root,
-                      int max_depth) {
+Tree AddOrReplaceTerm(Rng& rng, const Tree& tree, const Tree& term, int term_root, int max_depth) {
   const int start = term_root + 1 - term[term_root].length;
   Tree sum = tree;
   sum.insert(sum.end(), term.begin() + start, term.begin() + term_root + 1);

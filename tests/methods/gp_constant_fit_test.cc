@@ -11,8 +11,8 @@ namespace {
 
 // abs(x - c) as a postfix tree.
 Tree AbsOfXMinus(double c) {
-  Tree t = {{Op::kVar, 0, 1, 0.0}, {Op::kConst, 0, 1, c}, {Op::kSub, 0, 1, 0.0},
-            {Op::kAbs, 0, 1, 0.0}};
+  Tree t = {
+      {Op::kVar, 0, 1, 0.0}, {Op::kConst, 0, 1, c}, {Op::kSub, 0, 1, 0.0}, {Op::kAbs, 0, 1, 0.0}};
   UpdateLengths(t);
   return t;
 }

@@ -69,8 +69,9 @@ TEST(GpModelSelectionTest, ChoosesTheModelThatSimulatesAndNeverOneThatDiverges) 
 TEST(GpModelSelectionTest, OfTwoThatSimulateAlikeTheSmallerIsChosen) {
   const SelectionData d = Msd();
   // The second adds a term of weight 1e-9: no visible difference in simulation.
-  StateCandidates v{"v", {Linear({{0, -0.2}, {1, -0.1}, {2, 0.1}, {0, 1e-9}}),
-                          Linear({{0, -0.2}, {1, -0.1}, {2, 0.1}})}};
+  StateCandidates v{"v",
+                    {Linear({{0, -0.2}, {1, -0.1}, {2, 0.1}, {0, 1e-9}}),
+                     Linear({{0, -0.2}, {1, -0.1}, {2, 0.1}})}};
   EXPECT_EQ(SelectModels(d, {v}).chosen[0], 1u);
 }
 

@@ -88,9 +88,8 @@ const Odin3DofRun& RunOdin3Dof(const std::vector<gp::Op>& functions) {
     const double err = RelativeError(Expression::Parse(eq).Evaluate(held),
                                      TrueDerivative<Odin3Dof>(held, index++));
     const nlohmann::json& d = model["gp"]["equations"][state];
-    std::cout << "[" << key << "] " << state << "' = " << eq << "\n  held-out error " << err
-              << " (" << d["generations"] << " generations, "
-              << d["stop_reason"] << ")\n";
+    std::cout << "[" << key << "] " << state << "' = " << eq << "\n  held-out error " << err << " ("
+              << d["generations"] << " generations, " << d["stop_reason"] << ")\n";
     run.errors.push_back(err);
     run.equations[state] = eq;
   }

@@ -70,7 +70,9 @@ int Run(int argc, char** argv) {
   nlohmann::json rows = nlohmann::json::array();
   int recovered = 0;
   double total_seconds = 0.0;
-  if (!json) std::printf("| seed | u' | v' | r' | seconds (3 equations) |\n| --- | --- | --- | --- | --- |\n");
+  if (!json)
+    std::printf(
+        "| seed | u' | v' | r' | seconds (3 equations) |\n| --- | --- | --- | --- | --- |\n");
   for (int seed = 1; seed <= seeds; ++seed) {
     const Dataset train = Simulate("random-steps", seconds, noise, static_cast<uint64_t>(seed));
     const Dataset held = Simulate("multisine", 300, 0.0, 1000 + static_cast<uint64_t>(seed));
@@ -105,7 +107,7 @@ int Run(int argc, char** argv) {
     std::fflush(stdout);
   }
   if (json) {
-    std::cout << nlohmann::json{{"noise", noise}, {"operators", operators}, {"preset", preset},
+    std::cout << nlohmann::json{{"noise", noise},   {"operators", operators}, {"preset", preset},
                                 {"within", within}, {"recovered", recovered}, {"seeds", seeds},
                                 {"runs", rows}}
                      .dump(2)
