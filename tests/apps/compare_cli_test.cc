@@ -67,11 +67,14 @@ TEST_F(CompareCliTest, WritesEveryOutputAndAReportWithFigures) {
 TEST_F(CompareCliTest, BaselineMarksWhatGotWorse) {
   const auto first = dir_ / "first";
   ASSERT_EQ(RunUsvid("compare --suite " + suite_ + " --out " + first.string()).exit_code, 0);
-  // Against itself: nothing worse.
+  // Against itself: no fit worse. The fit times may differ: under a sanitizer, with another
+  // test loading the machine, a group can take 1.5 times as long and be marked "slower".
   const auto same =
       RunUsvid("compare --suite " + suite_ + " --baseline " + (first / "results.json").string() +
                " --out " + (dir_ / "same").string());
-  EXPECT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_TRUE(same.exit_code == 0 || same.exit_code == 3) << same.err;
+  for (const auto& g : ReadJsonFile((dir_ / "same" / "regressions.json").string()).at("groups"))
+    EXPECT_NE(g.value("verdict", ""), "worse fit") << g.dump();
   // Against a baseline whose fits were 30 points better: every group whose spread over seeds
   // is smaller than that is worse, and the run exits 3.
   nlohmann::json better = ReadJsonFile((first / "results.json").string());
