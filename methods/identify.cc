@@ -17,6 +17,7 @@
 #include "methods/refit/refit.h"
 #include "methods/sindy/sindy.h"
 #include "preprocessing/delay_estimation.h"
+#include "preprocessing/waterjet_forces.h"
 #include "simulation/segment_error.h"
 #include "simulation/vessel_simulator.h"
 #include "simulators/odin3dof.h"
@@ -232,6 +233,7 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   // Speed and course where only body velocities were logged (the 2-DOF models need them).
   Dataset data = recorded;
   AddSpeedAndCourse(data);
+  if (o.preprocess.forces == "waterjet") AddWaterjetForces(data);
   if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" &&
       o.method != "fossen-ceres" && o.method != "refit" && o.method != "nominal" &&
       o.method != "nomoto")
@@ -299,6 +301,8 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
                           {"preprocessing",
                            {{"delay_s", prepared.delay_s},
                             {"derivative", pre.derivative.Spec()},
+                           {"forces", pre.forces.empty() ? nlohmann::json(nullptr)
+                                                         : nlohmann::json(pre.forces)},
                             {"step_breaks", pre.step_breaks},
                             {"notes", prepared.notes}}}};
   if (o.method == "eb-lr") {

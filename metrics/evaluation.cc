@@ -8,6 +8,7 @@
 #include "methods/expression.h"
 #include "metrics/fit_metrics.h"
 #include "preprocessing/pipeline.h"
+#include "preprocessing/waterjet_forces.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -15,6 +16,12 @@ namespace usvid {
 Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
   Dataset data = recorded;
   AddSpeedAndCourse(data);  // for models in speed and course (2-DOF)
+  // A model identified on the jets' forces is driven by them here too (unless the data carry
+  // them already, as `usvid preprocess --forces waterjet` writes them).
+  if (model.contains("preprocessing") && model["preprocessing"].is_object() &&
+      model["preprocessing"].value("forces", nlohmann::json(nullptr)) == "waterjet" &&
+      !data.Has("tau_x"))
+    AddWaterjetForces(data);
   Evaluation e;
   e.run = FreeRunModel(model, data);
   nlohmann::json channels = nlohmann::json::object();

@@ -24,6 +24,10 @@ struct PreprocessOptions {
   double delay_s = 0.0;
   bool estimate_delay = false;
   double max_delay_s = 2.0;
+  // "waterjet": the jets' forces added from their states before anything else
+  // (waterjet_forces.h); empty: none. Applied by the callers that read the raw record
+  // (identify, preprocess, evaluate), not by Preprocess().
+  std::string forces;
 };
 
 struct PreparedData {

@@ -10,6 +10,7 @@
 #include "apps/usvid/preprocess_options.h"
 #include "core/csv_dataset.h"
 #include "preprocessing/pipeline.h"
+#include "preprocessing/waterjet_forces.h"
 
 namespace usvid {
 namespace {
@@ -22,7 +23,8 @@ struct PreprocessCommandOptions {
 };
 
 void RunPreprocess(const PreprocessCommandOptions& o) {
-  const Dataset data = ReadDatasetCsv(o.data);
+  Dataset data = ReadDatasetCsv(o.data);
+  if (o.flags.forces == "waterjet") AddWaterjetForces(data);
   const PreparedData prepared = Preprocess(data, o.states, o.inputs, o.flags.Options());
   for (const std::string& note : prepared.notes) std::cerr << "usvid preprocess: " << note << '\n';
   WriteDatasetCsv(o.out, prepared.data);

@@ -1,5 +1,5 @@
 // The preprocessing flags shared by `usvid preprocess` and `usvid identify`:
-// --rate, --interpolation, --derivative, --delay, --max-delay, --no-step-breaks.
+// --rate, --interpolation, --derivative, --delay, --max-delay, --no-step-breaks, --forces.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -18,6 +18,7 @@ struct PreprocessFlags {
   std::string delay = "0";
   double max_delay_s = 2.0;
   bool no_step_breaks = false;
+  std::string forces;  // "waterjet": jet forces from the jet states (preprocessing/waterjet_forces.h)
 
   void Add(CLI::App& cmd) {
     cmd.add_option("--rate", rate_hz, "Resample to this rate [Hz] (0: the data's own)");
@@ -29,6 +30,10 @@ struct PreprocessFlags {
     cmd.add_option("--max-delay", max_delay_s, "Longest delay --delay auto considers [s]");
     cmd.add_flag("--no-step-breaks", no_step_breaks,
                  "Do not let derivatives jump where the inputs step");
+    cmd.add_option("--forces", forces,
+                   "waterjet: add the jets' forces tau_x, tau_y, tau_n from the measured rpm, "
+                   "nozzle_angle and bucket_position, for --inputs to name")
+        ->check(CLI::IsMember({"waterjet"}));
   }
 
   PreprocessOptions Options() const {
@@ -39,6 +44,7 @@ struct PreprocessFlags {
     o.derivative = DerivativeMethod::Parse(derivative);
     o.step_breaks = !no_step_breaks;
     o.max_delay_s = max_delay_s;
+    o.forces = forces;
     if (delay == "auto") {
       o.estimate_delay = true;
     } else {

@@ -117,6 +117,32 @@ TEST_F(IdentifyCliTest, DefaultsSayWhichCandidateAndPresetReportIsTableThreeOne)
               HasSubstr("no validation part"));
 }
 
+// --forces waterjet: a model identified on the jets' forces (derived from rpm, nozzle angle and
+// bucket) says so, and `evaluate` drives its free run with the same forces from the test log.
+TEST_F(IdentifyCliTest, WaterjetForcesFromTheJetStatesDriveIdentifyAndEvaluate) {
+  const auto train = (dir_ / "hs.csv").string(), test = (dir_ / "hs_test.csv").string();
+  const auto model = (dir_ / "hs.json").string();
+  for (const auto& [file, seed] : {std::pair{train, 1}, std::pair{test, 2}})
+    ASSERT_EQ(RunUsvid("simulate --vessel odin-hs --maneuver random-steps --duration 120 --seed " +
+                       std::to_string(seed) + " --out " + file)
+                  .exit_code,
+              0);
+  const auto r = RunUsvid("identify --method gp --vessel odin-hs --data " + train +
+                          " --states u,v,r --inputs tau_x,tau_y,tau_n --forces waterjet "
+                          "--population 200 --generations 5 --out " +
+                          model);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = ReadJsonFile(model);
+  EXPECT_EQ(m.at("preprocessing").at("forces"), "waterjet");
+  EXPECT_EQ(m.at("inputs"), nlohmann::json({"tau_x", "tau_y", "tau_n"}));
+  const auto e = RunUsvid("evaluate --model " + model + " --data " + test + " --out " +
+                          (dir_ / "ev").string());
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const nlohmann::json metrics = ReadJsonFile((dir_ / "ev" / "metrics.json").string());
+  for (const char* c : {"u", "v", "r"})
+    EXPECT_TRUE(metrics.at("channels").at(c).at("fit_percent").is_number()) << c;
+}
+
 // Bad options: exit 2, the option named, no model written.
 TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
   const auto out = (dir_ / "bad.json").string();
@@ -132,6 +158,8 @@ TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
       {"--method gp --vessel msd --validation-fraction -0.1", "--validation-fraction"},
       {"--method gp --vessel msd --constant-iterations -1", "--constant-iterations"},
       {"--method gp --vessel msd --ols-threshold 1.5", "--ols-threshold"},
+      {"--method gp --states v --inputs tau_x --forces waterjet",
+       "the data lack rpm, nozzle_angle, bucket_position"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = RunUsvid("identify " + args + " --data " + data_ + " --out " + out);
