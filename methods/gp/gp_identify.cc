@@ -128,7 +128,7 @@ GpIdentification IdentifyWithGp(
     nlohmann::json chosen = {{"candidate", CandidateJson(candidate, all.names)}};
     if (select) {
       nlohmann::json scored = nlohmann::json::array();
-      for (const ScoredCandidate& c : selection.last_pass[i]) {
+      for (const ScoredCandidate& c : selection.candidate_scores[i]) {
         nlohmann::json j = CandidateJson(candidates[i].models[c.index], all.names);
         j["short_horizon_error"] = c.score;
         scored.push_back(j);

@@ -135,7 +135,7 @@ Selection SelectModels(const SelectionData& data, const std::vector<StateCandida
   for (long s = data.validation_begin; s + steps <= rows - 1; s += steps) starts.push_back(s);
 
   Selection out;
-  out.last_pass.resize(states.size());
+  out.candidate_scores.resize(states.size());
   // Each state's candidates on their own: that state integrated, the others as measured, so a
   // wrong equation of one state cannot make a wrong one of another look right.
   std::vector<std::vector<size_t>> ranked(states.size());
@@ -146,29 +146,29 @@ Selection SelectModels(const SelectionData& data, const std::vector<StateCandida
     for (size_t c = 0; c < models.size(); ++c) {
       bool diverged = false;
       const double e = sim.Error({&models[c]}, starts, steps, diverged, &segments[c]);
-      out.last_pass[s].push_back({c, std::isfinite(e) ? e : INFINITY});
+      out.candidate_scores[s].push_back({c, std::isfinite(e) ? e : INFINITY});
       ++out.candidates_scored;
     }
     // The one-standard-error rule: the smallest candidate within one standard error (over
     // segments) of the smallest error comes first, then the rest by error.
     size_t best = 0;
     for (size_t c = 1; c < models.size(); ++c)
-      if (out.last_pass[s][c].score < out.last_pass[s][best].score) best = c;
+      if (out.candidate_scores[s][c].score < out.candidate_scores[s][best].score) best = c;
     double se = 0.0;
     const std::vector<double>& e = segments[best];
-    if (e.size() > 1 && std::isfinite(out.last_pass[s][best].score)) {
-      const double mean = out.last_pass[s][best].score;
+    if (e.size() > 1 && std::isfinite(out.candidate_scores[s][best].score)) {
+      const double mean = out.candidate_scores[s][best].score;
       for (double x : e) se += (x - mean) * (x - mean);
       se = std::sqrt(se / static_cast<double>(e.size() - 1) / static_cast<double>(e.size()));
     }
     size_t pick = best;
     for (size_t c = 0; c < models.size(); ++c)
-      if (out.last_pass[s][c].score <= out.last_pass[s][best].score + se &&
+      if (out.candidate_scores[s][c].score <= out.candidate_scores[s][best].score + se &&
           (models[c].Size() < models[pick].Size() ||
            (models[c].Size() == models[pick].Size() &&
-            out.last_pass[s][c].score < out.last_pass[s][pick].score)))
+            out.candidate_scores[s][c].score < out.candidate_scores[s][pick].score)))
         pick = c;
-    std::vector<ScoredCandidate> order = out.last_pass[s];
+    std::vector<ScoredCandidate> order = out.candidate_scores[s];
     std::stable_sort(
         order.begin(), order.end(), [&](const ScoredCandidate& a, const ScoredCandidate& b) {
           if ((a.index == pick) != (b.index == pick)) return a.index == pick;
@@ -215,7 +215,7 @@ Selection SelectModels(const SelectionData& data, const std::vector<StateCandida
     ++out.rejected_for_divergence;
   }
   for (size_t s = 0; s < states.size(); ++s)
-    out.scores.push_back(out.last_pass[s][out.chosen[s]].score);
+    out.scores.push_back(out.candidate_scores[s][out.chosen[s]].score);
   return out;
 }
 

@@ -52,7 +52,7 @@ struct Selection {
   bool free_run_diverged = false;       // even the last one tried diverged on the training record
   int candidates_scored = 0;
   int rejected_for_divergence = 0;  // combinations that diverged before the chosen one
-  std::vector<std::vector<ScoredCandidate>> last_pass;  // per state: each candidate's score
+  std::vector<std::vector<ScoredCandidate>> candidate_scores;  // per state: each candidate's score
 };
 
 // Throws InputError when a state is not among the variables or the validation part is shorter

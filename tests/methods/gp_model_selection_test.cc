@@ -62,8 +62,8 @@ TEST(GpModelSelectionTest, ChoosesTheModelThatSimulatesAndNeverOneThatDiverges) 
   EXPECT_FALSE(s.free_run_diverged);
   // The true model simulates the validation part to 0.1 % of its variance (x is held at its
   // sampled value within a step: the rest).
-  EXPECT_LT(s.last_pass[0][2].score, 1e-3);
-  EXPECT_GT(s.last_pass[0][0].score, 100 * s.last_pass[0][2].score);
+  EXPECT_LT(s.candidate_scores[0][2].score, 1e-3);
+  EXPECT_GT(s.candidate_scores[0][0].score, 100 * s.candidate_scores[0][2].score);
 }
 
 TEST(GpModelSelectionTest, OfTwoThatSimulateAlikeTheSmallerIsChosen) {
