@@ -73,7 +73,8 @@ TEST_F(CompareCliTest, BaselineMarksWhatGotWorse) {
       RunUsvid("compare --suite " + suite_ + " --baseline " + (first / "results.json").string() +
                " --out " + (dir_ / "same").string());
   EXPECT_TRUE(same.exit_code == 0 || same.exit_code == 3) << same.err;
-  for (const auto& g : ReadJsonFile((dir_ / "same" / "regressions.json").string()).at("groups"))
+  const nlohmann::json same_groups = ReadJsonFile((dir_ / "same" / "regressions.json").string());
+  for (const auto& g : same_groups.at("groups"))
     EXPECT_NE(g.value("verdict", ""), "worse fit") << g.dump();
   // Against a baseline whose fits were 30 points better: every group whose spread over seeds
   // is smaller than that is worse, and the run exits 3.
