@@ -233,7 +233,7 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   // Speed and course where only body velocities were logged (the 2-DOF models need them).
   Dataset data = recorded;
   AddSpeedAndCourse(data);
-  if (o.preprocess.forces == "waterjet") AddWaterjetForces(data);
+  AddForces(data, o.preprocess.forces);
   if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" &&
       o.method != "fossen-ceres" && o.method != "refit" && o.method != "nominal" &&
       o.method != "nomoto")

@@ -19,9 +19,9 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
   // A model identified on the jets' forces is driven by them here too (unless the data carry
   // them already, as `usvid preprocess --forces waterjet` writes them).
   if (model.contains("preprocessing") && model["preprocessing"].is_object() &&
-      model["preprocessing"].value("forces", nlohmann::json(nullptr)) == "waterjet" &&
+      model["preprocessing"].contains("forces") && model["preprocessing"]["forces"].is_string() &&
       !data.Has("tau_x"))
-    AddWaterjetForces(data);
+    AddForces(data, model["preprocessing"]["forces"].get<std::string>());
   Evaluation e;
   e.run = FreeRunModel(model, data);
   nlohmann::json channels = nlohmann::json::object();

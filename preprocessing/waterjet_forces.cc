@@ -43,4 +43,10 @@ void AddWaterjetForces(Dataset& data) {
   data.Set("tau_n", fn, sampled);
 }
 
+void AddForces(Dataset& data, const std::string& map) {
+  if (map.empty()) return;
+  if (map != "waterjet") throw InputError("--forces '" + map + "': unknown map (known: waterjet)");
+  AddWaterjetForces(data);
+}
+
 }  // namespace usvid

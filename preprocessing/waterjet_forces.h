@@ -21,12 +21,16 @@ namespace usvid {
 
 // The channels the map reads: shaft speed [rev/min], nozzle angle [rad], bucket [-1, 1].
 inline const std::array<std::string, 3> kWaterjetStateChannels = {"rpm", "nozzle_angle",
-                                                                 "bucket_position"};
+                                                                  "bucket_position"};
 // The channels it writes.
 inline const std::array<std::string, 3> kWaterjetForceChannels = {"tau_x", "tau_y", "tau_n"};
 
 // Adds tau_x, tau_y, tau_n, sampled where all three jet states are. Throws InputError naming the
 // jet-state channels the data lack, or a force channel the data already have.
 void AddWaterjetForces(Dataset& data);
+
+// The input map `--forces` names: "" adds nothing, "waterjet" is AddWaterjetForces. Throws
+// InputError for another name.
+void AddForces(Dataset& data, const std::string& map);
 
 }  // namespace usvid

@@ -24,7 +24,7 @@ struct PreprocessCommandOptions {
 
 void RunPreprocess(const PreprocessCommandOptions& o) {
   Dataset data = ReadDatasetCsv(o.data);
-  if (o.flags.forces == "waterjet") AddWaterjetForces(data);
+  AddForces(data, o.flags.forces);
   const PreparedData prepared = Preprocess(data, o.states, o.inputs, o.flags.Options());
   for (const std::string& note : prepared.notes) std::cerr << "usvid preprocess: " << note << '\n';
   WriteDatasetCsv(o.out, prepared.data);

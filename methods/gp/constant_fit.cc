@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "methods/expression.h"
+
 namespace usvid::gp {
 namespace {
 
@@ -45,7 +47,7 @@ class TreeResidual {
 
   template <typename T>
   bool operator()(T const* const* parameters, T* residuals) const {
-    using std::abs, std::cos, std::exp, std::sin, std::sqrt, std::tanh;
+    using std::abs, std::cos, std::sin, std::tanh;
     const T* p = parameters[0];
     const size_t nc = constants_.size();
     std::vector<T> constant(tree_.size(), T(0.0));
@@ -80,8 +82,8 @@ class TreeResidual {
           case Op::kMul:
             v[i] = *a * *b;
             break;
-          case Op::kDiv:  // protected, as the interpreter
-            v[i] = abs(*b) < T(1e-12) ? *a : *a / *b;
+          case Op::kDiv:
+            v[i] = ProtectedDivide(*a, *b);
             break;
           case Op::kAbs:
             v[i] = abs(*a);
@@ -96,10 +98,10 @@ class TreeResidual {
             v[i] = cos(*a);
             break;
           case Op::kExp:
-            v[i] = *a < T(50.0) ? exp(*a) : exp(T(50.0));
+            v[i] = ProtectedExp(*a);
             break;
           case Op::kSqrt:
-            v[i] = sqrt(abs(*a));
+            v[i] = ProtectedSqrt(*a);
             break;
         }
       }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -85,10 +86,9 @@ GpIdentification IdentifyWithGp(
     const GpResult& r = results.back();
     out.node_evaluations += r.node_evaluations;
     StateCandidates c{state, {r.best}};
+    std::set<std::string> seen = {r.best.Equation(all.names)};
     for (const ParetoPoint& p : r.pareto)
-      if (std::none_of(c.models.begin(), c.models.end(),
-                       [&](const Model& m) { return m.Equation(all.names) == p.equation; }))
-        c.models.push_back(p.model);
+      if (seen.insert(p.equation).second) c.models.push_back(p.model);
     candidates.push_back(std::move(c));
   }
 

@@ -63,11 +63,11 @@ class SegmentSimulator {
           }
         }
       };
+      Eigen::ArrayXXd hh(ns, count);  // each segment's step, for every state
       for (long k = 0; k < steps; ++k) {
-        Eigen::ArrayXd h(count);
         for (int j = 0; j < count; ++j)
-          h(j) = data_.t(starts[first + j] + k + 1) - data_.t(starts[first + j] + k);
-        const Eigen::ArrayXXd hh = h.transpose().replicate(ns, 1);
+          hh.col(j).setConstant(data_.t(starts[first + j] + k + 1) -
+                                data_.t(starts[first + j] + k));
         derivative(k, x, k1);
         derivative(k, x + 0.5 * hh * k1, k2);
         derivative(k, x + 0.5 * hh * k2, k3);

@@ -38,6 +38,27 @@ void NormalEquations::Add(const Eigen::Ref<const Eigen::MatrixXd>& x,
   rows += x.rows();
 }
 
+NormalEquations& NormalEquations::operator+=(const NormalEquations& other) {
+  gram += other.gram;
+  xty += other.xty;
+  yty += other.yty;
+  rows += other.rows;
+  return *this;
+}
+
+bool SolveColumns(const Eigen::MatrixXd& gram, const Eigen::VectorXd& xty,
+                  const std::vector<int>& cols, Eigen::VectorXd& w) {
+  const int m = static_cast<int>(cols.size());
+  Eigen::MatrixXd sub(m, m);
+  Eigen::VectorXd rhs(m);
+  for (int a = 0; a < m; ++a) {
+    rhs(a) = xty(cols[a]);
+    for (int b = 0; b < m; ++b) sub(a, b) = gram(cols[a], cols[b]);
+  }
+  w = Eigen::LDLT<Eigen::MatrixXd>(sub).solve(rhs);
+  return w.allFinite();
+}
+
 OlsFit FitOls(const NormalEquations& eq, double threshold) {
   OlsFit fit;
   const int k = static_cast<int>(eq.gram.rows()) - 1;
@@ -80,15 +101,10 @@ OlsFit FitOls(const NormalEquations& eq, double threshold) {
     if (independent[j] && (err[j] >= threshold || j == best)) cols.push_back(j);
 
   const int m = static_cast<int>(cols.size());
-  Eigen::MatrixXd sub(m, m);
+  Eigen::VectorXd w;
+  if (!SolveColumns(g, eq.xty, cols, w)) return fit;
   Eigen::VectorXd rhs(m);
-  for (int a = 0; a < m; ++a) {
-    rhs(a) = eq.xty(cols[a]);
-    for (int b = 0; b < m; ++b) sub(a, b) = g(cols[a], cols[b]);
-  }
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(sub);
-  const Eigen::VectorXd w = ldlt.solve(rhs);
-  if (!w.allFinite()) return fit;
+  for (int a = 0; a < m; ++a) rhs(a) = eq.xty(cols[a]);
   const double ssr = std::max(0.0, eq.yty - w.dot(rhs));
   fit.bias = w(0);
   for (int a = 1; a < m; ++a) {

@@ -29,7 +29,14 @@ struct NormalEquations {
       : gram(Eigen::MatrixXd::Zero(terms + 1, terms + 1)), xty(Eigen::VectorXd::Zero(terms + 1)) {}
   // Adds `count` rows: term values column-major in x (count x k), targets in y.
   void Add(const Eigen::Ref<const Eigen::MatrixXd>& x, const Eigen::Ref<const Eigen::VectorXd>& y);
+  // Adds the rows of another accumulation of the same terms.
+  NormalEquations& operator+=(const NormalEquations& other);
 };
+
+// The weights of the columns `cols` of the full (symmetric) Gram matrix `gram` against `xty`
+// (LDLT); false when they are not finite.
+bool SolveColumns(const Eigen::MatrixXd& gram, const Eigen::VectorXd& xty,
+                  const std::vector<int>& cols, Eigen::VectorXd& w);
 
 struct OlsFit {
   std::vector<int> kept;        // indices into the term list, in order

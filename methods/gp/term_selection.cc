@@ -1,27 +1,10 @@
 #include "methods/gp/term_selection.h"
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 
 namespace usvid::gp {
 namespace {
-
-// Solves the normal equations restricted to `cols`; false when they are singular.
-bool Solve(const Eigen::MatrixXd& g, const Eigen::VectorXd& xty, const std::vector<int>& cols,
-           Eigen::VectorXd& w) {
-  const int m = static_cast<int>(cols.size());
-  Eigen::MatrixXd sub(m, m);
-  Eigen::VectorXd rhs(m);
-  for (int a = 0; a < m; ++a) {
-    rhs(a) = xty(cols[a]);
-    for (int b = 0; b < m; ++b) sub(a, b) = g(cols[a], cols[b]);
-  }
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(sub);
-  if (ldlt.info() != Eigen::Success) return false;
-  w = ldlt.solve(rhs);
-  return w.allFinite();
-}
 
 // y_b'y_b - 2 w' X_b'y_b + w' X_b'X_b w over the columns `cols`.
 double BlockSse(const NormalEquations& b, const Eigen::MatrixXd& gb, const std::vector<int>& cols,
@@ -90,12 +73,7 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
   OlsFit fit;
   if (blocks.empty()) return fit;
   NormalEquations total = blocks[0];
-  for (size_t b = 1; b < blocks.size(); ++b) {
-    total.gram += blocks[b].gram;
-    total.xty += blocks[b].xty;
-    total.yty += blocks[b].yty;
-    total.rows += blocks[b].rows;
-  }
+  for (size_t b = 1; b < blocks.size(); ++b) total += blocks[b];
   const Eigen::MatrixXd g = total.gram.selfadjointView<Eigen::Lower>();
   if (!g.allFinite() || !total.xty.allFinite() || !std::isfinite(total.yty) || total.rows < 2)
     return fit;
@@ -125,7 +103,7 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
       Eigen::VectorXd w;
       if (blocks[b].rows == 0) {
         sse[m].push_back(0.0);
-      } else if (Solve(g - block_gram[b], total.xty - blocks[b].xty, cols, w)) {
+      } else if (SolveColumns(g - block_gram[b], total.xty - blocks[b].xty, cols, w)) {
         sse[m].push_back(BlockSse(blocks[b], block_gram[b], cols, w));
       } else {
         sse[m].push_back(INFINITY);
@@ -159,7 +137,7 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
   cols = {0};
   for (const auto& [j, _] : kept) cols.push_back(j);
   Eigen::VectorXd w;
-  if (!Solve(g, total.xty, cols, w)) return fit;
+  if (!SolveColumns(g, total.xty, cols, w)) return fit;
   double rhs_dot = 0.0;
   for (size_t a = 0; a < cols.size(); ++a)
     rhs_dot += w(static_cast<Eigen::Index>(a)) * total.xty(cols[a]);
