@@ -13,6 +13,7 @@
 
 #include "bench/fixtures.h"
 #include "methods/fossen_ceres/fossen_fit.h"
+#include "methods/fossen_ceres/fossen_models.h"
 
 namespace usvid {
 namespace {
@@ -23,7 +24,7 @@ using bench::OdinPrepared;
 void BM_FossenEquationError(benchmark::State& state) {
   const PreparedData& data = OdinPrepared(state.range(0));
   fossen::FossenFit fit;
-  for (auto _ : state) fit = fossen::FitEquationError(data, {});
+  for (auto _ : state) fit = fossen::FitEquationErrorFor<fossen::Odin3DofModel>(data, {});
   state.counters["samples"] = static_cast<double>(data.data.rows());
   state.counters["iterations"] = fit.iterations;  // the cost per iteration is what grows with N
   state.SetComplexityN(state.range(0));
@@ -38,18 +39,20 @@ BENCHMARK(BM_FossenEquationError)
     ->Unit(benchmark::kMillisecond);
 
 void BM_FossenMultipleShooting(benchmark::State& state) {
-  const auto start = fossen::FitEquationError(OdinPrepared(), {}).params;
+  const auto start = fossen::FitEquationErrorFor<fossen::Odin3DofModel>(OdinPrepared(), {}).params;
   fossen::FossenFit fit;
-  for (auto _ : state) fit = fossen::FitSimulationError(OdinPrepared(), start, {});
+  for (auto _ : state)
+    fit = fossen::FitSimulationErrorFor<fossen::Odin3DofModel>(OdinPrepared(), start, {});
   state.counters["samples"] = static_cast<double>(OdinPrepared().data.rows());
   state.counters["iterations"] = fit.iterations;
 }
 BENCHMARK(BM_FossenMultipleShooting)->Unit(benchmark::kMillisecond);
 
 void BM_Fossen12ParameterShooting(benchmark::State& state, const PreparedData& (*data)()) {
-  const auto start = fossen::FitWaterjetEquationError(data(), {}).params;
-  fossen::WaterjetFit fit;
-  for (auto _ : state) fit = fossen::FitWaterjetSimulationError(data(), start, {});
+  const auto start = fossen::FitEquationErrorFor<fossen::WaterjetModel>(data(), {}).params;
+  fossen::BasicFossenFit<13> fit;
+  for (auto _ : state)
+    fit = fossen::FitSimulationErrorFor<fossen::WaterjetModel>(data(), start, {});
   state.counters["samples"] = static_cast<double>(data().data.rows());
   state.counters["iterations"] = fit.iterations;
   double worst = 0.0;

@@ -11,6 +11,7 @@
 #include "methods/eb_lr/eb_lr.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
+#include "methods/fossen_ceres/jet_force_model.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/gp/term_selection.h"
 #include "methods/nomoto/nomoto.h"
@@ -31,37 +32,24 @@ void Log(const Logger& log, const std::string& line) {
   if (log) log(line);
 }
 
-// fossen-ceres: a parametric Fossen 3-DOF model (odin3dof's, or the same driven through the
-// waterjet or the rudder-propeller input map), equation error then multiple shooting.
+// fossen-ceres: a parametric Fossen 3-DOF model (odin3dof's, the same driven through the
+// waterjet or the rudder-propeller input map, or the high-speed form on the jets' forces),
+// equation error then multiple shooting.
 template <typename Model>
 nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
                               const PreparedData& prepared, const Logger& log) {
   constexpr bool kOdin3Dof = std::is_same_v<Model, fossen::Odin3DofModel>;
-  constexpr bool kWaterjet = std::is_same_v<Model, fossen::WaterjetModel>;
   fossen::FossenOptions fo;
   fo.segment_s = o.segment_s > 0 ? o.segment_s : 10.0;
   fo.robust = o.robust;
   // One thread for Ceres: its parallel evaluation sums the cost in a thread-dependent order, and
   // the last digits of the fit would differ between 1 and 2 threads.
   fo.threads = 1;
-  auto fit_equation = [&] {
-    if constexpr (kOdin3Dof)
-      return fossen::FitEquationError(prepared, fo);
-    else if constexpr (kWaterjet)
-      return fossen::FitWaterjetEquationError(prepared, fo);
-    else
-      return fossen::FitRudderEquationError(prepared, fo);
-  };
-  const auto eq = fit_equation();
+  const auto eq = fossen::FitEquationErrorFor<Model>(prepared, fo);
   Log(log, "equation-error fit: " + eq.termination);
   auto fit = eq;
   if (o.fossen_mode == "simulation") {
-    if constexpr (kOdin3Dof)
-      fit = fossen::FitSimulationError(prepared, eq.params, fo);
-    else if constexpr (kWaterjet)
-      fit = fossen::FitWaterjetSimulationError(prepared, eq.params, fo);
-    else
-      fit = fossen::FitRudderSimulationError(prepared, eq.params, fo);
+    fit = fossen::FitSimulationErrorFor<Model>(prepared, eq.params, fo);
     Log(log, "simulation-error fit (multiple shooting): " + fit.termination);
   }
   nlohmann::json params = nlohmann::json::object(), sd = nlohmann::json::object(),
@@ -72,13 +60,7 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
     sd[name] = fit.sd[i];
     eq_params[name] = eq.params[i];
   }
-  nlohmann::json equations;
-  if constexpr (kOdin3Dof)
-    equations = fossen::Equations(fit.params);
-  else if constexpr (kWaterjet)
-    equations = fossen::WaterjetEquations(fit.params);
-  else
-    equations = fossen::RudderEquations(fit.params);
+  const nlohmann::json equations = fossen::EquationsFor<Model>(fit.params);
   nlohmann::json refined = nullptr;
   if (!kOdin3Dof && prepared.delay_estimate) {
     Log(log,
@@ -252,7 +234,9 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
       no_equation.insert("x");
       states = StatesExcept(info, no_equation);
     }
-    if (inputs.empty()) inputs = info.inputs;
+    // With a force map, the forces it derives stand in for the commands.
+    if (inputs.empty())
+      inputs = o.preprocess.forces.empty() ? info.inputs : ForceChannels(o.preprocess.forces);
   }
   if (states.empty() || inputs.empty())
     throw InputError("identify: give --vessel, or --states and --inputs");
@@ -279,32 +263,35 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
       throw InputError("--method eb-lr: needs --states SPEED,RATE and --inputs THRUST,YAW");
   }
   const std::vector<std::string> kForces = {"tau_x", "tau_y", "tau_n"},
+                                 kJetForces = {"tau_x", "tau_y", "tau_n", "jet_flow"},
                                  kWaterjets = {"throttle", "nozzle", "bucket"},
                                  kRudder = {"delta", "rev"};
   if (o.method == "fossen-ceres" &&
       (states != std::vector<std::string>{"u", "v", "r"} ||
-       (inputs != kForces && inputs != kWaterjets && inputs != kRudder)))
+       (inputs != kForces && inputs != kJetForces && inputs != kWaterjets && inputs != kRudder)))
     throw InputError(
         "--method fossen-ceres: fits the Fossen 3-DOF model, states u,v,r with inputs "
-        "tau_x,tau_y,tau_n (--vessel odin3dof), throttle,nozzle,bucket through a waterjet map "
-        "(--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel kvlcc2)");
+        "tau_x,tau_y,tau_n (--vessel odin3dof), tau_x,tau_y,tau_n,jet_flow with speed-dependent "
+        "damping (--vessel odin-hs --forces waterjet), throttle,nozzle,bucket through a "
+        "waterjet map (--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel "
+        "kvlcc2)");
   const gp::GpIdentifyOptions gpo = GpOptionsFor(o);
   const PreprocessOptions& pre = o.preprocess;
   const PreparedData prepared = Preprocess(data, variables, inputs, pre);
   for (const std::string& note : prepared.notes) Log(log, note);
-  nlohmann::json model = {{"method", o.method},
-                          {"vessel", o.vessel},
-                          {"states", states},
-                          {"variables", variables},
-                          {"inputs", inputs},
-                          {"seed", o.seed},
-                          {"preprocessing",
-                           {{"delay_s", prepared.delay_s},
-                            {"derivative", pre.derivative.Spec()},
-                           {"forces", pre.forces.empty() ? nlohmann::json(nullptr)
-                                                         : nlohmann::json(pre.forces)},
-                            {"step_breaks", pre.step_breaks},
-                            {"notes", prepared.notes}}}};
+  nlohmann::json model = {
+      {"method", o.method},
+      {"vessel", o.vessel},
+      {"states", states},
+      {"variables", variables},
+      {"inputs", inputs},
+      {"seed", o.seed},
+      {"preprocessing",
+       {{"delay_s", prepared.delay_s},
+        {"derivative", pre.derivative.Spec()},
+        {"forces", pre.forces.empty() ? nlohmann::json(nullptr) : nlohmann::json(pre.forces)},
+        {"step_breaks", pre.step_breaks},
+        {"notes", prepared.notes}}}};
   if (o.method == "eb-lr") {
     const eb_lr::EbLrIdentification id =
         eb_lr::IdentifyWithEbLr(data, states[0], states[1], inputs[0], inputs[1], {});
@@ -312,7 +299,9 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     model["equations"] = id.equations;
     model["eb_lr"] = id.details;
   } else if (o.method == "fossen-ceres") {
-    if (inputs == kWaterjets)
+    if (inputs == kJetForces)
+      model.update(IdentifyFossen<fossen::JetForceModel>(o, data, prepared, log));
+    else if (inputs == kWaterjets)
       model.update(IdentifyFossen<fossen::WaterjetModel>(o, data, prepared, log));
     else if (inputs == kRudder)
       model.update(IdentifyFossen<fossen::RudderModel>(o, data, prepared, log));

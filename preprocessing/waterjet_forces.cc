@@ -27,7 +27,7 @@ void AddWaterjetForces(Dataset& data) {
   const Eigen::Array<bool, Eigen::Dynamic, 1> sampled =
       rpm.sampled && nozzle.sampled && bucket.sampled;
   const Eigen::Index n = data.rows();
-  Eigen::VectorXd fx = Eigen::VectorXd::Constant(n, NAN), fy = fx, fn = fx;
+  Eigen::VectorXd fx = Eigen::VectorXd::Constant(n, NAN), fy = fx, fn = fx, flow = fx;
   for (Eigen::Index k = 0; k < n; ++k) {
     if (!sampled(k)) continue;
     const double q = p[OdinHs::kJetFlowPerRpm] * rpm.values(k);
@@ -37,16 +37,30 @@ void AddWaterjetForces(Dataset& data) {
     fx(k) = OdinHs::SurgeThrust(rpm.values(k), 0.0, bucket.values(k), nozzle.values(k), p);
     fy(k) = -momentum * std::sin(nozzle.values(k));
     fn(k) = OdinHs::kJetX * fy(k);
+    flow(k) = 2.0 * q;
   }
   data.Set("tau_x", fx, sampled);
   data.Set("tau_y", fy, sampled);
   data.Set("tau_n", fn, sampled);
+  data.Set("jet_flow", flow, sampled);
 }
 
+namespace {
+void CheckMap(const std::string& map) {
+  if (!map.empty() && map != "waterjet")
+    throw InputError("--forces '" + map + "': unknown map (known: waterjet)");
+}
+}  // namespace
+
 void AddForces(Dataset& data, const std::string& map) {
-  if (map.empty()) return;
-  if (map != "waterjet") throw InputError("--forces '" + map + "': unknown map (known: waterjet)");
-  AddWaterjetForces(data);
+  CheckMap(map);
+  if (!map.empty()) AddWaterjetForces(data);
+}
+
+std::vector<std::string> ForceChannels(const std::string& map) {
+  CheckMap(map);
+  if (map.empty()) return {};
+  return {kWaterjetForceChannels.begin(), kWaterjetForceChannels.end()};
 }
 
 }  // namespace usvid

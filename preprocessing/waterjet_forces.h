@@ -4,16 +4,17 @@
 //            g(b) = b ((1 + eta) + (1 - eta) tanh(b / 0.05)) / 2  (1 ahead, -eta astern),
 //   tau_x = 2 rho Q g(b) V_j cos(delta)  [N],  tau_y = -2 rho Q V_j sin(delta)  [N],
 //   tau_n = x_j tau_y  [N m]  (the jets at x_j = -3.82 m, side by side: their surge moments
-//   cancel).
+//   cancel),  jet_flow = 2 Q  [m^3/s].
 // This is the jets' momentum thrust, what the commands cannot give: thrust goes with rpm^2, its
 // direction with the nozzle angle, and the commands reach the jets through a transport delay and
 // slew-limited actuators. The inlet momentum (-rho Q ((1 - w) u_r, v_r + x_j r) per jet) depends
-// on the velocities and is left to the hull model. Parameters: odin-hs's
-// (simulators/odin_hs.h, docs/vessels/odin-hs.md).
+// on the velocities and is left to the hull model, which jet_flow lets it write (Q u, Q v, Q r).
+// Parameters: odin-hs's (simulators/odin_hs.h, docs/vessels/odin-hs.md).
 #pragma once
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "core/dataset.h"
 
@@ -23,14 +24,17 @@ namespace usvid {
 inline const std::array<std::string, 3> kWaterjetStateChannels = {"rpm", "nozzle_angle",
                                                                   "bucket_position"};
 // The channels it writes.
-inline const std::array<std::string, 3> kWaterjetForceChannels = {"tau_x", "tau_y", "tau_n"};
+inline const std::array<std::string, 4> kWaterjetForceChannels = {"tau_x", "tau_y", "tau_n",
+                                                                  "jet_flow"};
 
-// Adds tau_x, tau_y, tau_n, sampled where all three jet states are. Throws InputError naming the
-// jet-state channels the data lack, or a force channel the data already have.
+// Adds tau_x, tau_y, tau_n, jet_flow, sampled where all three jet states are. Throws InputError
+// naming the jet-state channels the data lack, or a force channel the data already have.
 void AddWaterjetForces(Dataset& data);
 
 // The input map `--forces` names: "" adds nothing, "waterjet" is AddWaterjetForces. Throws
 // InputError for another name.
 void AddForces(Dataset& data, const std::string& map);
+// The channels the map `map` writes (empty for ""); throws InputError as AddForces.
+std::vector<std::string> ForceChannels(const std::string& map);
 
 }  // namespace usvid

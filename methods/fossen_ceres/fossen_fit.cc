@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/parse_number.h"
 #include "methods/fossen_ceres/fossen_models.h"
+#include "methods/fossen_ceres/jet_force_model.h"
 #include "simulation/input_track.h"
 #include "simulation/open_loop.h"
 #include "simulators/odin3dof.h"
@@ -49,17 +50,14 @@ struct EquationResidual {
   std::array<double, Model::kParams> param_scale;
   template <typename T>
   bool operator()(const T* theta, T* res) const {
-    using std::abs;
     const std::array<T, Model::kParams> pa = Unscale<Model::kParams>(theta, param_scale);
     const T* p = pa.data();
     T tau[3];
     std::array<T, Model::kInputs> input;
     for (int i = 0; i < Model::kInputs; ++i) input[i] = T(in[i]);
     Model::Forces(p, input.data(), tau);
-    // C(nu) nu + D(nu) nu.
-    const T h[3] = {-p[1] * v * r + (p[3] + p[4] * abs(u)) * u,
-                    p[0] * u * r + (p[5] + p[6] * abs(v)) * v,
-                    (p[1] - p[0]) * u * v + p[7] * v + (p[8] + p[9] * abs(r)) * r};
+    T h[3];  // C(nu) nu + D(nu) nu
+    Model::Hull(p, T(u), T(v), T(r), input.data(), h);
     const double rate[3] = {du, dv, dr};
     for (int i = 0; i < 3; ++i)
       res[i] = Model::kAccelerationResidual ? (rate[i] - (tau[i] - h[i]) / p[i]) / scale[i]
@@ -79,6 +77,32 @@ struct EquationBatch {
     return true;
   }
 };
+
+// The model's prior residuals (JetForceModel: the smoothness of its resistance curve).
+template <typename Model>
+struct PenaltyResidual {
+  std::array<double, Model::kParams> param_scale;
+  double weight;
+  template <typename T>
+  bool operator()(const T* theta, T* res) const {
+    const std::array<T, Model::kParams> p = Unscale<Model::kParams>(theta, param_scale);
+    Model::Penalty(p.data(), res);
+    for (int i = 0; i < Model::kPenaltyResiduals; ++i) res[i] *= weight;
+    return true;
+  }
+};
+
+// Adds the penalty, weighted as one sample of the force (or state) normalised by `scale`.
+template <typename Model>
+void AddPenalty(ceres::Problem& problem, double* p, const std::array<double, Model::kParams>& ps,
+                double scale) {
+  if constexpr (Model::kPenaltyResiduals > 0)
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<PenaltyResidual<Model>, Model::kPenaltyResiduals,
+                                        Model::kParams>(
+            new PenaltyResidual<Model>{ps, 1.0 / scale}),
+        nullptr, p);
+}
 
 // One shooting segment: rows [begin, end] simulated from the free initial velocities x0; the
 // residuals are the normalised errors of u, v, r at every row after the first, then the
@@ -129,12 +153,12 @@ struct SegmentResidual {
   }
 };
 
-// Positive lower bounds (but for a signed parameter); the scale-fixing parameter (if any) held
+// Positive lower bounds (but for signed parameters); the scale-fixing parameter (if any) held
 // constant.
 template <typename Model>
 void Bound(ceres::Problem& problem, double* p) {
   for (int i = 0; i < Model::kParams; ++i)
-    if (i != Model::kSignedParam) problem.SetParameterLowerBound(p, i, 1e-6);
+    if (!Model::Signed(i)) problem.SetParameterLowerBound(p, i, 1e-6);
   if constexpr (Model::kFixedParam >= 0)
     problem.SetManifold(p, new ceres::SubsetManifold(Model::kParams, {Model::kFixedParam}));
 }
@@ -246,6 +270,7 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
                                                                                        residuals),
         loss, p.data());
   }
+  AddPenalty<Model>(problem, p.data(), param_scale, scale[0]);
   Bound<Model>(problem, p.data());
   BasicFossenFit<kParams> fit;
   Solve<Model>(problem, options, p.data(), param_scale, fit);
@@ -304,6 +329,7 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
     problem.AddResidualBlock(cost, loss, p.data(), x0[j].data(), x0[j + 1].data());
   }
   problem.SetParameterBlockConstant(x0[segments].data());
+  AddPenalty<Model>(problem, p.data(), param_scale, Sd(d[std::string(Model::kInputNames[0])]));
   Bound<Model>(problem, p.data());
   BasicFossenFit<kParams> fit;
   Solve<Model>(problem, options, p.data(), param_scale, fit);
@@ -312,57 +338,52 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
 
 template <typename Model>
 nlohmann::json EquationsOf(const std::array<double, Model::kParams>& p) {
-  auto n = [](double v) { return FormatNumber(v); };
-  const auto f = [&](int i) { return Model::ForceText(i, p.data()); };
-  return {{"u", "(" + f(0) + " + " + n(p[1]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) +
-                    "*abs(u))*u) / " + n(p[0])},
-          {"v", "(" + f(1) + " - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) +
-                    "*abs(v))*v) / " + n(p[1])},
-          {"r", "(" + f(2) + " - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - " + n(p[7]) + "*v - (" +
-                    n(p[8]) + " + " + n(p[9]) + "*abs(r))*r) / " + n(p[2])}};
+  if constexpr (requires { Model::EquationText(0, p.data()); }) {
+    return {{"u", Model::EquationText(0, p.data())},
+            {"v", Model::EquationText(1, p.data())},
+            {"r", Model::EquationText(2, p.data())}};
+  } else {
+    auto n = [](double v) { return FormatNumber(v); };
+    const auto f = [&](int i) { return Model::ForceText(i, p.data()); };
+    return {{"u", "(" + f(0) + " + " + n(p[1]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) +
+                      "*abs(u))*u) / " + n(p[0])},
+            {"v", "(" + f(1) + " - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) +
+                      "*abs(v))*v) / " + n(p[1])},
+            {"r", "(" + f(2) + " - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - " + n(p[7]) +
+                      "*v - (" + n(p[8]) + " + " + n(p[9]) + "*abs(r))*r) / " + n(p[2])}};
+  }
 }
 
 }  // namespace
 
-FossenFit FitEquationError(const PreparedData& prepared, const FossenOptions& options) {
-  return FitEquationErrorOf<Odin3DofModel>(prepared, options);
+template <typename Model>
+BasicFossenFit<Model::kParams> FitEquationErrorFor(const PreparedData& prepared,
+                                                   const FossenOptions& options) {
+  return FitEquationErrorOf<Model>(prepared, options);
 }
 
-FossenFit FitSimulationError(const PreparedData& prepared, const std::array<double, 10>& start,
-                             const FossenOptions& options) {
-  return FitSimulationErrorOf<Odin3DofModel>(prepared, start, options);
+template <typename Model>
+BasicFossenFit<Model::kParams> FitSimulationErrorFor(
+    const PreparedData& prepared, const std::array<double, Model::kParams>& start,
+    const FossenOptions& options) {
+  return FitSimulationErrorOf<Model>(prepared, start, options);
 }
 
-nlohmann::json Equations(const std::array<double, 10>& params) {
-  return EquationsOf<Odin3DofModel>(params);
+template <typename Model>
+nlohmann::json EquationsFor(const std::array<double, Model::kParams>& params) {
+  return EquationsOf<Model>(params);
 }
 
-WaterjetFit FitWaterjetEquationError(const PreparedData& prepared, const FossenOptions& options) {
-  return FitEquationErrorOf<WaterjetModel>(prepared, options);
-}
-
-WaterjetFit FitWaterjetSimulationError(const PreparedData& prepared,
-                                       const std::array<double, 13>& start,
-                                       const FossenOptions& options) {
-  return FitSimulationErrorOf<WaterjetModel>(prepared, start, options);
-}
-
-nlohmann::json WaterjetEquations(const std::array<double, 13>& params) {
-  return EquationsOf<WaterjetModel>(params);
-}
-
-RudderFit FitRudderEquationError(const PreparedData& prepared, const FossenOptions& options) {
-  return FitEquationErrorOf<RudderModel>(prepared, options);
-}
-
-RudderFit FitRudderSimulationError(const PreparedData& prepared,
-                                   const std::array<double, 13>& start,
-                                   const FossenOptions& options) {
-  return FitSimulationErrorOf<RudderModel>(prepared, start, options);
-}
-
-nlohmann::json RudderEquations(const std::array<double, 13>& params) {
-  return EquationsOf<RudderModel>(params);
-}
+#define USVID_FOSSEN_MODEL(Model)                                                            \
+  template BasicFossenFit<Model::kParams> FitEquationErrorFor<Model>(const PreparedData&,    \
+                                                                     const FossenOptions&);  \
+  template BasicFossenFit<Model::kParams> FitSimulationErrorFor<Model>(                      \
+      const PreparedData&, const std::array<double, Model::kParams>&, const FossenOptions&); \
+  template nlohmann::json EquationsFor<Model>(const std::array<double, Model::kParams>&);
+USVID_FOSSEN_MODEL(Odin3DofModel)
+USVID_FOSSEN_MODEL(WaterjetModel)
+USVID_FOSSEN_MODEL(RudderModel)
+USVID_FOSSEN_MODEL(JetForceModel)
+#undef USVID_FOSSEN_MODEL
 
 }  // namespace usvid::fossen

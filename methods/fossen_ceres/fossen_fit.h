@@ -1,8 +1,9 @@
 // `fossen-ceres`: the parametric Fossen 3-DOF model of odin3dof (domain.md section 2.2: M, C(nu)
 // from M, D(nu) with linear and quadratic terms; 10 parameters m11 m22 m33 Xu Xuu Yv Yvv Nv Nr
 // Nrr), and the same model driven through a waterjet input map (13 parameters, inputs throttle,
-// nozzle, bucket; see fossen_models.h) or a rudder-propeller map (inputs delta, rev), fitted with
-// Ceres in two modes:
+// nozzle, bucket; see fossen_models.h) or a rudder-propeller map (inputs delta, rev); and the
+// high-speed form on the jets' measured forces with speed-dependent damping (jet_force_model.h).
+// Fitted with Ceres in two modes:
 //  - equation error: on estimated derivatives, residual_k = (M nu' + C(nu) nu + D(nu) nu - tau)_k
 //    per sample, each force or moment divided by its input's standard deviation; for the
 //    waterjet model (tau not measured) in accelerations, nu'_k - (M^-1 (tau - C nu - D nu))_k,
@@ -12,9 +13,9 @@
 //    free initial velocities, residuals are the simulated minus measured u, v, r (divided by
 //    their standard deviations), and segments are tied by continuity residuals (end of one minus
 //    start of the next, weighted). Ceres differentiates whole rollouts with Jets.
-// Parameters are bounded below (positive), a Huber loss is optional, and their standard
-// deviations come from ceres::Covariance. The simulation-error fit starts from the
-// equation-error one.
+// Parameters are bounded below (positive, but for those a model says are signed), a Huber loss is
+// optional, and their standard deviations come from (J^T J)^-1 s^2 at the solution. The
+// simulation-error fit starts from the equation-error one.
 #pragma once
 
 #include <array>
@@ -42,7 +43,7 @@ struct FossenOptions {
 template <int N>
 struct BasicFossenFit {
   std::array<double, N> params{};
-  std::array<double, N> sd{};  // from ceres::Covariance (0 where not available)
+  std::array<double, N> sd{};  // (J^T J)^-1 s^2 (0 where not available)
   bool covariance_ok = false;
   std::string termination;  // Ceres' termination type and message
   bool converged = false;
@@ -50,33 +51,23 @@ struct BasicFossenFit {
   int iterations = 0;
   double seconds = 0.0;
 };
-using FossenFit = BasicFossenFit<10>;    // odin3dof: m11 .. Nrr
-using WaterjetFit = BasicFossenFit<13>;  // odin-hs: m11 .. Nrr, Tx, Ty, Tn
-using RudderFit = BasicFossenFit<13>;    // kvlcc2: m11 .. Nrr, Tx, Ty, Tn
+using FossenFit = BasicFossenFit<10>;  // odin3dof: m11 .. Nrr
 
-// prepared: from Preprocess with states u, v, r (smoothed, "_dot" derivatives) and inputs
-// tau_x, tau_y, tau_n; raw states "<s>_raw" are what the simulation error compares against.
-FossenFit FitEquationError(const PreparedData& prepared, const FossenOptions& options);
-FossenFit FitSimulationError(const PreparedData& prepared, const std::array<double, 10>& start,
-                             const FossenOptions& options);
-
+// The fits, for each model of fossen_models.h and jet_force_model.h (Odin3DofModel,
+// WaterjetModel, RudderModel, JetForceModel). prepared: from Preprocess with states u, v, r
+// (smoothed, "_dot" derivatives) and the model's inputs (Model::kInputNames); raw states
+// "<s>_raw" are what the simulation error compares against. A model whose scale is not fixed by
+// measured forces (waterjet, rudder) holds m11 at its start (5000 kg in the equation-error fit,
+// start[0] in the simulation-error one): scaling all its parameters together leaves it unchanged.
+template <typename Model>
+BasicFossenFit<Model::kParams> FitEquationErrorFor(const PreparedData& prepared,
+                                                   const FossenOptions& options);
+template <typename Model>
+BasicFossenFit<Model::kParams> FitSimulationErrorFor(
+    const PreparedData& prepared, const std::array<double, Model::kParams>& start,
+    const FossenOptions& options);
 // The model written out as equations in channel names (contract section 5).
-nlohmann::json Equations(const std::array<double, 10>& params);
-
-// The waterjet model: prepared with states u, v, r and inputs throttle, nozzle, bucket. m11 stays
-// at its starting value (5000 kg in the equation-error fit, start[0] in the simulation-error
-// one): the model is invariant to scaling all parameters together.
-WaterjetFit FitWaterjetEquationError(const PreparedData& prepared, const FossenOptions& options);
-WaterjetFit FitWaterjetSimulationError(const PreparedData& prepared,
-                                       const std::array<double, 13>& start,
-                                       const FossenOptions& options);
-nlohmann::json WaterjetEquations(const std::array<double, 13>& params);
-
-// The rudder-propeller model (kvlcc2): states u, v, r and inputs delta, rev; m11 held as above.
-RudderFit FitRudderEquationError(const PreparedData& prepared, const FossenOptions& options);
-RudderFit FitRudderSimulationError(const PreparedData& prepared,
-                                   const std::array<double, 13>& start,
-                                   const FossenOptions& options);
-nlohmann::json RudderEquations(const std::array<double, 13>& params);
+template <typename Model>
+nlohmann::json EquationsFor(const std::array<double, Model::kParams>& params);
 
 }  // namespace usvid::fossen

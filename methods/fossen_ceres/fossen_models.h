@@ -39,6 +39,9 @@ struct FossenModelBase {
   static constexpr std::array<std::string_view, kStates> kStateNames = Odin3Dof::kStateNames;
   static constexpr int kThrustInput = 0, kRateState = 5, kHeadingState = 2;
 
+  static constexpr int kPenaltyResiduals = 0;  // prior residuals (JetForceModel's smoothness)
+  static constexpr bool Signed(int i) { return i == Model::kSignedParam; }
+
   // Odin3Dof's dynamics driven by tau(in; p); p starts with odin3dof's 10 parameters.
   template <typename T>
   static void Derivative(const T* x, const T* in, const T* p, const Environment<T>& env, T* dx) {
@@ -46,6 +49,16 @@ struct FossenModelBase {
     Model::Forces(p, in, tau);
     Odin3Dof::Derivative<T>(x, tau, p, env, dx);
   }
+  // C(nu) nu + D(nu) nu of odin3dof's form, in calm water: M nu' = tau - h.
+  template <typename T>
+  static void Hull(const T* p, const T& u, const T& v, const T& r, const T* /*in*/, T* h) {
+    using std::abs;
+    h[0] = -p[1] * v * r + (p[3] + p[4] * abs(u)) * u;
+    h[1] = p[0] * u * r + (p[5] + p[6] * abs(v)) * v;
+    h[2] = (p[1] - p[0]) * u * v + p[7] * v + (p[8] + p[9] * abs(r)) * r;
+  }
+  template <typename T>
+  static void Penalty(const T* /*p*/, T* /*res*/) {}
 };
 
 struct Odin3DofModel : FossenModelBase<Odin3DofModel> {

@@ -43,8 +43,9 @@ class FossenFitTest : public ::testing::Test {
 TEST_F(FossenFitTest, NoiseFreeRecoversEveryParameterWithinHalfAPercent) {
   const PreparedData prep = Prepare(Simulate("random-steps", 600, 0.0, 5));
   const fossen::FossenOptions o;
-  const fossen::FossenFit eq = fossen::FitEquationError(prep, o);
-  const fossen::FossenFit sim = fossen::FitSimulationError(prep, eq.params, o);
+  const fossen::FossenFit eq = fossen::FitEquationErrorFor<fossen::Odin3DofModel>(prep, o);
+  const fossen::FossenFit sim =
+      fossen::FitSimulationErrorFor<fossen::Odin3DofModel>(prep, eq.params, o);
   EXPECT_TRUE(sim.converged) << sim.termination;
   EXPECT_LE(WorstError(sim.params), 0.005);
 }
@@ -52,8 +53,9 @@ TEST_F(FossenFitTest, NoiseFreeRecoversEveryParameterWithinHalfAPercent) {
 TEST_F(FossenFitTest, TwoPercentNoiseSimulationErrorBeatsEquationError) {
   const PreparedData prep = Prepare(Simulate("random-steps", 600, 0.02, 5));
   const fossen::FossenOptions o;
-  const fossen::FossenFit eq = fossen::FitEquationError(prep, o);
-  const fossen::FossenFit sim = fossen::FitSimulationError(prep, eq.params, o);
+  const fossen::FossenFit eq = fossen::FitEquationErrorFor<fossen::Odin3DofModel>(prep, o);
+  const fossen::FossenFit sim =
+      fossen::FitSimulationErrorFor<fossen::Odin3DofModel>(prep, eq.params, o);
   EXPECT_LE(WorstError(sim.params), 0.05);
   EXPECT_LT(WorstError(sim.params), WorstError(eq.params));
   EXPECT_TRUE(sim.covariance_ok);
@@ -66,11 +68,12 @@ TEST_F(FossenFitTest, TwoPercentNoiseSimulationErrorBeatsEquationError) {
 TEST_F(FossenFitTest, FreeRunsHeldOutMultisineAtNinetyEightPercent) {
   const PreparedData prep = Prepare(Simulate("random-steps", 600, 0.005, 5));
   const fossen::FossenOptions o;
-  const fossen::FossenFit fit =
-      fossen::FitSimulationError(prep, fossen::FitEquationError(prep, o).params, o);
-  const nlohmann::json model = {{"states", {"u", "v", "r"}},
-                                {"inputs", {"tau_x", "tau_y", "tau_n"}},
-                                {"equations", fossen::Equations(fit.params)}};
+  const fossen::FossenFit fit = fossen::FitSimulationErrorFor<fossen::Odin3DofModel>(
+      prep, fossen::FitEquationErrorFor<fossen::Odin3DofModel>(prep, o).params, o);
+  const nlohmann::json model = {
+      {"states", {"u", "v", "r"}},
+      {"inputs", {"tau_x", "tau_y", "tau_n"}},
+      {"equations", fossen::EquationsFor<fossen::Odin3DofModel>(fit.params)}};
   const Evaluation e = EvaluateModel(model, Simulate("multisine", 300, 0.0, 77));
   for (const char* c : {"u", "v", "r"})
     EXPECT_GE(e.metrics.at(c).at("fit_percent").get<double>(), 98.0) << c;
@@ -87,9 +90,10 @@ TEST_F(FossenFitTest, WaterjetMapFitsOdinHsFromThrottleNozzleAndBucket) {
                                        {"u", "v", "r"}, inputs, pre);
   fossen::FossenOptions o;
   o.function_tolerance = 1e-6;  // Ceres' default: the misspecified model creeps on for long
-  const fossen::WaterjetFit eq = fossen::FitWaterjetEquationError(prep, o);
+  const fossen::BasicFossenFit<13> eq = fossen::FitEquationErrorFor<fossen::WaterjetModel>(prep, o);
   EXPECT_TRUE(eq.converged) << eq.termination;
-  const fossen::WaterjetFit sim = fossen::FitWaterjetSimulationError(prep, eq.params, o);
+  const fossen::BasicFossenFit<13> sim =
+      fossen::FitSimulationErrorFor<fossen::WaterjetModel>(prep, eq.params, o);
   EXPECT_TRUE(sim.converged) << sim.termination;
   EXPECT_LT(sim.final_cost, 0.5 * sim.initial_cost);
   for (int i = 0; i < fossen::WaterjetModel::kParams; ++i) {
@@ -103,9 +107,10 @@ TEST_F(FossenFitTest, WaterjetMapFitsOdinHsFromThrottleNozzleAndBucket) {
               eq.final_cost, eq.iterations, eq.seconds, eq.termination.c_str());
   std::printf("simulation error: cost %.6g -> %.6g, %d iterations, %.2f s, %s\n", sim.initial_cost,
               sim.final_cost, sim.iterations, sim.seconds, sim.termination.c_str());
-  const nlohmann::json model = {{"states", {"u", "v", "r"}},
-                                {"inputs", inputs},
-                                {"equations", fossen::WaterjetEquations(sim.params)}};
+  const nlohmann::json model = {
+      {"states", {"u", "v", "r"}},
+      {"inputs", inputs},
+      {"equations", fossen::EquationsFor<fossen::WaterjetModel>(sim.params)}};
   const Evaluation e =
       EvaluateModel(model, testing::Simulate("odin-hs", "random-steps", 600, 0.0, 77));
   for (const char* c : {"u", "v", "r"}) {
@@ -121,8 +126,9 @@ TEST_F(FossenFitTest, AFitStoppedEarlySaysWhy) {
   const PreparedData prep = Prepare(Simulate("random-steps", 120, 0.005, 5));
   fossen::FossenOptions o;
   o.max_iterations = 1;
-  const fossen::FossenFit eq = fossen::FitEquationError(prep, o);
-  const fossen::FossenFit sim = fossen::FitSimulationError(prep, eq.params, o);
+  const fossen::FossenFit eq = fossen::FitEquationErrorFor<fossen::Odin3DofModel>(prep, o);
+  const fossen::FossenFit sim =
+      fossen::FitSimulationErrorFor<fossen::Odin3DofModel>(prep, eq.params, o);
   EXPECT_FALSE(sim.converged);
   EXPECT_NE(sim.termination.find("NO_CONVERGENCE"), std::string::npos) << sim.termination;
   EXPECT_NE(sim.termination.find("Maximum number of iterations"), std::string::npos)

@@ -1,6 +1,6 @@
 // The jets' forces from their measured states (preprocessing/waterjet_forces.h): on an odin-hs
 // run, tau_x is the simulator's momentum thrust, the side force opposes the nozzle angle and the
-// yaw moment is the side force at the jets' lever arm; astern, the bucket reverses the thrust at
+// yaw moment is the side force at the jets' lever arm; jet_flow is both jets' flow; astern, the bucket reverses the thrust at
 // the astern efficiency; a record without the jet states is refused, naming what it lacks.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -36,6 +36,8 @@ TEST(WaterjetForcesTest, ThrustSideForceAndMomentFromTheJetStates) {
   EXPECT_LT(d["tau_y"](1), 0.0);  // the jet's reaction pushes the stern to port
   EXPECT_NEAR(d["tau_n"](1), OdinHs::kJetX * d["tau_y"](1), 1e-9);
   EXPECT_GT(d["tau_n"](1), 0.0);  // and the bow turns to starboard: r > 0
+  // The flow through both jets, for the inlet momentum the hull model writes.
+  EXPECT_NEAR(d["jet_flow"](1), 2 * q, 1e-12);
   // Astern: the bucket closed gives the astern efficiency of the ahead thrust, reversed.
   Dataset astern = JetStates(2000.0, 0.0, -1.0), ahead = JetStates(2000.0, 0.0, 1.0);
   AddWaterjetForces(astern);

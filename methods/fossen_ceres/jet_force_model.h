@@ -1,0 +1,160 @@
+// The Fossen 3-DOF form for a high-speed waterjet craft (odin-hs, docs/vessels/odin-hs.md), on
+// the jets' measured forces (`--forces waterjet`: inputs tau_x, tau_y [N], tau_n [N m] and the
+// total jet flow jet_flow Q [m^3/s]), with damping that depends on speed as far as 600 s of data
+// support it (issue 19). In calm water, nu = [u v r], U = sqrt(u^2 + v^2 + eps^2):
+//
+//   m11 u' = tau_x + m22 v r - (Xu + XQ Q + c(U) U) u
+//   m22 v' = tau_y - m11 u r - (Yv + YUv U + YQv Q) v - Yvv |v| v - (Yr + YUr U + YQr Q) r
+//   m33 r' = tau_n - (m22 - m11) u v - (Nv + NUv U + NQv Q) v - (Nr + NUr U + NQr Q) r
+//            - Nrr |r| r
+//
+// Why each term (the physics of docs/vessels/odin-hs.md, none of its constants):
+//  - c(U) U u is the resistance R(U) = c(U) U^2 along the track. c(U) = R / U^2 is written as
+//    piecewise-linear in U with knots every 2 m/s from 0 to 20 m/s (Froude-number steps of 0.2
+//    for a 10.5 m hull), held constant above 20 m/s. It can take the resistance hump and the fall
+//    of R / U^2 when dynamic lift takes over: the change of regime, without being told its form.
+//    A second-difference penalty (one residual per inner knot, the weight of one sample) keeps
+//    knots with no data on the line through their neighbours.
+//  - XQ Q u, YQv Q v, YQr Q r, NQv Q v, NQr Q r are the inlet momentum: the jets take water in at
+//    the boat's velocity, a drag in proportion to the flow (-rho Q (u, v + x_j r) at the inlet).
+//  - The side-force slope of a planing hull grows with speed (lift ~ U), so the linear sway and
+//    yaw damping have a part in proportion to U.
+// The added masses are constant: what the wetted area's shrinking does to them is folded into
+// the damping. m11 is free: the forces are measured in newtons, so nothing is scaled away.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include "core/parse_number.h"
+#include "methods/fossen_ceres/fossen_models.h"
+
+namespace usvid::fossen {
+
+struct JetForceModel : FossenModelBase<JetForceModel> {
+  static constexpr std::string_view kName = "fossen-jet";
+  static constexpr int kInputs = 4, kYawInput = 2;
+  static constexpr int kKnots = 11;            // c(U) at U = 0, 2, ..., 20 m/s
+  static constexpr double kKnotSpacing = 2.0;  // [m/s]
+  static constexpr int kFirstKnot = 19;        // the parameter of c(0)
+  static constexpr int kParams = kFirstKnot + kKnots;
+  static constexpr int kPenaltyResiduals = kKnots - 2;
+  static constexpr bool kAccelerationResidual = false;  // tau is measured: residual in forces
+  static constexpr int kFixedParam = -1;
+  static constexpr double kSpeedEps = 1e-3;  // [m/s] keeps U differentiable at rest
+  static constexpr std::array<std::string_view, kInputs> kInputNames = {"tau_x", "tau_y", "tau_n",
+                                                                        "jet_flow"};
+  static constexpr std::array<std::string_view, kParams> kParamNames = {
+      "m11", "m22", "m33", "Xu",  "XQ",  "Yv",  "YUv", "Yvv", "Yr",  "YUr",
+      "YQv", "YQr", "Nv",  "NUv", "Nr",  "NUr", "Nrr", "NQv", "NQr", "c0",
+      "c2",  "c4",  "c6",  "c8",  "c10", "c12", "c14", "c16", "c18", "c20"};
+  // The equation-error fit is linear in the parameters, so any start converges; these are of the
+  // right order for a 5 t boat.
+  static constexpr std::array<double, kParams> kStart = {
+      5000, 5000, 20000, 10, 500, 500, 500, 1000, 0,  0,  500, 0,  0,  0,  3000,
+      3000, 1e4,  0,     0,  50,  50,  50,  50,   50, 50, 50,  50, 50, 50, 50};
+  static constexpr std::array<double, kParams> kDefaultParams = kStart;
+  static constexpr std::array<ParamGroup, kParams> kParamGroups = [] {
+    std::array<ParamGroup, kParams> g{};
+    g.fill(ParamGroup::kDamping);
+    g[0] = g[1] = g[2] = ParamGroup::kInertia;
+    return g;
+  }();
+  static constexpr std::array<double, kInputs> kInputMin = {-3e4, -3e4, -1.2e5, 0.0};
+  static constexpr std::array<double, kInputs> kInputMax = {3e4, 3e4, 1.2e5, 1.0};
+
+  // Cross-coupling and inlet terms whose sign the physics does not fix.
+  static constexpr bool Signed(int i) {
+    return i == 8 || i == 9 || i == 11 || i == 12 || i == 13 || i == 17 || i == 18;
+  }
+
+  // c(U): the piecewise-linear resistance coefficient [kg/m], U clamped to the last knot.
+  template <typename T>
+  static T Resistance(const T* p, const T& speed) {
+    using std::abs;
+    const double top = kKnotSpacing * (kKnots - 1);
+    const T s = (speed + top - abs(speed - top)) / 2.0;  // min(U, top)
+    T c = T(0);
+    for (int k = 0; k < kKnots; ++k) {
+      const double x = kKnotSpacing * k, h = kKnotSpacing;
+      c += p[kFirstKnot + k] * (abs(s - (x - h)) - 2.0 * abs(s - x) + abs(s - (x + h))) / (2.0 * h);
+    }
+    return c;
+  }
+
+  // The forces are measured: tau_i = in[i].
+  template <typename T>
+  static void Forces(const T* /*p*/, const T* in, T* tau) {
+    for (int i = 0; i < 3; ++i) tau[i] = in[i];
+  }
+
+  template <typename T>
+  static void Hull(const T* p, const T& u, const T& v, const T& r, const T* in, T* h) {
+    using std::abs;
+    using std::sqrt;
+    const T speed = sqrt(u * u + v * v + kSpeedEps * kSpeedEps);
+    const T& q = in[3];
+    h[0] = -p[1] * v * r + (p[3] + p[4] * q + Resistance(p, speed) * speed) * u;
+    h[1] = p[0] * u * r + (p[5] + p[6] * speed + p[10] * q) * v + p[7] * abs(v) * v +
+           (p[8] + p[9] * speed + p[11] * q) * r;
+    h[2] = (p[1] - p[0]) * u * v + (p[12] + p[13] * speed + p[17] * q) * v +
+           (p[14] + p[15] * speed + p[18] * q) * r + p[16] * abs(r) * r;
+  }
+
+  template <typename T>
+  static void Derivative(const T* x, const T* in, const T* p, const Environment<T>& env, T* dx) {
+    using std::cos;
+    using std::sin;
+    const T c = cos(x[2]), s = sin(x[2]);
+    // A constant current: the hull sees the relative velocity (Fossen 2011, section 10.3).
+    const T ur = x[3] - (c * env.current_north + s * env.current_east);
+    const T vr = x[4] - (-s * env.current_north + c * env.current_east);
+    T tau[3], h[3];
+    Forces(p, in, tau);
+    Hull(p, ur, vr, x[5], in, h);
+    dx[0] = c * x[3] - s * x[4];
+    dx[1] = s * x[3] + c * x[4];
+    dx[2] = x[5];
+    for (int i = 0; i < 3; ++i) dx[3 + i] = (tau[i] - h[i]) / p[i];
+  }
+
+  // Second differences of c(U) over the knots, in newtons at each knot's speed.
+  template <typename T>
+  static void Penalty(const T* p, T* res) {
+    for (int k = 1; k + 1 < kKnots; ++k) {
+      const double speed = kKnotSpacing * k;
+      res[k - 1] =
+          (p[kFirstKnot + k - 1] - 2.0 * p[kFirstKnot + k] + p[kFirstKnot + k + 1]) * speed * speed;
+    }
+  }
+
+  // The equations in channel names (contract section 5): the same arithmetic as Hull.
+  static std::string EquationText(int i, const double* p) {
+    auto n = [](double x) { return "(" + FormatNumber(x) + ")"; };
+    const std::string speed = "sqrt(u*u + v*v + " + FormatNumber(kSpeedEps * kSpeedEps) + ")";
+    const double top = kKnotSpacing * (kKnots - 1);
+    const std::string s = "((" + speed + " + " + FormatNumber(top) + " - abs(" + speed + " - " +
+                          FormatNumber(top) + "))/2)";
+    std::string c;
+    for (int k = 0; k < kKnots; ++k) {
+      const double x = kKnotSpacing * k, h = kKnotSpacing;
+      c += (k ? " + " : "") + n(p[kFirstKnot + k]) + "*(abs(" + s + " - " + n(x - h) +
+           ") - 2*abs(" + s + " - " + n(x) + ") + abs(" + s + " - " + n(x + h) + "))/" +
+           FormatNumber(2.0 * h);
+    }
+    if (i == 0)
+      return "(tau_x + " + n(p[1]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) + "*jet_flow + (" + c +
+             ")*" + speed + ")*u) / " + n(p[0]);
+    if (i == 1)
+      return "(tau_y - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) + "*" + speed + " + " +
+             n(p[10]) + "*jet_flow)*v - " + n(p[7]) + "*abs(v)*v - (" + n(p[8]) + " + " + n(p[9]) +
+             "*" + speed + " + " + n(p[11]) + "*jet_flow)*r) / " + n(p[1]);
+    return "(tau_n - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - (" + n(p[12]) + " + " + n(p[13]) +
+           "*" + speed + " + " + n(p[17]) + "*jet_flow)*v - (" + n(p[14]) + " + " + n(p[15]) + "*" +
+           speed + " + " + n(p[18]) + "*jet_flow)*r - " + n(p[16]) + "*abs(r)*r) / " + n(p[2]);
+  }
+};
+
+}  // namespace usvid::fossen
