@@ -23,6 +23,7 @@
 // the damping. m11 is free: the forces are measured in newtons, so nothing is scaled away.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -30,15 +31,16 @@
 
 #include "core/parse_number.h"
 #include "methods/fossen_ceres/fossen_models.h"
+#include "simulators/scalar.h"
 
 namespace usvid::fossen {
 
 struct JetForceModel : FossenModelBase<JetForceModel> {
   static constexpr std::string_view kName = "fossen-jet";
   static constexpr int kInputs = 4, kYawInput = 2;
-  static constexpr int kKnots = 11;            // c(U) at U = 0, 2, ..., 20 m/s
-  static constexpr double kKnotSpacing = 2.0;  // [m/s]
-  static constexpr int kFirstKnot = 19;        // the parameter of c(0)
+  static constexpr int kKnots = 41;            // c(U) at U = 0, 0.5, ..., 20 m/s
+  static constexpr double kKnotSpacing = 0.5;  // [m/s]
+  static constexpr int kFirstKnot = 20;        // the parameter of c(0)
   static constexpr int kParams = kFirstKnot + kKnots;
   static constexpr int kPenaltyResiduals = kKnots - 2;
   static constexpr bool kAccelerationResidual = false;  // tau is measured: residual in forces
@@ -47,14 +49,21 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   static constexpr std::array<std::string_view, kInputs> kInputNames = {"tau_x", "tau_y", "tau_n",
                                                                         "jet_flow"};
   static constexpr std::array<std::string_view, kParams> kParamNames = {
-      "m11", "m22", "m33", "Xu",  "XQ",  "Yv",  "YUv", "Yvv", "Yr",  "YUr",
-      "YQv", "YQr", "Nv",  "NUv", "Nr",  "NUr", "Nrr", "NQv", "NQr", "c0",
-      "c2",  "c4",  "c6",  "c8",  "c10", "c12", "c14", "c16", "c18", "c20"};
+      "m11",   "m22",   "m33",   "Xu",    "XQ",    "Yv",    "YUv",   "Yvv",   "Yr",
+      "YUr",   "YQv",   "YQr",   "Nv",    "NUv",   "Nr",    "NUr",   "Nrr",   "NQv",
+      "NQr",   "Xvr",   "c0",    "c0_5",  "c1",    "c1_5",  "c2",    "c2_5",  "c3",
+      "c3_5",  "c4",    "c4_5",  "c5",    "c5_5",  "c6",    "c6_5",  "c7",    "c7_5",
+      "c8",    "c8_5",  "c9",    "c9_5",  "c10",   "c10_5", "c11",   "c11_5", "c12",
+      "c12_5", "c13",   "c13_5", "c14",   "c14_5", "c15",   "c15_5", "c16",   "c16_5",
+      "c17",   "c17_5", "c18",   "c18_5", "c19",   "c19_5", "c20"};
   // The equation-error fit is linear in the parameters, so any start converges; these are of the
   // right order for a 5 t boat.
-  static constexpr std::array<double, kParams> kStart = {
-      5000, 5000, 20000, 10, 500, 500, 500, 1000, 0,  0,  500, 0,  0,  0,  3000,
-      3000, 1e4,  0,     0,  50,  50,  50,  50,   50, 50, 50,  50, 50, 50, 50};
+  static constexpr std::array<double, kParams> kStart = [] {
+    std::array<double, kParams> p{5000, 5000, 20000, 10, 500,  500,  500, 1000, 0, 0,
+                                  500,  0,    0,     0,  3000, 3000, 1e4, 0,    0, 5000};
+    for (int k = 0; k < kKnots; ++k) p[kFirstKnot + k] = 50.0;  // R / U^2 [kg/m]
+    return p;
+  }();
   static constexpr std::array<double, kParams> kDefaultParams = kStart;
   static constexpr std::array<ParamGroup, kParams> kParamGroups = [] {
     std::array<ParamGroup, kParams> g{};
@@ -67,21 +76,18 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
 
   // Cross-coupling and inlet terms whose sign the physics does not fix.
   static constexpr bool Signed(int i) {
-    return i == 8 || i == 9 || i == 11 || i == 12 || i == 13 || i == 17 || i == 18;
+    return i == 8 || i == 9 || i == 11 || i == 12 || i == 13 || i == 17 || i == 18 || i == 19;
   }
 
-  // c(U): the piecewise-linear resistance coefficient [kg/m], U clamped to the last knot.
+  // c(U): the piecewise-linear resistance coefficient [kg/m] through the knots, held at the last
+  // knot's value above it. Only the two hats around U are non-zero, so only they are evaluated.
   template <typename T>
   static T Resistance(const T* p, const T& speed) {
-    using std::abs;
-    const double top = kKnotSpacing * (kKnots - 1);
-    const T s = (speed + top - abs(speed - top)) / 2.0;  // min(U, top)
-    T c = T(0);
-    for (int k = 0; k < kKnots; ++k) {
-      const double x = kKnotSpacing * k, h = kKnotSpacing;
-      c += p[kFirstKnot + k] * (abs(s - (x - h)) - 2.0 * abs(s - x) + abs(s - (x + h))) / (2.0 * h);
-    }
-    return c;
+    const double x = ValueOf(speed) / kKnotSpacing;
+    if (!(x < kKnots - 1)) return p[kFirstKnot + kKnots - 1];
+    const int j = std::clamp(static_cast<int>(std::floor(x)), 0, kKnots - 2);
+    const T w = speed / kKnotSpacing - double(j);
+    return p[kFirstKnot + j] * (1.0 - w) + p[kFirstKnot + j + 1] * w;
   }
 
   // The forces are measured: tau_i = in[i].
@@ -96,7 +102,7 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
     using std::sqrt;
     const T speed = sqrt(u * u + v * v + kSpeedEps * kSpeedEps);
     const T& q = in[3];
-    h[0] = -p[1] * v * r + (p[3] + p[4] * q + Resistance(p, speed) * speed) * u;
+    h[0] = -p[19] * v * r + (p[3] + p[4] * q + Resistance(p, speed) * speed) * u;
     h[1] = p[0] * u * r + (p[5] + p[6] * speed + p[10] * q) * v + p[7] * abs(v) * v +
            (p[8] + p[9] * speed + p[11] * q) * r;
     h[2] = (p[1] - p[0]) * u * v + (p[12] + p[13] * speed + p[17] * q) * v +
@@ -134,18 +140,19 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   static std::string EquationText(int i, const double* p) {
     auto n = [](double x) { return "(" + FormatNumber(x) + ")"; };
     const std::string speed = "sqrt(u*u + v*v + " + FormatNumber(kSpeedEps * kSpeedEps) + ")";
-    const double top = kKnotSpacing * (kKnots - 1);
-    const std::string s = "((" + speed + " + " + FormatNumber(top) + " - abs(" + speed + " - " +
-                          FormatNumber(top) + "))/2)";
+    // Hat k: (|U - x_k + h| - 2 |U - x_k| + |U - x_k - h|) / 2h; the last one rises to 1 and stays.
     std::string c;
+    const double h = kKnotSpacing;
     for (int k = 0; k < kKnots; ++k) {
-      const double x = kKnotSpacing * k, h = kKnotSpacing;
-      c += (k ? " + " : "") + n(p[kFirstKnot + k]) + "*(abs(" + s + " - " + n(x - h) +
-           ") - 2*abs(" + s + " - " + n(x) + ") + abs(" + s + " - " + n(x + h) + "))/" +
-           FormatNumber(2.0 * h);
+      const double x = h * k;
+      auto dist = [&](double knot) { return "abs(" + speed + " - " + n(knot) + ")"; };
+      c += (k ? " + " : "") + n(p[kFirstKnot + k]) + "*(" +
+           (k + 1 < kKnots ? dist(x - h) + " - 2*" + dist(x) + " + " + dist(x + h)
+                           : dist(x - h) + " - " + dist(x) + " + " + FormatNumber(h)) +
+           ")/" + FormatNumber(2.0 * h);
     }
     if (i == 0)
-      return "(tau_x + " + n(p[1]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) + "*jet_flow + (" + c +
+      return "(tau_x + " + n(p[19]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) + "*jet_flow + (" + c +
              ")*" + speed + ")*u) / " + n(p[0]);
     if (i == 1)
       return "(tau_y - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) + "*" + speed + " + " +
