@@ -7,6 +7,7 @@ nlohmann::json ResultRow::ToJson() const {
                       {"train_maneuver", train_maneuver},
                       {"test_maneuver", test_maneuver},
                       {"method", method},
+                      {"inputs", inputs},
                       {"noise", noise},
                       {"seed", seed},
                       {"test_seed", test_seed},
@@ -39,6 +40,7 @@ ResultRow ResultRow::FromCellJson(const nlohmann::json& j) {
   r.train_maneuver = j.at("train_maneuver").get<std::string>();
   r.test_maneuver = j.at("test_maneuver").get<std::string>();
   r.method = j.at("method").get<std::string>();
+  r.inputs = j.value("inputs", "");
   r.noise = j.at("noise").get<double>();
   r.seed = j.at("seed").get<uint64_t>();
   r.test_seed = j.at("test_seed").get<uint64_t>();

@@ -13,6 +13,7 @@ namespace usvid {
 
 struct ResultRow {
   std::string vessel, train_maneuver, test_maneuver, method;
+  std::string inputs;  // what drove the model: "forces waterjet: tau_x,..." or "throttle,..."
   double noise = 0.0;
   uint64_t seed = 1, test_seed = 1;
   std::map<std::string, double> fit_percent;  // per identified state

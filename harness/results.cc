@@ -89,6 +89,14 @@ void PerChannelTables(const Suite& suite, const std::vector<ResultRow>& rows,
   md << '\n';
 }
 
+// A CSV field (RFC 4180): quoted when it holds a comma, a quote or a line break.
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 }  // namespace
 
 nlohmann::json ResultsJson(const Suite& suite, const std::vector<ResultRow>& rows, double seconds) {
@@ -102,16 +110,17 @@ std::string ResultsCsv(const std::vector<ResultRow>& rows) {
   for (const ResultRow& r : rows)
     for (const auto& [s, _] : r.fit_percent) states.insert(s);
   std::ostringstream out;
-  out << "vessel,train_maneuver,test_maneuver,method,noise,seed,test_seed,status,diverged,"
+  out << "vessel,train_maneuver,test_maneuver,method,inputs,noise,seed,test_seed,status,diverged,"
          "fit_seconds,mean_fit_percent,terms,structure_precision,structure_recall,parameter_error";
   for (const std::string& s : states) out << ",fit_percent_" << s;
   out << '\n';
   for (const ResultRow& r : rows) {
     const bool ok = r.status == "ok";
     std::string status = ok ? "ok" : "failed";
-    out << r.vessel << ',' << r.train_maneuver << ',' << r.test_maneuver << ',' << r.method << ','
-        << FormatNumber(r.noise) << ',' << r.seed << ',' << r.test_seed << ',' << status << ','
-        << (ok ? (r.diverged ? "true" : "false") : "") << ','
+    out << CsvField(r.vessel) << ',' << CsvField(r.train_maneuver) << ','
+        << CsvField(r.test_maneuver) << ',' << CsvField(r.method) << ',' << CsvField(r.inputs)
+        << ',' << FormatNumber(r.noise) << ',' << r.seed << ',' << r.test_seed << ',' << status
+        << ',' << (ok ? (r.diverged ? "true" : "false") : "") << ','
         << (ok ? FormatNumber(r.fit_seconds) : "") << ','
         << (ok ? FormatNumber(r.mean_fit_percent) : "") << ','
         << (ok ? std::to_string(r.terms) : "") << ','

@@ -2,7 +2,9 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
+#include <set>
 
 #include "core/error.h"
 #include "diagnosis/diagnose.h"
@@ -11,6 +13,7 @@
 #include "methods/identify.h"
 #include "metrics/evaluation.h"
 #include "metrics/structure.h"
+#include "preprocessing/waterjet_forces.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
 #include "simulators/vessel.h"
@@ -70,6 +73,33 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
   if (worst >= 0) row.parameter_error = worst;
 }
 
+// The input map a job's method is fitted through: the method's "forces" ("none": the commands),
+// else the waterjet forces when the vessel logs its jets' states and the method takes inputs
+// as channels (not a vessel model, nor the inputs named by hand).
+std::string ForcesFor(const FitJob& job) {
+  const nlohmann::json& o = job.method.options;
+  if (o.contains("forces")) return o["forces"] == "none" ? "" : o["forces"].get<std::string>();
+  static const std::set<std::string> kChannelMethods = {"gp", "sindy", "fossen-ceres", "eb-lr"};
+  if (job.vessel.empty() || o.contains("inputs") || !kChannelMethods.contains(job.method.method))
+    return "";
+  const std::vector<std::string>& states = FindVessel(job.vessel).Info().states;
+  for (const std::string& c : kWaterjetStateChannels)
+    if (std::ranges::find(states, c) == states.end()) return "";
+  return "waterjet";
+}
+
+// What a row's model was driven by: its inputs, and the force map that derived them.
+std::string InputsOf(const nlohmann::json& model) {
+  std::string text;
+  if (model.contains("preprocessing") &&
+      model["preprocessing"].value("forces", nlohmann::json()).is_string())
+    text = "forces " + model["preprocessing"]["forces"].get<std::string>() + ": ";
+  if (!model.contains("inputs")) return text;
+  for (size_t i = 0; i < model["inputs"].size(); ++i)
+    text += (i ? "," : "") + model["inputs"][i].get<std::string>();
+  return text;
+}
+
 IdentifyRequest RequestFor(const FitJob& job) {
   IdentifyRequest r;
   r.method = job.method.method;
@@ -93,6 +123,7 @@ IdentifyRequest RequestFor(const FitJob& job) {
   r.fossen_mode = o.value("fit", r.fossen_mode);
   r.segment_s = o.value("segment_s", r.segment_s);
   r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
+  r.preprocess.forces = ForcesFor(job);
   r.prior_sd = o.value("prior_sd", r.prior_sd);
   if (o.contains("refit_params"))
     r.refit_params = o["refit_params"].get<std::vector<std::string>>();
@@ -162,6 +193,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
     ResultRow row = base;
     row.test_maneuver = test;
     row.model = model;
+    row.inputs = InputsOf(model);
     if (!failure.empty()) {
       row.status = failure;
       rows.push_back(row);

@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "preprocessing/waterjet_forces.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -20,10 +21,10 @@ std::vector<T> ListOf(const nlohmann::json& v, const std::string& where) {
   std::vector<T> out;
   for (const auto& item : v) {
     // Integers must be integers in range: nlohmann would turn 1e128 or -1 into some uint64_t.
-    const bool fits = !std::is_integral_v<T> ||
-                      (item.is_number_integer() && (!std::is_unsigned_v<T> ||
-                                                    item.is_number_unsigned() ||
-                                                    item.get<int64_t>() >= 0));
+    const bool fits =
+        !std::is_integral_v<T> ||
+        (item.is_number_integer() &&
+         (!std::is_unsigned_v<T> || item.is_number_unsigned() || item.get<int64_t>() >= 0));
     try {
       if (!fits) throw InputError("");
       out.push_back(item.get<T>());
@@ -39,16 +40,24 @@ std::vector<T> ListOf(const nlohmann::json& v, const std::string& where) {
 enum class OptionKind { kText, kCount, kNumber, kNames };
 const std::map<std::string, OptionKind>& MethodOptions() {
   static const std::map<std::string, OptionKind> options = {
-      {"operators", OptionKind::kText},       {"population", OptionKind::kCount},
-      {"generations", OptionKind::kCount},    {"max_depth", OptionKind::kCount},
-      {"ols_threshold", OptionKind::kNumber}, {"fit", OptionKind::kText},
-      {"segment_s", OptionKind::kNumber},     {"rate", OptionKind::kNumber},
-      {"prior_sd", OptionKind::kNumber},      {"refit_params", OptionKind::kNames},
-      {"states", OptionKind::kNames},         {"inputs", OptionKind::kNames},
-      {"causes", OptionKind::kCount},         {"preset", OptionKind::kText},
+      {"operators", OptionKind::kText},
+      {"population", OptionKind::kCount},
+      {"generations", OptionKind::kCount},
+      {"max_depth", OptionKind::kCount},
+      {"ols_threshold", OptionKind::kNumber},
+      {"fit", OptionKind::kText},
+      {"segment_s", OptionKind::kNumber},
+      {"rate", OptionKind::kNumber},
+      {"prior_sd", OptionKind::kNumber},
+      {"refit_params", OptionKind::kNames},
+      {"states", OptionKind::kNames},
+      {"inputs", OptionKind::kNames},
+      {"causes", OptionKind::kCount},
+      {"preset", OptionKind::kText},
       {"validation_fraction", OptionKind::kNumber},
       {"constant_iterations", OptionKind::kCount},
-      {"restarts", OptionKind::kCount}};
+      {"restarts", OptionKind::kCount},
+      {"forces", OptionKind::kText}};
   return options;
 }
 
@@ -73,17 +82,16 @@ void CheckMethodOptions(const nlohmann::json& options, const std::string& where)
         ok = value.is_number() && std::isfinite(value.get<double>()) && value.get<double>() >= 0;
         break;
       case OptionKind::kNames:
-        ok = value.is_array() && std::all_of(value.begin(), value.end(),
-                                             [](const auto& n) { return n.is_string(); });
+        ok = value.is_array() &&
+             std::all_of(value.begin(), value.end(), [](const auto& n) { return n.is_string(); });
         break;
     }
     if (!ok)
       throw InputError(where + ": option '" + key + "' " + value.dump() + " must be " +
-                       (known->second == OptionKind::kText    ? "a string"
-                        : known->second == OptionKind::kCount ? "a whole number from 0 to 1e9"
-                        : known->second == OptionKind::kNumber
-                            ? "a finite number >= 0"
-                            : "a list of names"));
+                       (known->second == OptionKind::kText     ? "a string"
+                        : known->second == OptionKind::kCount  ? "a whole number from 0 to 1e9"
+                        : known->second == OptionKind::kNumber ? "a finite number >= 0"
+                                                               : "a list of names"));
   }
 }
 
@@ -182,6 +190,8 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
       throw InputError(file + ": methods: unknown method '" + sm.method +
                        "' (known: " + kKnownMethods + ")");
     CheckMethodOptions(sm.options, file + ": methods: " + sm.method);
+    if (sm.options.contains("forces") && sm.options["forces"] != "none")
+      ForceChannels(sm.options["forces"].get<std::string>());  // throws for an unknown map
     s.methods.push_back(sm);
   }
   s.noise = v.contains("noise") ? ListOf<double>(v["noise"], file + ": noise")

@@ -150,6 +150,53 @@ TEST_F(SuiteTest, RunGivesTheSameRowsAtAnyThreadCount) {
   EXPECT_EQ(ResultsCsv(one).substr(0, 6), "vessel");
 }
 
+// The input representation (issue 19): on a vessel that logs its jets, a method that takes its
+// inputs as channels is fitted on the waterjet map's forces unless it says "forces": "none", and
+// every row says which inputs drove its model; an unknown map is refused.
+TEST_F(SuiteTest, RowsSayWhichInputsDroveTheModel) {
+  nlohmann::json s = {{"name", "jets"},
+                      {"vessels", {"odin-hs"}},
+                      {"train_maneuvers", {"random-steps"}},
+                      {"test_maneuvers", {"random-steps"}},
+                      {"methods", {"sindy", {{"method", "sindy"}, {"forces", "none"}}}},
+                      {"train_seconds", 60},
+                      {"test_seconds", 30}};
+  const std::vector<ResultRow> rows = RunSuite(ParseSuite(s, "s.json"), 1);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].inputs, "forces waterjet: tau_x,tau_y,tau_n,jet_flow") << rows[0].status;
+  EXPECT_EQ(rows[1].inputs, "throttle,nozzle,bucket") << rows[1].status;
+  EXPECT_EQ(rows[0].ToJson().at("inputs"), rows[0].inputs);
+  s["methods"] = {{{"method", "sindy"}, {"forces", "magic"}}};
+  EXPECT_THROW(ParseSuite(s, "s.json"), InputError);
+}
+
+// results.csv is RFC 4180: a field with a comma (GP's label gp[+,-,*,abs], the inputs) is quoted,
+// so every row has as many fields as the header.
+TEST_F(SuiteTest, ResultsCsvQuotesFieldsWithCommas) {
+  ResultRow row;
+  row.vessel = "odin-hs";
+  row.method = "gp[+,-,*,abs]";
+  row.inputs = "forces waterjet: tau_x,tau_y,tau_n,jet_flow";
+  row.status = "failed: \"x\", y";
+  const std::string csv = ResultsCsv({row});
+  EXPECT_THAT(csv,
+              HasSubstr(",\"gp[+,-,*,abs]\",\"forces waterjet: tau_x,tau_y,tau_n,jet_flow\","));
+  // Count the fields outside quotes on each line.
+  std::vector<int> fields;
+  int count = 1;
+  bool quoted = false;
+  for (char c : csv) {
+    if (c == '"') quoted = !quoted;
+    if (!quoted && c == ',') ++count;
+    if (!quoted && c == '\n') {
+      fields.push_back(count);
+      count = 1;
+    }
+  }
+  ASSERT_EQ(fields.size(), 2u);
+  EXPECT_EQ(fields[0], fields[1]);
+}
+
 // A suite on measured files: the entries are read strictly, paths are taken from the suite
 // file's folder, and the simulated-suite fields do not apply.
 TEST_F(SuiteTest, MeasuredDataSuitesAreReadStrictly) {
