@@ -257,7 +257,11 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
       if (a.thrust_input < 0)
         throw InputError("--method eb-lr: vessel " + o.vessel + " has no thrust input");
       states = variables = {"U", "r"};
-      inputs = {a.input_names[a.thrust_input], a.input_names[a.yaw_input]};
+      // Through a force map: the jets' thrust and yaw moment in place of the commands.
+      inputs = o.preprocess.forces.empty()
+                   ? std::vector<std::string>{a.input_names[a.thrust_input],
+                                              a.input_names[a.yaw_input]}
+                   : std::vector<std::string>{"tau_x", "tau_n"};
     }
     if (states.size() != 2 || inputs.size() != 2)
       throw InputError("--method eb-lr: needs --states SPEED,RATE and --inputs THRUST,YAW");
@@ -276,7 +280,10 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
         "waterjet map (--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel "
         "kvlcc2)");
   const gp::GpIdentifyOptions gpo = GpOptionsFor(o);
-  const PreprocessOptions& pre = o.preprocess;
+  PreprocessOptions pre = o.preprocess;
+  // Forces from the actuators' states are continuous (slew-limited actuators): no input steps to
+  // break the derivative spline at; every slewing sample would count as one.
+  if (!pre.forces.empty()) pre.step_breaks = false;
   const PreparedData prepared = Preprocess(data, variables, inputs, pre);
   for (const std::string& note : prepared.notes) Log(log, note);
   nlohmann::json model = {

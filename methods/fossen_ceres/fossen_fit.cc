@@ -153,12 +153,13 @@ struct SegmentResidual {
   }
 };
 
-// Positive lower bounds (but for signed parameters); the scale-fixing parameter (if any) held
-// constant.
+// Positive lower bounds, or the model's smallest values (but for signed parameters); the
+// scale-fixing parameter (if any) held constant.
 template <typename Model>
-void Bound(ceres::Problem& problem, double* p) {
+void Bound(ceres::Problem& problem, double* p, const std::array<double, Model::kParams>& scale) {
   for (int i = 0; i < Model::kParams; ++i)
-    if (!Model::Signed(i)) problem.SetParameterLowerBound(p, i, 1e-6);
+    if (!Model::Signed(i))
+      problem.SetParameterLowerBound(p, i, std::max(1e-6, Model::MinValue(i) / scale[i]));
   if constexpr (Model::kFixedParam >= 0)
     problem.SetManifold(p, new ceres::SubsetManifold(Model::kParams, {Model::kFixedParam}));
 }
@@ -271,7 +272,7 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
         loss, p.data());
   }
   AddPenalty<Model>(problem, p.data(), param_scale, scale[0]);
-  Bound<Model>(problem, p.data());
+  Bound<Model>(problem, p.data(), param_scale);
   BasicFossenFit<kParams> fit;
   Solve<Model>(problem, options, p.data(), param_scale, fit);
   return fit;
@@ -330,7 +331,7 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
   }
   problem.SetParameterBlockConstant(x0[segments].data());
   AddPenalty<Model>(problem, p.data(), param_scale, Sd(d[std::string(Model::kInputNames[0])]));
-  Bound<Model>(problem, p.data());
+  Bound<Model>(problem, p.data(), param_scale);
   BasicFossenFit<kParams> fit;
   Solve<Model>(problem, options, p.data(), param_scale, fit);
   return fit;

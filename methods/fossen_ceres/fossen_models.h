@@ -41,6 +41,8 @@ struct FossenModelBase {
 
   static constexpr int kPenaltyResiduals = 0;  // prior residuals (JetForceModel's smoothness)
   static constexpr bool Signed(int i) { return i == Model::kSignedParam; }
+  // The smallest physical value of an unsigned parameter (0: only positive).
+  static constexpr double MinValue(int /*i*/) { return 0.0; }
 
   // Odin3Dof's dynamics driven by tau(in; p); p starts with odin3dof's 10 parameters.
   template <typename T>

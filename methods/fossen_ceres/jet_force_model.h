@@ -42,7 +42,7 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   static constexpr double kKnotSpacing = 0.5;  // [m/s]
   static constexpr int kFirstKnot = 20;        // the parameter of c(0)
   static constexpr int kParams = kFirstKnot + kKnots;
-  static constexpr int kPenaltyResiduals = kKnots - 2;
+  static constexpr int kPenaltyResiduals = kKnots - 1;
   static constexpr bool kAccelerationResidual = false;  // tau is measured: residual in forces
   static constexpr int kFixedParam = -1;
   static constexpr double kSpeedEps = 1e-3;  // [m/s] keeps U differentiable at rest
@@ -78,6 +78,10 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   static constexpr bool Signed(int i) {
     return i == 8 || i == 9 || i == 11 || i == 12 || i == 13 || i == 17 || i == 18 || i == 19;
   }
+
+  // The inertias are at least a tenth of a 5 t boat's: a record at one throttle (a zig-zag) lets
+  // the equation error trade inertia for damping down to no mass at all.
+  static constexpr double MinValue(int i) { return i < 3 ? 0.1 * kStart[i] : 0.0; }
 
   // c(U): the piecewise-linear resistance coefficient [kg/m] through the knots, held at the last
   // knot's value above it. Only the two hats around U are non-zero, so only they are evaluated.
@@ -126,13 +130,13 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
     for (int i = 0; i < 3; ++i) dx[3 + i] = (tau[i] - h[i]) / p[i];
   }
 
-  // Second differences of c(U) over the knots, in newtons at each knot's speed.
+  // First differences of c(U) over the knots, in newtons at each knot's speed: where the data
+  // say nothing, c(U) stays at its neighbours' value (resistance ~ U^2 beyond the data).
   template <typename T>
   static void Penalty(const T* p, T* res) {
-    for (int k = 1; k + 1 < kKnots; ++k) {
-      const double speed = kKnotSpacing * k;
-      res[k - 1] =
-          (p[kFirstKnot + k - 1] - 2.0 * p[kFirstKnot + k] + p[kFirstKnot + k + 1]) * speed * speed;
+    for (int k = 0; k + 1 < kKnots; ++k) {
+      const double speed = kKnotSpacing * (k + 1);
+      res[k] = (p[kFirstKnot + k + 1] - p[kFirstKnot + k]) * speed * speed;
     }
   }
 
