@@ -257,11 +257,7 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
       if (a.thrust_input < 0)
         throw InputError("--method eb-lr: vessel " + o.vessel + " has no thrust input");
       states = variables = {"U", "r"};
-      // Through a force map: the jets' thrust and yaw moment in place of the commands.
-      inputs = o.preprocess.forces.empty()
-                   ? std::vector<std::string>{a.input_names[a.thrust_input],
-                                              a.input_names[a.yaw_input]}
-                   : std::vector<std::string>{"tau_x", "tau_n"};
+      inputs = {a.input_names[a.thrust_input], a.input_names[a.yaw_input]};
     }
     if (states.size() != 2 || inputs.size() != 2)
       throw InputError("--method eb-lr: needs --states SPEED,RATE and --inputs THRUST,YAW");

@@ -172,7 +172,7 @@ void Solve(ceres::Problem& problem, const FossenOptions& o, double* p,
   so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   so.max_num_iterations = o.max_iterations;
   so.num_threads = o.threads;
-  so.function_tolerance = o.function_tolerance;
+  so.function_tolerance = std::max(o.function_tolerance, Model::kFunctionTolerance);
   so.parameter_tolerance = Model::kParameterTolerance;
   so.gradient_tolerance = 1e-14;
   ceres::Solver::Summary summary;
@@ -272,9 +272,16 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
         loss, p.data());
   }
   AddPenalty<Model>(problem, p.data(), param_scale, scale[0]);
-  Bound<Model>(problem, p.data(), param_scale);
+  // A model linear in its parameters (measured forces, no held parameter) is solved without its
+  // bounds, in a couple of steps; the bounds would have Ceres crawl along them for a hundred. The
+  // shooting fit that follows starts from the solution moved inside them.
+  if constexpr (!Model::kLinearEquationError) Bound<Model>(problem, p.data(), param_scale);
   BasicFossenFit<kParams> fit;
   Solve<Model>(problem, options, p.data(), param_scale, fit);
+  if constexpr (Model::kLinearEquationError)
+    for (int i = 0; i < kParams; ++i)
+      if (!Model::Signed(i))
+        fit.params[i] = std::max(fit.params[i], std::max(1e-6, Model::MinValue(i)));
   return fit;
 }
 

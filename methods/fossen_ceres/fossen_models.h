@@ -39,6 +39,8 @@ struct FossenModelBase {
   static constexpr std::array<std::string_view, kStates> kStateNames = Odin3Dof::kStateNames;
   static constexpr int kThrustInput = 0, kRateState = 5, kHeadingState = 2;
 
+  static constexpr bool kLinearEquationError = false;  // solve the equation error unbounded
+  static constexpr double kFunctionTolerance = 0.0;     // Ceres stops no earlier than this
   static constexpr int kPenaltyResiduals = 0;  // prior residuals (JetForceModel's smoothness)
   static constexpr bool Signed(int i) { return i == Model::kSignedParam; }
   // The smallest physical value of an unsigned parameter (0: only positive).
