@@ -143,6 +143,26 @@ TEST_F(IdentifyCliTest, WaterjetForcesFromTheJetStatesDriveIdentifyAndEvaluate) 
     EXPECT_TRUE(metrics.at("channels").at(c).at("fit_percent").is_number()) << c;
 }
 
+// fossen-ceres through --forces waterjet with the vessel's defaults: the inputs are the map's
+// forces and jet flow, and the model is the high-speed form (speed-dependent damping).
+TEST_F(IdentifyCliTest, FossenOnTheJetForcesIsTheHighSpeedForm) {
+  const auto train = (dir_ / "hs_f.csv").string(), model = (dir_ / "hs_f.json").string();
+  ASSERT_EQ(RunUsvid("simulate --vessel odin-hs --maneuver random-steps --duration 60 --seed 3 "
+                     "--out " +
+                     train)
+                .exit_code,
+            0);
+  const auto r = RunUsvid(
+      "identify --method fossen-ceres --vessel odin-hs --forces waterjet "
+      "--rate 5 --fit equation --data " +
+      train + " --out " + model);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = ReadJsonFile(model);
+  EXPECT_EQ(m.at("inputs"), nlohmann::json({"tau_x", "tau_y", "tau_n", "jet_flow"}));
+  EXPECT_EQ(m.at("fossen").at("model"), "fossen-jet");
+  EXPECT_TRUE(m.at("parameters").contains("c10"));  // c(U) at 10 m/s
+}
+
 // Bad options: exit 2, the option named, no model written.
 TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
   const auto out = (dir_ / "bad.json").string();
