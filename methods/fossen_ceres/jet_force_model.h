@@ -3,7 +3,7 @@
 // total jet flow jet_flow Q [m^3/s]), with damping that depends on speed as far as the data
 // support it (issue 19). In calm water, nu = [u v r], U = sqrt(u^2 + v^2 + eps^2):
 //
-//   m11 u' = tau_x + Xvr v r - (Xu + XQ Q + c(U) U) u
+//   m11 u' = tau_x + Xvr v r - (XQ Q + c(U) U) u
 //   m22 v' = tau_y - m11 u r - (Yv + YUv U + YQv Q) v - Yvv |v| v - (Yr + YUr U + YQr Q) r
 //   m33 r' = tau_n - (m22 - m11) u v - (Nv + NUv U + NQv Q) v - (Nr + NUr U + NQr Q) r
 //            - Nrr |r| r
@@ -43,7 +43,7 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   static constexpr int kInputs = 4, kYawInput = 2;
   static constexpr int kKnots = 41;            // c(U) at U = 0, 0.5, ..., 20 m/s
   static constexpr double kKnotSpacing = 0.5;  // [m/s]
-  static constexpr int kFirstKnot = 20;        // the parameter of c(0)
+  static constexpr int kFirstKnot = 19;        // the parameter of c(0)
   static constexpr int kParams = kFirstKnot + kKnots;
   static constexpr int kPenaltyResiduals = kKnots - 1;
   static constexpr bool kAccelerationResidual = false;  // tau is measured: residual in forces
@@ -57,7 +57,7 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   static constexpr std::array<std::string_view, kInputs> kInputNames = {"tau_x", "tau_y", "tau_n",
                                                                         "jet_flow"};
   static constexpr std::array<std::string_view, kParams> kParamNames = {
-      "m11",   "m22",   "m33",   "Xu",    "XQ",    "Yv",    "YUv",   "Yvv",   "Yr",
+      "m11",   "m22",   "m33",   "XQ",    "Yv",    "YUv",   "Yvv",   "Yr",
       "YUr",   "YQv",   "YQr",   "Nv",    "NUv",   "Nr",    "NUr",   "Nrr",   "NQv",
       "NQr",   "Xvr",   "c0",    "c0_5",  "c1",    "c1_5",  "c2",    "c2_5",  "c3",
       "c3_5",  "c4",    "c4_5",  "c5",    "c5_5",  "c6",    "c6_5",  "c7",    "c7_5",
@@ -67,8 +67,8 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   // The equation-error fit is linear in the parameters, so any start converges; these are of the
   // right order for a 5 t boat.
   static constexpr std::array<double, kParams> kStart = [] {
-    std::array<double, kParams> p{5000, 5000, 20000, 10, 500,  500,  500, 1000, 0, 0,
-                                  500,  0,    0,     0,  3000, 3000, 1e4, 0,    0, 5000};
+    std::array<double, kParams> p{5000, 5000, 20000, 500, 500,  500, 1000, 0,    0, 500,
+                                  0,    0,    0,     3000, 3000, 1e4, 0,   0,    5000};
     for (int k = 0; k < kKnots; ++k) p[kFirstKnot + k] = 50.0;  // R / U^2 [kg/m]
     return p;
   }();
@@ -84,7 +84,7 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
 
   // Cross-coupling and inlet terms whose sign the physics does not fix.
   static constexpr bool Signed(int i) {
-    return i == 8 || i == 9 || i == 11 || i == 12 || i == 13 || i == 17 || i == 18 || i == 19;
+    return i == 7 || i == 8 || i == 10 || i == 11 || i == 12 || i == 16 || i == 17 || i == 18;
   }
 
   // The inertias are at least a tenth of a 5 t boat's: a record at one throttle (a zig-zag) lets
@@ -114,11 +114,11 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
     using std::sqrt;
     const T speed = sqrt(u * u + v * v + kSpeedEps * kSpeedEps);
     const T& q = in[3];
-    h[0] = -p[19] * v * r + (p[3] + p[4] * q + Resistance(p, speed) * speed) * u;
-    h[1] = p[0] * u * r + (p[5] + p[6] * speed + p[10] * q) * v + p[7] * abs(v) * v +
-           (p[8] + p[9] * speed + p[11] * q) * r;
-    h[2] = (p[1] - p[0]) * u * v + (p[12] + p[13] * speed + p[17] * q) * v +
-           (p[14] + p[15] * speed + p[18] * q) * r + p[16] * abs(r) * r;
+    h[0] = -p[18] * v * r + (p[3] * q + Resistance(p, speed) * speed) * u;
+    h[1] = p[0] * u * r + (p[4] + p[5] * speed + p[9] * q) * v + p[6] * abs(v) * v +
+           (p[7] + p[8] * speed + p[10] * q) * r;
+    h[2] = (p[1] - p[0]) * u * v + (p[11] + p[12] * speed + p[16] * q) * v +
+           (p[13] + p[14] * speed + p[17] * q) * r + p[15] * abs(r) * r;
   }
 
   template <typename T>
@@ -164,15 +164,15 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
            ")/" + FormatNumber(2.0 * h);
     }
     if (i == 0)
-      return "(tau_x + " + n(p[19]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) + "*jet_flow + (" + c +
-             ")*" + speed + ")*u) / " + n(p[0]);
+      return "(tau_x + " + n(p[18]) + "*v*r - (" + n(p[3]) + "*jet_flow + (" + c + ")*" + speed +
+             ")*u) / " + n(p[0]);
     if (i == 1)
-      return "(tau_y - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) + "*" + speed + " + " +
-             n(p[10]) + "*jet_flow)*v - " + n(p[7]) + "*abs(v)*v - (" + n(p[8]) + " + " + n(p[9]) +
-             "*" + speed + " + " + n(p[11]) + "*jet_flow)*r) / " + n(p[1]);
-    return "(tau_n - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - (" + n(p[12]) + " + " + n(p[13]) +
-           "*" + speed + " + " + n(p[17]) + "*jet_flow)*v - (" + n(p[14]) + " + " + n(p[15]) + "*" +
-           speed + " + " + n(p[18]) + "*jet_flow)*r - " + n(p[16]) + "*abs(r)*r) / " + n(p[2]);
+      return "(tau_y - " + n(p[0]) + "*u*r - (" + n(p[4]) + " + " + n(p[5]) + "*" + speed + " + " +
+             n(p[9]) + "*jet_flow)*v - " + n(p[6]) + "*abs(v)*v - (" + n(p[7]) + " + " + n(p[8]) +
+             "*" + speed + " + " + n(p[10]) + "*jet_flow)*r) / " + n(p[1]);
+    return "(tau_n - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - (" + n(p[11]) + " + " + n(p[12]) +
+           "*" + speed + " + " + n(p[16]) + "*jet_flow)*v - (" + n(p[13]) + " + " + n(p[14]) + "*" +
+           speed + " + " + n(p[17]) + "*jet_flow)*r - " + n(p[15]) + "*abs(r)*r) / " + n(p[2]);
   }
 };
 
