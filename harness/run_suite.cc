@@ -111,6 +111,7 @@ IdentifyRequest RequestFor(const FitJob& job) {
   const nlohmann::json& o = job.method.options;
   r.operators = o.value("operators", r.operators);
   r.preset = o.value("preset", r.preset);
+  r.features = o.value("features", r.features);
   auto set = [&](const char* key, auto& field) {
     if (o.contains(key)) field = o[key].get<typename std::decay_t<decltype(field)>::value_type>();
   };

@@ -57,7 +57,8 @@ const std::map<std::string, OptionKind>& MethodOptions() {
       {"validation_fraction", OptionKind::kNumber},
       {"constant_iterations", OptionKind::kCount},
       {"restarts", OptionKind::kCount},
-      {"forces", OptionKind::kText}};
+      {"forces", OptionKind::kText},
+      {"features", OptionKind::kText}};
   return options;
 }
 

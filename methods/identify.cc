@@ -18,6 +18,7 @@
 #include "methods/refit/refit.h"
 #include "methods/sindy/sindy.h"
 #include "preprocessing/delay_estimation.h"
+#include "methods/regime_features.h"
 #include "preprocessing/waterjet_forces.h"
 #include "simulation/segment_error.h"
 #include "simulation/vessel_simulator.h"
@@ -275,13 +276,19 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
         "damping (--vessel odin-hs --forces waterjet), throttle,nozzle,bucket through a "
         "waterjet map (--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel "
         "kvlcc2)");
-  const gp::GpIdentifyOptions gpo = GpOptionsFor(o);
+  gp::GpIdentifyOptions gpo = GpOptionsFor(o);
   PreprocessOptions pre = o.preprocess;
   // Forces from the actuators' states are continuous (slew-limited actuators): no input steps to
   // break the derivative spline at; every slewing sample would count as one.
   if (!pre.forces.empty()) pre.step_breaks = false;
   const PreparedData prepared = Preprocess(data, variables, inputs, pre);
   for (const std::string& note : prepared.notes) Log(log, note);
+  if (o.method == "gp") {
+    const double length = o.vessel.empty() ? 0.0 : FindVessel(o.vessel).Info().length_m;
+    gpo.features = RegimeFeatures(o.features, length, prepared.data);
+  } else if (o.features != "auto") {
+    throw InputError("--features: only gp takes regime features");
+  }
   nlohmann::json model = {
       {"method", o.method},
       {"vessel", o.vessel},
@@ -346,8 +353,11 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     const gp::GpOptions& so = gpo.search;
     model["parameters"] = gp.parameters;
     model["equations"] = gp.equations;
+    nlohmann::json features = nlohmann::json::object();
+    for (const DerivedVariable& f : gpo.features) features[f.name] = f.expression;
     model["gp"] = {{"preset", o.preset},
                    {"operators", gp::OperatorList(so.functions)},
+                   {"features", features},
                    {"population", so.population},
                    {"generations", so.generations},
                    {"max_depth", so.max_depth},

@@ -29,6 +29,8 @@ struct IdentifyRequest {
   std::optional<int> population, generations, max_depth, restarts, constant_iterations;
   std::optional<double> ols_threshold, validation_fraction;
   std::string fitness = "r2";
+  // Regime features (regime_features.h): auto, froude or none.
+  std::string features = "auto";
   std::optional<long> fit_rows;
   uint64_t seed = 1;
   int threads = 0;

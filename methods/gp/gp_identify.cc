@@ -67,6 +67,23 @@ GpIdentification IdentifyWithGp(
       all.names.push_back(n);
       all.variables.push_back(prepared.data[n]);
     }
+  // A feature is named by its expression in parentheses, so that every equation written is in
+  // channel names, and is computed from the variables it names (which must be among them).
+  std::vector<DerivedColumn> derived;
+  for (const DerivedVariable& f : options.features) {
+    DerivedColumn d{static_cast<int>(all.names.size()),
+                    Expression::Parse(f.expression, "feature " + f.name), {}};
+    for (const std::string& arg : d.expression.Variables()) {
+      const auto it = std::find(all.names.begin(), all.names.end(), arg);
+      if (it == all.names.end())
+        throw InputError("gp: feature " + f.name + " = " + f.expression + " needs variable '" +
+                         arg + "'");
+      d.arguments.push_back(static_cast<int>(it - all.names.begin()));
+    }
+    all.names.push_back("(" + f.expression + ")");
+    all.variables.push_back(d.expression.Evaluate(prepared.data));
+    derived.push_back(std::move(d));
+  }
   const long rows = prepared.data.rows();
   const double f = options.validation_fraction;
   const long train_rows = f > 0 ? std::lround((1.0 - f) * static_cast<double>(rows)) : rows;
@@ -98,7 +115,8 @@ GpIdentification IdentifyWithGp(
                         return std::find(all.names.begin(), all.names.end(), s) != all.names.end();
                       });
   if (select) {
-    SelectionData data{prepared.data.t(), all.names, all.variables, train_rows, options.horizon_s};
+    SelectionData data{prepared.data.t(), all.names, all.variables, train_rows, options.horizon_s,
+                       derived};
     selection = SelectModels(data, candidates);
   }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "methods/gp/search.h"
+#include "methods/regime_features.h"
 #include "preprocessing/pipeline.h"
 
 namespace usvid::gp {
@@ -25,6 +26,10 @@ struct GpIdentifyOptions {
   GpOptions search;
   double validation_fraction = 0.2;  // the record's last part; 0: the search's best is kept
   double horizon_s = 10.0;           // of the short-horizon simulations
+  // Variables computed from the states (regime_features.h): searched like any other, written
+  // into the equations as their expressions, recomputed from the simulated states when
+  // candidates are simulated.
+  std::vector<DerivedVariable> features;
 };
 
 struct GpIdentification {
@@ -35,7 +40,8 @@ struct GpIdentification {
 };
 
 // One equation per state in `states`; the variables are `variables` (states that enter the
-// dynamics, e.g. the msd's position x, which needs no equation of its own) and `inputs`.
+// dynamics, e.g. the msd's position x, which needs no equation of its own), `inputs` and
+// options.features. Throws InputError for a feature whose expression names a missing channel.
 // progress(state, log) after each generation.
 GpIdentification IdentifyWithGp(
     const PreparedData& prepared, const std::vector<std::string>& states,

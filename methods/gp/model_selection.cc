@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "core/error.h"
 #include "methods/gp/interpreter.h"
@@ -44,6 +45,7 @@ class SegmentSimulator {
       std::vector<const double*> pointers;
       for (const auto& c : cols) pointers.push_back(c.data());
       Interpreter<double> interp(pointers);
+      std::vector<double> args(data_.names.size());  // a derived column's arguments at one row
       Eigen::ArrayXXd x(ns, count), k1(ns, count), k2(ns, count), k3(ns, count), k4(ns, count);
       std::vector<bool> active(count, true);
       for (int j = 0; j < count; ++j)
@@ -53,6 +55,11 @@ class SegmentSimulator {
           for (int j = 0; j < count; ++j)
             cols[v][j] = is_state_[v] >= 0 ? state(is_state_[v], j)
                                            : data_.variables[v](starts[first + j] + k);
+        for (const DerivedColumn& d : data_.derived)
+          for (int j = 0; j < count; ++j) {
+            for (size_t a = 0; a < d.arguments.size(); ++a) args[a] = cols[d.arguments[a]][j];
+            cols[d.index][j] = d.expression.Evaluate(std::span<const double>(args.data(), d.arguments.size()));
+          }
         for (int s = 0; s < ns; ++s) {
           const Model& m = *models[s];
           interp.Evaluate(m.tree, 0, count);

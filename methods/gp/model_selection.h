@@ -23,9 +23,18 @@
 #include <string>
 #include <vector>
 
+#include "methods/expression.h"
 #include "methods/gp/search.h"
 
 namespace usvid::gp {
+
+// A variable computed from others (a regime feature): recomputed in every simulation step from
+// the simulated states and the measured rest.
+struct DerivedColumn {
+  int index = 0;               // into SelectionData::names
+  Expression expression;       // of the variables `arguments`
+  std::vector<int> arguments;  // into names, in the order of expression.Variables()
+};
 
 struct SelectionData {
   Eigen::VectorXd t;
@@ -33,6 +42,7 @@ struct SelectionData {
   std::vector<Eigen::VectorXd> variables;  // every row
   long validation_begin = 0;               // the rows [validation_begin, end) score candidates
   double horizon_s = 10.0;
+  std::vector<DerivedColumn> derived;  // computed after the states, in this order
 };
 
 struct StateCandidates {

@@ -180,6 +180,9 @@ TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
       {"--method gp --vessel msd --ols-threshold 1.5", "--ols-threshold"},
       {"--method gp --states v --inputs tau_x --forces waterjet",
        "the data lack rpm, nozzle_angle, bucket_position"},
+      {"--method gp --vessel msd --features froude", "the vessel has no hull length"},
+      {"--method gp --vessel msd --features speed", "--features"},
+      {"--method sindy --vessel msd --features froude", "only gp takes regime features"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = RunUsvid("identify " + args + " --data " + data_ + " --out " + out);

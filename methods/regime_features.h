@@ -1,0 +1,39 @@
+// Regime features: variables that the regression methods may use besides the states and
+// inputs, computed from the states, so that a free run recomputes them from the simulated
+// states (issue 19; docs/vessels/odin-hs.md, "Identifying it").
+//
+// A planing hull's resistance and damping change with its regime, and the regime is set by the
+// Froude number Fn = U / sqrt(g L), U = sqrt(u^2 + v^2): displacement below Fn 0.4, planing
+// above 1.1. Fn is the speed in the units in which the regime boundaries are of order one. That
+// matters to GP-SR: its random and tuned constants are of order one, so with Fn as a variable it
+// can place a hinge abs(c - Fn) at a change of regime (odin-hs: c = 0.57, the resistance hump),
+// while the same hinge in u, at 6 m/s, was never found. The feature names the speed; the form of
+// the regime change (where, how sharp, on which forces) is left to the method.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/dataset.h"
+
+namespace usvid {
+
+// A variable `name` defined by `expression`, an expression in channel names (contract syntax).
+struct DerivedVariable {
+  std::string name;
+  std::string expression;
+};
+
+// The regime boundaries of the Froude number (displacement | semi-displacement | planing).
+inline constexpr double kDisplacementFroude = 0.4, kPlaningFroude = 1.1;
+
+// The features of `spec` for a hull of waterline length `length_m` (0: none known):
+//  "none": none;
+//  "froude": Fn = sqrt(u*u + v*v) / sqrt(g L) (needs a length and channels u and v);
+//  "auto": "froude" when there is a length, the data have u and v, and the record's Fn crosses
+//          a regime boundary (a record within one regime gains nothing from it), else "none".
+// Throws InputError for an unknown spec, or "froude" without a length or without u and v.
+std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double length_m,
+                                            const Dataset& data);
+
+}  // namespace usvid
