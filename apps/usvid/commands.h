@@ -11,6 +11,7 @@ void AddInfoCommand(CLI::App& app);
 void AddSimulateCommand(CLI::App& app);
 void AddVesselCommand(CLI::App& app);
 void AddPreprocessCommand(CLI::App& app);
+void AddActuatorsCommand(CLI::App& app);
 void AddIdentifyCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
 void AddCompareCommand(CLI::App& app);

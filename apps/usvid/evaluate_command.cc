@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "apps/usvid/commands.h"
+#include "apps/usvid/preprocess_options.h"
 #include "core/atomic_file.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
@@ -19,13 +20,15 @@ namespace {
 struct EvaluateOptions {
   std::string model;
   std::string data;
+  std::string actuators;
   std::string out;
 };
 
 void RunEvaluate(const EvaluateOptions& o) {
   const nlohmann::json model = ReadJsonFile(o.model);
   if (!model.is_object()) throw InputError(o.model + ": expected a JSON object");
-  const Dataset data = ReadDatasetCsv(o.data);
+  Dataset data = ReadDatasetCsv(o.data);
+  SimulateMissingActuators(data, o.actuators);
   Evaluation e;
   try {
     e = EvaluateModel(model, data);
@@ -65,6 +68,9 @@ void AddEvaluateCommand(CLI::App& app) {
       "evaluate", "Free-run a model on data's inputs and score it (fit %, NRMSE, divergence)");
   cmd->add_option("--model", o->model, "model.json from usvid identify")->required();
   cmd->add_option("--data", o->data, "Data CSV to score on")->required();
+  cmd->add_option("--actuators", o->actuators,
+                  "actuators.json from usvid actuators: actuator states the log lacks are "
+                  "simulated from its commands");
   cmd->add_option("--out", o->out, "Directory for metrics.json and plots (else stdout)");
   cmd->callback([o] { RunEvaluate(*o); });
 }

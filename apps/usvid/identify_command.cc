@@ -37,7 +37,8 @@ void RunIdentify(const IdentifyOptions& o) {
     if (r.vessel.empty()) throw InputError("--params: needs --vessel");
     r.start_params = FindVessel(r.vessel).Info().ParamsFromFile(o.params);
   }
-  const Dataset data = ReadDatasetCsv(o.data);
+  Dataset data = ReadDatasetCsv(o.data);
+  SimulateMissingActuators(data, o.pre.actuators);
   const nlohmann::json model = Identify(
       data, r, [](const std::string& line) { std::cerr << "usvid identify: " << line << '\n'; });
   WriteJsonFile(o.out, model);

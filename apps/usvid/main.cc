@@ -28,6 +28,7 @@ int Run(int argc, char** argv) {
   usvid::AddSimulateCommand(app);
   usvid::AddVesselCommand(app);
   usvid::AddPreprocessCommand(app);
+  usvid::AddActuatorsCommand(app);
   usvid::AddIdentifyCommand(app);
   usvid::AddEvaluateCommand(app);
   usvid::AddCompareCommand(app);

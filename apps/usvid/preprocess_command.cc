@@ -24,6 +24,7 @@ struct PreprocessCommandOptions {
 
 void RunPreprocess(const PreprocessCommandOptions& o) {
   Dataset data = ReadDatasetCsv(o.data);
+  SimulateMissingActuators(data, o.flags.actuators);
   AddForces(data, o.flags.forces);
   const PreparedData prepared = Preprocess(data, o.states, o.inputs, o.flags.Options());
   for (const std::string& note : prepared.notes) std::cerr << "usvid preprocess: " << note << '\n';

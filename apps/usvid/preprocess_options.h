@@ -5,11 +5,28 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "core/dataset.h"
 #include "core/error.h"
+#include "core/json_file.h"
 #include "core/parse_number.h"
+#include "preprocessing/actuator_dynamics.h"
 #include "preprocessing/pipeline.h"
 
 namespace usvid {
+
+// --actuators FILE (from `usvid actuators`): each actuator state that `data` lacks is simulated
+// from its command, so that a log of the commands alone can be turned into the jets' forces.
+// States the log records are kept as measured. Throws InputError naming the file or channel.
+inline void SimulateMissingActuators(Dataset& data, const std::string& file) {
+  if (file.empty()) return;
+  const nlohmann::json j = ReadJsonFile(file);
+  if (!j.is_object() || !j.contains("actuators"))
+    throw InputError(file + ": expected an object with \"actuators\" (from usvid actuators)");
+  std::vector<ActuatorModel> missing;
+  for (const ActuatorModel& m : ActuatorModelsFromJson(j["actuators"], file))
+    if (!data.Has(m.state)) missing.push_back(m);
+  SimulateActuators(data, missing);
+}
 
 struct PreprocessFlags {
   double rate_hz = 0.0;
@@ -19,6 +36,7 @@ struct PreprocessFlags {
   double max_delay_s = 2.0;
   bool no_step_breaks = false;
   std::string forces;  // "waterjet": jet forces from the jet states (preprocessing/waterjet_forces.h)
+  std::string actuators;  // actuators.json: jet states the log lacks, simulated from the commands
 
   void Add(CLI::App& cmd) {
     cmd.add_option("--rate", rate_hz, "Resample to this rate [Hz] (0: the data's own)");
@@ -34,6 +52,9 @@ struct PreprocessFlags {
                    "waterjet: add the jets' forces tau_x, tau_y, tau_n from the measured rpm, "
                    "nozzle_angle and bucket_position, for --inputs to name")
         ->check(CLI::IsMember({"waterjet"}));
+    cmd.add_option("--actuators", actuators,
+                   "actuators.json from usvid actuators: the actuator states the log lacks are "
+                   "simulated from its commands (a log of commands alone, with --forces)");
   }
 
   PreprocessOptions Options() const {
