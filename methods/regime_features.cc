@@ -14,14 +14,16 @@ std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double leng
     throw InputError("--features '" + spec + "': unknown (known: auto, froude, none)");
   const bool speeds = data.Has("u") && data.Has("v");
   if (spec == "froude" && !(length_m > 0))
-    throw InputError("--features froude: the vessel has no hull length (give --vessel odin-hs, "
-                     "or --features none)");
+    throw InputError(
+        "--features froude: the vessel has no hull length (give --vessel odin-hs, "
+        "or --features none)");
   if (spec == "froude" && !speeds)
     throw InputError("--features froude: the Froude number needs channels u and v");
   if (!(length_m > 0) || !speeds) return {};
   constexpr double kGravity = 9.81;  // [m/s^2]
   const double scale = std::sqrt(kGravity * length_m);
-  const Eigen::ArrayXd fn = (data["u"].array().square() + data["v"].array().square()).sqrt() / scale;
+  const Eigen::ArrayXd fn =
+      (data["u"].array().square() + data["v"].array().square()).sqrt() / scale;
   const bool crosses = fn.minCoeff() < kDisplacementFroude && fn.maxCoeff() > kDisplacementFroude;
   const bool planes = fn.minCoeff() < kPlaningFroude && fn.maxCoeff() > kPlaningFroude;
   if (spec == "auto" && !crosses && !planes) return {};

@@ -5,8 +5,8 @@
 // command is held has nothing to identify and is left out with a note. The file drives
 // `--actuators` of preprocess, identify and evaluate on logs that record the commands only.
 
-#include <fstream>
-#include <iomanip>
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -57,13 +57,13 @@ void RunActuators(const ActuatorsCommandOptions& o) {
               << (m.RateLimited() ? std::to_string(m.rate_max) + " /s" : "not shown") << '\n';
   }
   if (models.empty())
-    throw InputError(o.data + ": no actuator to identify: it needs a command and its state that "
+    throw InputError(o.data +
+                     ": no actuator to identify: it needs a command and its state that "
                      "moves (throttle and rpm, nozzle and nozzle_angle, bucket and "
                      "bucket_position)");
-  WriteFileAtomically(o.out, nlohmann::json{{"data", o.data},
-                                            {"actuators", ActuatorModelsToJson(models)}}
-                                 .dump(2) +
-                                 "\n");
+  WriteFileAtomically(
+      o.out,
+      nlohmann::json{{"data", o.data}, {"actuators", ActuatorModelsToJson(models)}}.dump(2) + "\n");
   std::cerr << "usvid actuators: wrote " << o.out << '\n';
 }
 

@@ -57,18 +57,17 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   static constexpr std::array<std::string_view, kInputs> kInputNames = {"tau_x", "tau_y", "tau_n",
                                                                         "jet_flow"};
   static constexpr std::array<std::string_view, kParams> kParamNames = {
-      "m11",   "m22",   "m33",   "XQ",    "Yv",    "YUv",   "Yvv",   "Yr",
-      "YUr",   "YQv",   "YQr",   "Nv",    "NUv",   "Nr",    "NUr",   "Nrr",   "NQv",
-      "NQr",   "Xvr",   "c0",    "c0_5",  "c1",    "c1_5",  "c2",    "c2_5",  "c3",
-      "c3_5",  "c4",    "c4_5",  "c5",    "c5_5",  "c6",    "c6_5",  "c7",    "c7_5",
-      "c8",    "c8_5",  "c9",    "c9_5",  "c10",   "c10_5", "c11",   "c11_5", "c12",
-      "c12_5", "c13",   "c13_5", "c14",   "c14_5", "c15",   "c15_5", "c16",   "c16_5",
-      "c17",   "c17_5", "c18",   "c18_5", "c19",   "c19_5", "c20"};
+      "m11",   "m22", "m33",   "XQ",  "Yv",    "YUv", "Yvv",   "Yr",  "YUr",   "YQv",
+      "YQr",   "Nv",  "NUv",   "Nr",  "NUr",   "Nrr", "NQv",   "NQr", "Xvr",   "c0",
+      "c0_5",  "c1",  "c1_5",  "c2",  "c2_5",  "c3",  "c3_5",  "c4",  "c4_5",  "c5",
+      "c5_5",  "c6",  "c6_5",  "c7",  "c7_5",  "c8",  "c8_5",  "c9",  "c9_5",  "c10",
+      "c10_5", "c11", "c11_5", "c12", "c12_5", "c13", "c13_5", "c14", "c14_5", "c15",
+      "c15_5", "c16", "c16_5", "c17", "c17_5", "c18", "c18_5", "c19", "c19_5", "c20"};
   // The equation-error fit is linear in the parameters, so any start converges; these are of the
   // right order for a 5 t boat.
   static constexpr std::array<double, kParams> kStart = [] {
-    std::array<double, kParams> p{5000, 5000, 20000, 500, 500,  500, 1000, 0,    0, 500,
-                                  0,    0,    0,     3000, 3000, 1e4, 0,   0,    5000};
+    std::array<double, kParams> p{5000, 5000, 20000, 500,  500,  500, 1000, 0, 0,   500,
+                                  0,    0,    0,     3000, 3000, 1e4, 0,    0, 5000};
     for (int k = 0; k < kKnots; ++k) p[kFirstKnot + k] = 50.0;  // R / U^2 [kg/m]
     return p;
   }();

@@ -72,7 +72,8 @@ GpIdentification IdentifyWithGp(
   std::vector<DerivedColumn> derived;
   for (const DerivedVariable& f : options.features) {
     DerivedColumn d{static_cast<int>(all.names.size()),
-                    Expression::Parse(f.expression, "feature " + f.name), {}};
+                    Expression::Parse(f.expression, "feature " + f.name),
+                    {}};
     for (const std::string& arg : d.expression.Variables()) {
       const auto it = std::find(all.names.begin(), all.names.end(), arg);
       if (it == all.names.end())
@@ -115,8 +116,8 @@ GpIdentification IdentifyWithGp(
                         return std::find(all.names.begin(), all.names.end(), s) != all.names.end();
                       });
   if (select) {
-    SelectionData data{prepared.data.t(), all.names, all.variables, train_rows, options.horizon_s,
-                       derived};
+    SelectionData data{prepared.data.t(), all.names,         all.variables,
+                       train_rows,        options.horizon_s, derived};
     selection = SelectModels(data, candidates);
   }
 

@@ -58,7 +58,8 @@ class SegmentSimulator {
         for (const DerivedColumn& d : data_.derived)
           for (int j = 0; j < count; ++j) {
             for (size_t a = 0; a < d.arguments.size(); ++a) args[a] = cols[d.arguments[a]][j];
-            cols[d.index][j] = d.expression.Evaluate(std::span<const double>(args.data(), d.arguments.size()));
+            cols[d.index][j] =
+                d.expression.Evaluate(std::span<const double>(args.data(), d.arguments.size()));
           }
         for (int s = 0; s < ns; ++s) {
           const Model& m = *models[s];

@@ -172,7 +172,8 @@ TEST_F(IdentifyCliTest, ActuatorModelsDriveTheJetForcesOfALogOfCommandsAlone) {
   const auto full = (dir_ / "hs_full.csv").string(), commands = (dir_ / "hs_cmd.csv").string(),
              actuators = (dir_ / "actuators.json").string();
   ASSERT_EQ(RunUsvid("simulate --vessel odin-hs --maneuver random-steps --duration 120 --seed 4 "
-                     "--out " + full)
+                     "--out " +
+                     full)
                 .exit_code,
             0);
   const auto a = RunUsvid("actuators --data " + full + " --out " + actuators);
@@ -193,8 +194,8 @@ TEST_F(IdentifyCliTest, ActuatorModelsDriveTheJetForcesOfALogOfCommandsAlone) {
   const auto refused = RunUsvid("preprocess --data " + commands + pre + (dir_ / "x.csv").string());
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_THAT(refused.err, HasSubstr("the data lack rpm, nozzle_angle"));
-  ASSERT_EQ(RunUsvid("preprocess --data " + full + pre + (dir_ / "measured.csv").string()).exit_code,
-            0);
+  ASSERT_EQ(
+      RunUsvid("preprocess --data " + full + pre + (dir_ / "measured.csv").string()).exit_code, 0);
   const auto r = RunUsvid("preprocess --data " + commands + " --actuators " + actuators + pre +
                           (dir_ / "simulated.csv").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
