@@ -284,8 +284,9 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   const PreparedData prepared = Preprocess(data, variables, inputs, pre);
   for (const std::string& note : prepared.notes) Log(log, note);
   if (o.method == "gp") {
-    const double length = o.vessel.empty() ? 0.0 : FindVessel(o.vessel).Info().length_m;
-    gpo.features = RegimeFeatures(o.features, length, prepared.data);
+    const double froude_per_speed =
+        o.vessel.empty() ? 0.0 : FindVessel(o.vessel).FroudeNumber(1.0).value_or(0.0);
+    gpo.features = RegimeFeatures(o.features, froude_per_speed, prepared.data);
   } else if (o.features != "auto") {
     throw InputError("--features: only gp takes regime features");
   }

@@ -7,21 +7,20 @@
 
 namespace usvid {
 
-std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double length_m,
+std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double froude_per_speed,
                                             const Dataset& data) {
   if (spec == "none") return {};
   if (spec != "froude" && spec != "auto")
     throw InputError("--features '" + spec + "': unknown (known: auto, froude, none)");
   const bool speeds = data.Has("u") && data.Has("v");
-  if (spec == "froude" && !(length_m > 0))
+  if (spec == "froude" && !(froude_per_speed > 0))
     throw InputError(
         "--features froude: the vessel has no hull length (give --vessel odin-hs, "
         "or --features none)");
   if (spec == "froude" && !speeds)
     throw InputError("--features froude: the Froude number needs channels u and v");
-  if (!(length_m > 0) || !speeds) return {};
-  constexpr double kGravity = 9.81;  // [m/s^2]
-  const double scale = std::sqrt(kGravity * length_m);
+  if (!(froude_per_speed > 0) || !speeds) return {};
+  const double scale = 1.0 / froude_per_speed;  // sqrt(g L) [m/s]
   const Eigen::ArrayXd fn =
       (data["u"].array().square() + data["v"].array().square()).sqrt() / scale;
   const bool crosses = fn.minCoeff() < kDisplacementFroude && fn.maxCoeff() > kDisplacementFroude;

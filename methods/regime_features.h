@@ -27,13 +27,14 @@ struct DerivedVariable {
 // The regime boundaries of the Froude number (displacement | semi-displacement | planing).
 inline constexpr double kDisplacementFroude = 0.4, kPlaningFroude = 1.1;
 
-// The features of `spec` for a hull of waterline length `length_m` (0: none known):
+// The features of `spec` for a vessel whose Froude number at 1 m/s is `froude_per_speed`
+// (1 / sqrt(g L), VesselSimulator::FroudeNumber(1); 0: the vessel has no length):
 //  "none": none;
 //  "froude": Fn = sqrt(u*u + v*v) / sqrt(g L) (needs a length and channels u and v);
 //  "auto": "froude" when there is a length, the data have u and v, and the record's Fn crosses
 //          a regime boundary (a record within one regime gains nothing from it), else "none".
 // Throws InputError for an unknown spec, or "froude" without a length or without u and v.
-std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double length_m,
+std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double froude_per_speed,
                                             const Dataset& data);
 
 }  // namespace usvid

@@ -35,8 +35,8 @@ struct PreprocessFlags {
   std::string delay = "0";
   double max_delay_s = 2.0;
   bool no_step_breaks = false;
-  std::string
-      forces;  // "waterjet": jet forces from the jet states (preprocessing/waterjet_forces.h)
+  // "waterjet": jet forces from the jet states (preprocessing/waterjet_forces.h)
+  std::string forces;
   std::string actuators;  // actuators.json: jet states the log lacks, simulated from the commands
 
   void Add(CLI::App& cmd) {

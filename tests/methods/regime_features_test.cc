@@ -18,7 +18,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-constexpr double kLength = 10.5;  // odin-hs's waterline [m]
+constexpr double kLength = 10.5;                                 // odin-hs's waterline [m]
+const double kFroudePerSpeed = 1.0 / std::sqrt(9.81 * kLength);  // [s/m]
 
 // A record of surge speed `u0` to `u1` (linear in time), sway 0.1 m/s.
 Dataset Speeds(double u0, double u1) {
@@ -33,7 +34,7 @@ Dataset Speeds(double u0, double u1) {
 }
 
 TEST(RegimeFeaturesTest, FroudeNumberIsSpeedOverRootGL) {
-  const auto f = RegimeFeatures("froude", kLength, Speeds(3.0, 4.0));
+  const auto f = RegimeFeatures("froude", kFroudePerSpeed, Speeds(3.0, 4.0));
   ASSERT_EQ(f.size(), 1u);
   EXPECT_EQ(f[0].name, "Fn");
   const Expression e = Expression::Parse(f[0].expression);
@@ -44,12 +45,13 @@ TEST(RegimeFeaturesTest, FroudeNumberIsSpeedOverRootGL) {
 
 TEST(RegimeFeaturesTest, AutoOffersItOnlyWhenTheRecordCrossesARegimeBoundary) {
   const double fn = std::sqrt(9.81 * kLength);  // speed at Fn 1 [m/s]
-  EXPECT_TRUE(RegimeFeatures("auto", kLength, Speeds(0.2 * fn, 0.35 * fn)).empty());  // displ.
-  EXPECT_TRUE(RegimeFeatures("auto", kLength, Speeds(0.5 * fn, 1.0 * fn)).empty());   // semi
-  EXPECT_EQ(RegimeFeatures("auto", kLength, Speeds(0.3 * fn, 0.6 * fn)).size(), 1u);
-  EXPECT_EQ(RegimeFeatures("auto", kLength, Speeds(0.9 * fn, 1.5 * fn)).size(), 1u);
+  EXPECT_TRUE(
+      RegimeFeatures("auto", kFroudePerSpeed, Speeds(0.2 * fn, 0.35 * fn)).empty());  // displ.
+  EXPECT_TRUE(RegimeFeatures("auto", kFroudePerSpeed, Speeds(0.5 * fn, 1.0 * fn)).empty());  // semi
+  EXPECT_EQ(RegimeFeatures("auto", kFroudePerSpeed, Speeds(0.3 * fn, 0.6 * fn)).size(), 1u);
+  EXPECT_EQ(RegimeFeatures("auto", kFroudePerSpeed, Speeds(0.9 * fn, 1.5 * fn)).size(), 1u);
   EXPECT_TRUE(RegimeFeatures("auto", 0.0, Speeds(0.3 * fn, 1.5 * fn)).empty());  // no length
-  EXPECT_TRUE(RegimeFeatures("none", kLength, Speeds(0.3 * fn, 1.5 * fn)).empty());
+  EXPECT_TRUE(RegimeFeatures("none", kFroudePerSpeed, Speeds(0.3 * fn, 1.5 * fn)).empty());
 }
 
 TEST(RegimeFeaturesTest, RefusesUnknownSpecsAndFroudeWithoutLengthOrSpeeds) {
@@ -61,14 +63,15 @@ TEST(RegimeFeaturesTest, RefusesUnknownSpecsAndFroudeWithoutLengthOrSpeeds) {
     }
     return std::string("no error");
   };
-  EXPECT_THAT(message([] { RegimeFeatures("speed", kLength, Speeds(1, 2)); }),
+  EXPECT_THAT(message([] { RegimeFeatures("speed", kFroudePerSpeed, Speeds(1, 2)); }),
               HasSubstr("unknown"));
   EXPECT_THAT(message([] { RegimeFeatures("froude", 0.0, Speeds(1, 2)); }),
               HasSubstr("no hull length"));
   Dataset no_v;
   no_v.SetTime(Eigen::VectorXd::LinSpaced(5, 0, 1));
   no_v.Set("u", Eigen::VectorXd::Ones(5));
-  EXPECT_THAT(message([&] { RegimeFeatures("froude", kLength, no_v); }), HasSubstr("u and v"));
+  EXPECT_THAT(message([&] { RegimeFeatures("froude", kFroudePerSpeed, no_v); }),
+              HasSubstr("u and v"));
 }
 
 // Model selection simulates a candidate with the feature recomputed from the simulated state:
