@@ -9,6 +9,7 @@
 #include "core/derived_channels.h"
 #include "core/error.h"
 #include "methods/eb_lr/eb_lr.h"
+#include "methods/expression.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/fossen_ceres/jet_force_model.h"
@@ -223,6 +224,8 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     throw InputError(
         "--method '" + o.method +
         "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit, nominal, nomoto)");
+  if (o.method != "gp" && o.method != "sindy" && o.features != "auto")
+    throw InputError("--features: only gp and sindy take regime features");
   if (o.method == "refit") return IdentifyRefit(data, o, log);
   if (o.method == "nominal") return NominalModel(data, o);
   const auto start = std::chrono::steady_clock::now();
@@ -283,12 +286,12 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   if (!pre.forces.empty()) pre.step_breaks = false;
   const PreparedData prepared = Preprocess(data, variables, inputs, pre);
   for (const std::string& note : prepared.notes) Log(log, note);
-  if (o.method == "gp") {
+  std::vector<DerivedVariable> features;
+  if (o.method == "gp" || o.method == "sindy") {
     const double froude_per_speed =
         o.vessel.empty() ? 0.0 : FindVessel(o.vessel).FroudeNumber(1.0).value_or(0.0);
-    gpo.features = RegimeFeatures(o.features, froude_per_speed, prepared.data);
-  } else if (o.features != "auto") {
-    throw InputError("--features: only gp takes regime features");
+    features = RegimeFeatures(o.features, froude_per_speed, prepared.data);
+    gpo.features = features;
   }
   nlohmann::json model = {
       {"method", o.method},
@@ -334,11 +337,25 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
         {"notes", fit.notes}};
     for (const std::string& note : fit.notes) Log(log, note);
   } else if (o.method == "sindy") {
-    const sindy::SindyIdentification id =
-        sindy::IdentifyWithSindy(prepared, states, variables, inputs, sindy::SindyOptions{});
+    // Regime features enter SINDy's library as linear columns, each named by its expression in
+    // parentheses: the equations stay in channel names, and a free run recomputes the feature
+    // from the simulated states.
+    PreparedData with_features = prepared;
+    std::vector<std::string> library_inputs = inputs;
+    nlohmann::json feature_json = nlohmann::json::object();
+    for (const DerivedVariable& f : features) {
+      const std::string name = "(" + f.expression + ")";
+      with_features.data.Set(
+          name, Expression::Parse(f.expression, "feature " + f.name).Evaluate(prepared.data));
+      library_inputs.push_back(name);
+      feature_json[f.name] = f.expression;
+    }
+    const sindy::SindyIdentification id = sindy::IdentifyWithSindy(
+        with_features, states, variables, library_inputs, sindy::SindyOptions{});
     model["parameters"] = id.parameters;
     model["equations"] = id.equations;
     model["sindy"] = id.details;
+    model["sindy"]["features"] = feature_json;
   } else {
     const gp::GpIdentification gp = gp::IdentifyWithGp(
         prepared, states, variables, inputs, gpo,

@@ -29,7 +29,7 @@ struct IdentifyRequest {
   std::optional<int> population, generations, max_depth, restarts, constant_iterations;
   std::optional<double> ols_threshold, validation_fraction;
   std::string fitness = "r2";
-  // Regime features (regime_features.h): auto, froude or none.
+  // Regime features for gp and sindy (regime_features.h): auto, hinges, froude or none.
   std::string features = "auto";
   std::optional<long> fit_rows;
   uint64_t seed = 1;

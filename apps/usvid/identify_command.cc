@@ -77,9 +77,11 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--operators", o->request.operators,
                   "GP functions: + - * (default, the report's), / abs tanh sin cos exp sqrt");
   cmd->add_option("--features", o->request.features,
-                  "gp: regime features among its variables: auto (the Froude number when the "
-                  "vessel has a length and the record crosses a regime boundary), froude, none")
-      ->check(CLI::IsMember({"auto", "froude", "none"}));
+                  "gp, sindy: regime features among the variables: auto (hinges when the vessel "
+                  "has a length and the record crosses a regime boundary), hinges (the Froude "
+                  "number Fn and abs(Fn - k) at 4 quantiles of the record's Fn), froude (Fn "
+                  "alone), none")
+      ->check(CLI::IsMember({"auto", "hinges", "froude", "none"}));
   cmd->add_option("--population", o->request.population, "GP population (2000, the report's)");
   cmd->add_option("--generations", o->request.generations, "Most GP generations (50)");
   cmd->add_option("--max-depth", o->request.max_depth, "Deepest tree (6, the report's)");

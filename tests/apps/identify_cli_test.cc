@@ -227,7 +227,8 @@ TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
        "the data lack rpm, nozzle_angle, bucket_position"},
       {"--method gp --vessel msd --features froude", "the vessel has no hull length"},
       {"--method gp --vessel msd --features speed", "--features"},
-      {"--method sindy --vessel msd --features froude", "only gp takes regime features"},
+      {"--method sindy --vessel msd --features hinges", "the vessel has no hull length"},
+      {"--method eb-lr --vessel msd --features froude", "only gp and sindy take regime features"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = RunUsvid("identify " + args + " --data " + data_ + " --out " + out);
