@@ -20,7 +20,7 @@ std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double frou
                      ": the vessel has no hull length (give --vessel odin-hs, or --features none)");
   if (explicit_spec && !speeds)
     throw InputError("--features " + spec + ": the Froude number needs channels u and v");
-  if (!(froude_per_speed > 0) || !speeds) return {};
+  if (!(froude_per_speed > 0) || !speeds || data.rows() == 0) return {};
   const double scale = 1.0 / froude_per_speed;  // sqrt(g L) [m/s]
   const Eigen::ArrayXd fn =
       (data["u"].array().square() + data["v"].array().square()).sqrt() / scale;

@@ -163,6 +163,43 @@ TEST_F(IdentifyCliTest, FossenOnTheJetForcesIsTheHighSpeedForm) {
   EXPECT_TRUE(m.at("parameters").contains("c10"));  // c(U) at 10 m/s
 }
 
+// SINDy with the regime features (issue 19): on odin-hs random steps, which cross the
+// displacement and planing boundaries, --features auto adds Fn and the hinges abs(Fn - k) to
+// its library; the surge equation uses them (the resistance hump), model.json lists them, and
+// the free run on another seed recomputes them from the simulated u and v. Without them the
+// surge equation has no curve with a hump and its held-out fit is lower.
+TEST_F(IdentifyCliTest, SindyTakesTheRegimeFeaturesAndAFreeRunRecomputesThem) {
+  const auto train = (dir_ / "hs_s.csv").string(), test = (dir_ / "hs_s_test.csv").string();
+  for (const auto& [file, seed] : {std::pair{train, 1}, std::pair{test, 1001}})
+    ASSERT_EQ(RunUsvid("simulate --vessel odin-hs --maneuver random-steps --duration 300 "
+                       "--noise 0.005 --seed " +
+                       std::to_string(seed) + " --out " + file)
+                  .exit_code,
+              0);
+  auto surge_fit = [&](const std::string& features) {
+    const auto model = (dir_ / ("hs_s_" + features + ".json")).string();
+    const auto r = RunUsvid("identify --method sindy --vessel odin-hs --forces waterjet --data " +
+                            train + " --features " + features + " --out " + model);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json m = ReadJsonFile(model);
+    EXPECT_EQ(m.at("sindy").at("features").size(), features == "auto" ? 5u : 0u);
+    EXPECT_EQ(m.at("inputs"), nlohmann::json({"tau_x", "tau_y", "tau_n", "jet_flow"}));
+    if (features == "auto")
+      EXPECT_THAT(m.at("equations").at("u").get<std::string>(), HasSubstr("(abs(sqrt(u*u + v*v)/"));
+    const auto ev = (dir_ / ("ev_s_" + features)).string();
+    const auto e = RunUsvid("evaluate --model " + model + " --data " + test + " --out " + ev);
+    EXPECT_EQ(e.exit_code, 0) << e.err;
+    return ReadJsonFile(ev + "/metrics.json")
+        .at("channels")
+        .at("u")
+        .at("fit_percent")
+        .get<double>();
+  };
+  const double with = surge_fit("auto"), without = surge_fit("none");
+  EXPECT_GT(with, 80.0);
+  EXPECT_GT(with, without + 5.0) << without;
+}
+
 // A log of the commands alone (issue 19): `usvid actuators` identifies throttle -> rpm and
 // nozzle -> nozzle_angle (delay 0.2 s, time constants 0.6 and 0.1 s) on a log that records
 // both, leaves the held bucket out, and `--actuators` then rebuilds the jets' forces of a log
