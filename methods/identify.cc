@@ -284,14 +284,14 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   // Forces from the actuators' states are continuous (slew-limited actuators): no input steps to
   // break the derivative spline at; every slewing sample would count as one.
   if (!pre.forces.empty()) pre.step_breaks = false;
-  const PreparedData prepared = Preprocess(data, variables, inputs, pre);
+  PreparedData prepared = Preprocess(data, variables, inputs, pre);
   for (const std::string& note : prepared.notes) Log(log, note);
-  std::vector<DerivedVariable> features;
+  nlohmann::json features_json = nlohmann::json::object();  // name -> expression
   if (o.method == "gp" || o.method == "sindy") {
     const double froude_per_speed =
         o.vessel.empty() ? 0.0 : FindVessel(o.vessel).FroudeNumber(1.0).value_or(0.0);
-    features = RegimeFeatures(o.features, froude_per_speed, prepared.data);
-    gpo.features = features;
+    gpo.features = RegimeFeatures(o.features, froude_per_speed, prepared.data);
+    for (const DerivedVariable& f : gpo.features) features_json[f.name] = f.expression;
   }
   nlohmann::json model = {
       {"method", o.method},
@@ -337,25 +337,19 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
         {"notes", fit.notes}};
     for (const std::string& note : fit.notes) Log(log, note);
   } else if (o.method == "sindy") {
-    // Regime features enter SINDy's library as linear columns, each named by its expression in
-    // parentheses: the equations stay in channel names, and a free run recomputes the feature
-    // from the simulated states.
-    PreparedData with_features = prepared;
+    // Regime features enter SINDy's library as linear columns named by DerivedVariable::Column.
     std::vector<std::string> library_inputs = inputs;
-    nlohmann::json feature_json = nlohmann::json::object();
-    for (const DerivedVariable& f : features) {
-      const std::string name = "(" + f.expression + ")";
-      with_features.data.Set(
-          name, Expression::Parse(f.expression, "feature " + f.name).Evaluate(prepared.data));
-      library_inputs.push_back(name);
-      feature_json[f.name] = f.expression;
+    for (const DerivedVariable& f : gpo.features) {
+      prepared.data.Set(
+          f.Column(), Expression::Parse(f.expression, "feature " + f.name).Evaluate(prepared.data));
+      library_inputs.push_back(f.Column());
     }
     const sindy::SindyIdentification id = sindy::IdentifyWithSindy(
-        with_features, states, variables, library_inputs, sindy::SindyOptions{});
+        prepared, states, variables, library_inputs, sindy::SindyOptions{});
     model["parameters"] = id.parameters;
     model["equations"] = id.equations;
     model["sindy"] = id.details;
-    model["sindy"]["features"] = feature_json;
+    model["sindy"]["features"] = features_json;
   } else {
     const gp::GpIdentification gp = gp::IdentifyWithGp(
         prepared, states, variables, inputs, gpo,
@@ -371,11 +365,9 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     const gp::GpOptions& so = gpo.search;
     model["parameters"] = gp.parameters;
     model["equations"] = gp.equations;
-    nlohmann::json features = nlohmann::json::object();
-    for (const DerivedVariable& f : gpo.features) features[f.name] = f.expression;
     model["gp"] = {{"preset", o.preset},
                    {"operators", gp::OperatorList(so.functions)},
-                   {"features", features},
+                   {"features", features_json},
                    {"population", so.population},
                    {"generations", so.generations},
                    {"max_depth", so.max_depth},

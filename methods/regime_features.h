@@ -25,6 +25,10 @@ namespace usvid {
 struct DerivedVariable {
   std::string name;
   std::string expression;
+
+  // The name a method gives its column: the expression in parentheses, so that an equation
+  // written with it is in channel names and a free run recomputes it from the states.
+  std::string Column() const { return "(" + expression + ")"; }
 };
 
 // The regime boundaries of the Froude number (displacement | semi-displacement | planing).

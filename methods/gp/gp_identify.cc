@@ -81,7 +81,7 @@ GpIdentification IdentifyWithGp(
                          arg + "'");
       d.arguments.push_back(static_cast<int>(it - all.names.begin()));
     }
-    all.names.push_back("(" + f.expression + ")");
+    all.names.push_back(f.Column());
     all.variables.push_back(d.expression.Evaluate(prepared.data));
     derived.push_back(std::move(d));
   }
