@@ -122,7 +122,7 @@ IdentifyRequest RequestFor(const FitJob& job) {
   set("validation_fraction", r.validation_fraction);
   set("constant_iterations", r.constant_iterations);
   set("restarts", r.restarts);
-  r.fossen_mode = o.value("fit", r.fossen_mode);
+  r.fit_mode = o.value("fit", r.fit_mode);
   r.segment_s = o.value("segment_s", r.segment_s);
   r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
   r.preprocess.forces = ForcesFor(job);

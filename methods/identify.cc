@@ -50,7 +50,7 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
   const auto eq = fossen::FitEquationErrorFor<Model>(prepared, fo);
   Log(log, "equation-error fit: " + eq.termination);
   auto fit = eq;
-  if (o.fossen_mode == "simulation") {
+  if (o.fit_mode == "simulation") {
     fit = fossen::FitSimulationErrorFor<Model>(prepared, eq.params, fo);
     Log(log, "simulation-error fit (multiple shooting): " + fit.termination);
   }
@@ -86,7 +86,7 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
           {"equations", equations},
           {"fossen",
            {{"model", std::string(Model::kName)},
-            {"mode", o.fossen_mode},
+            {"mode", o.fit_mode},
             {"segment_s", fo.segment_s},
             {"robust", o.robust},
             {"parameter_sd", sd},
@@ -196,6 +196,10 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& o) {
   s.seed = o.seed;
   s.threads = o.threads;
   g.validation_fraction = o.validation_fraction.value_or(g.validation_fraction);
+  if (o.fit_mode != "simulation" && o.fit_mode != "equation")
+    throw InputError("--fit '" + o.fit_mode + "': unknown (known: simulation, equation)");
+  g.weight_fit = o.fit_mode == "equation" || o.preset == "report" ? gp::WeightFit::kEquation
+                                                                  : gp::WeightFit::kSimulation;
   if (s.population < 4 || s.generations < 1 || s.max_depth < 2 || s.max_depth > 17)
     throw InputError("identify: --population >= 4, --generations >= 1, --max-depth in [2, 17]");
   if (s.ols_threshold && !(*s.ols_threshold >= 0 && *s.ols_threshold < 1))
@@ -290,7 +294,8 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   if (o.method == "gp" || o.method == "sindy") {
     const double froude_per_speed =
         o.vessel.empty() ? 0.0 : FindVessel(o.vessel).FroudeNumber(1.0).value_or(0.0);
-    gpo.features = RegimeFeatures(o.features, froude_per_speed, prepared.data);
+    gpo.features = RegimeFeatures(o.features, froude_per_speed, prepared.data,
+                                  o.method == "gp" ? kGpFroudeHinges : kSindyFroudeHinges);
     for (const DerivedVariable& f : gpo.features) features_json[f.name] = f.expression;
   }
   nlohmann::json model = {
@@ -365,6 +370,8 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     const gp::GpOptions& so = gpo.search;
     model["parameters"] = gp.parameters;
     model["equations"] = gp.equations;
+    const char* weight_fit =
+        gpo.weight_fit == gp::WeightFit::kSimulation ? "simulation" : "equation";
     model["gp"] = {{"preset", o.preset},
                    {"operators", gp::OperatorList(so.functions)},
                    {"features", features_json},
@@ -383,6 +390,7 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
                    {"constant_elites", so.constant_elites},
                    {"validation_fraction", gpo.validation_fraction},
                    {"horizon_s", gpo.horizon_s},
+                   {"weight_fit", weight_fit},
                    {"fitness", o.fitness},
                    {"fit_rows", so.fit_rows},
                    {"node_evaluations", gp.node_evaluations},

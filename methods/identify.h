@@ -34,8 +34,9 @@ struct IdentifyRequest {
   std::optional<long> fit_rows;
   uint64_t seed = 1;
   int threads = 0;
-  // fossen-ceres
-  std::string fossen_mode = "simulation";
+  // fossen-ceres: "simulation" (multiple shooting) or "equation" error; gp: how the chosen
+  // terms' weights are fitted, by "equation" error or by it and then by "simulation" error.
+  std::string fit_mode = "simulation";
   double segment_s =
       0.0;  // shooting segment [s]; 0: the method's default (fossen 10 s, refit auto)
   bool robust = false;

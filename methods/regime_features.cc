@@ -9,7 +9,7 @@
 namespace usvid {
 
 std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double froude_per_speed,
-                                            const Dataset& data) {
+                                            const Dataset& data, int hinges) {
   if (spec == "none") return {};
   if (spec != "froude" && spec != "hinges" && spec != "auto")
     throw InputError("--features '" + spec + "': unknown (known: auto, hinges, froude, none)");
@@ -33,8 +33,8 @@ std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double frou
   std::vector<double> sorted(fn.begin(), fn.end());
   std::sort(sorted.begin(), sorted.end());
   std::vector<double> knots;
-  for (int i = 1; i <= kFroudeHinges; ++i) {
-    const size_t at = i * (sorted.size() - 1) / (kFroudeHinges + 1);
+  for (int i = 1; i <= hinges; ++i) {
+    const size_t at = i * (sorted.size() - 1) / (hinges + 1);
     const double knot = std::round(100.0 * sorted[at]) / 100.0;
     if (knots.empty() || knot != knots.back()) knots.push_back(knot);
   }

@@ -34,14 +34,18 @@ struct DerivedVariable {
 // The regime boundaries of the Froude number (displacement | semi-displacement | planing).
 inline constexpr double kDisplacementFroude = 0.4, kPlaningFroude = 1.1;
 
-// How many hinges "hinges" places: at the 1/5 .. 4/5 quantiles of the record's Fn.
-inline constexpr int kFroudeHinges = 4;
+// How many hinges "hinges" places, per method: at the 1/(n+1) .. n/(n+1) quantiles of the
+// record's Fn. SINDy regresses on every column at once, and eight follow odin-hs's resistance
+// hump closer than four (its zig-zag 68-92 % -> 89-93 %). GP must draw each variable in its
+// search: with eight, its step-grid-trained models diverged in 3 of 6 default-suite runs that
+// four-hinge models passed at 92-95 % (docs/vessels/odin-hs.md).
+inline constexpr int kGpFroudeHinges = 4, kSindyFroudeHinges = 8;
 
 // The features of `spec` for a vessel whose Froude number at 1 m/s is `froude_per_speed`
 // (1 / sqrt(g L), VesselSimulator::FroudeNumber(1); 0: the vessel has no length):
 //  "none": none;
 //  "froude": Fn = sqrt(u*u + v*v) / sqrt(g L) (needs a length and channels u and v);
-//  "hinges": Fn and kFroudeHinges hinges abs(Fn - k), named Fn_k1 .., with the knots k at
+//  "hinges": Fn and `hinges` hinges abs(Fn - k), named Fn_k1 .., with the knots k at
 //            evenly spaced quantiles of the record's Fn (rounded to 0.01, repeats dropped): a
 //            basis of piecewise-linear functions of Fn. Resistance is a curve in Fn with a hump,
 //            which a sum of weighted hinges follows; a search that must build each hinge and
@@ -52,6 +56,6 @@ inline constexpr int kFroudeHinges = 4;
 // Throws InputError for an unknown spec, or "froude"/"hinges" without a length or without u and
 // v.
 std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double froude_per_speed,
-                                            const Dataset& data);
+                                            const Dataset& data, int hinges);
 
 }  // namespace usvid

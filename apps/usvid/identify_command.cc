@@ -79,7 +79,7 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--features", o->request.features,
                   "gp, sindy: regime features among the variables: auto (hinges when the vessel "
                   "has a length and the record crosses a regime boundary), hinges (the Froude "
-                  "number Fn and abs(Fn - k) at 4 quantiles of the record's Fn), froude (Fn "
+                  "number Fn and abs(Fn - k) at 8 quantiles of the record's Fn), froude (Fn "
                   "alone), none")
       ->check(CLI::IsMember({"auto", "hinges", "froude", "none"}));
   cmd->add_option("--population", o->request.population, "GP population (2000, the report's)");
@@ -101,8 +101,10 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--fit-rows", o->request.fit_rows, "Rows the search scores on (4000; 0: all)");
   cmd->add_option("--seed", o->request.seed, "Seed of the search");
   cmd->add_option("--threads", o->request.threads, "OpenMP threads (0: all cores)");
-  cmd->add_option("--fit", o->request.fossen_mode,
-                  "fossen-ceres: simulation (multiple shooting, default) or equation error")
+  cmd->add_option("--fit", o->request.fit_mode,
+                  "fossen-ceres: simulation (multiple shooting, default) or equation error; gp: "
+                  "the chosen terms' weights by equation error, then by short-horizon "
+                  "simulation error (simulation, default), or by equation error alone")
       ->check(CLI::IsMember({"simulation", "equation"}));
   cmd->add_option("--segment", o->request.segment_s,
                   "fossen-ceres, refit, nomoto: shooting segment length [s] (default: "

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/parse_number.h"
 #include "methods/gp/model_selection.h"
+#include "methods/gp/simulation_refit.h"
 
 namespace usvid::gp {
 
@@ -121,12 +122,33 @@ GpIdentification IdentifyWithGp(
     selection = SelectModels(data, candidates);
   }
 
+  // The chosen terms refitted on every row by equation error, then (when asked) by simulation.
+  std::vector<Model> bests;
+  for (size_t i = 0; i < states.size(); ++i) {
+    all.target = prepared.data[states[i] + "_dot"];
+    bests.push_back(FitTree(candidates[i].models[selection.chosen[i]].tree, all, options.search));
+  }
+  SimulationRefit refit;
+  const bool refine = select && options.weight_fit == WeightFit::kSimulation;
+  if (refine) {
+    SelectionData data{prepared.data.t(), all.names, all.variables, 0, options.horizon_s, derived};
+    std::vector<int> state_vars;
+    for (const std::string& s : states)
+      state_vars.push_back(
+          static_cast<int>(std::find(all.names.begin(), all.names.end(), s) - all.names.begin()));
+    refit = RefitBySimulation(data, state_vars, bests, {options.horizon_s, 30, train_rows});
+  }
+
   for (size_t i = 0; i < states.size(); ++i) {
     const std::string& state = states[i];
     const GpResult& r = results[i];
-    all.target = prepared.data[state + "_dot"];
     const Model& candidate = candidates[i].models[selection.chosen[i]];
-    const Model best = FitTree(candidate.tree, all, options.search);  // on every row
+    Model& best = bests[i];
+    if (refit.accepted) {  // the equation error's r^2 of the refitted weights
+      const Eigen::VectorXd y = prepared.data[state + "_dot"];
+      const double sst = (y.array() - y.mean()).square().sum();
+      best.r2 = sst > 0 ? 1.0 - (y - Predict(best, all.variables)).squaredNorm() / sst : 0.0;
+    }
     out.equations[state] = best.Equation(all.names);
     out.parameters[state + ".bias"] = best.bias;
     for (size_t t = 0; t < best.weights.size(); ++t)
@@ -172,6 +194,22 @@ GpIdentification IdentifyWithGp(
       chosen["reason"] = f > 0 ? "a state has no variable of its own to simulate: the search's best"
                                : "no validation part (--validation-fraction 0): the search's best";
     }
+    if (refine)
+      chosen["weights"] = {{"fit", "simulation"},
+                           {"accepted", refit.accepted},
+                           {"reason", refit.reason},
+                           {"horizon_s", options.horizon_s},
+                           {"segments", refit.segments},
+                           {"validation_segments", refit.validation_segments},
+                           {"iterations", refit.iterations},
+                           {"short_horizon_error_before", refit.initial_error},
+                           {"short_horizon_error_after", refit.final_error},
+                           {"validation_error_before", refit.validation_error_before},
+                           {"validation_error_after", refit.validation_error_after},
+                           {"free_run_error_before", refit.free_run_error_before},
+                           {"free_run_error_after", refit.free_run_error_after}};
+    else
+      chosen["weights"] = {{"fit", "equation"}};
     out.details[state] = {{"r2_train", best.r2},
                           {"r2_heldout", best.r2_heldout},
                           {"size", best.Size()},

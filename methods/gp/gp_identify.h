@@ -1,7 +1,8 @@
 // GP-SR identification of a whole model: one GP-OLS search per state derivative (after
 // preprocessing), with the states and inputs as variables, on the first part of the record;
 // then the model chosen among each search's Pareto candidates by short-horizon simulation on the
-// rest, the validation part (model_selection.h), and the chosen terms refitted on every row.
+// rest, the validation part (model_selection.h), and the chosen terms refitted on every row, by
+// equation error and then by simulation error (simulation_refit.h).
 // The result is the model JSON of contract section 5 (equations in channel names) plus, per
 // equation, the Pareto front of held-out error against size, the generation log, why the search
 // stopped, and which candidate was chosen and why.
@@ -22,10 +23,15 @@ namespace usvid::gp {
 std::vector<Op> ParseOperators(const std::string& list);
 std::string OperatorList(const std::vector<Op>& ops);
 
+// How the chosen terms' weights are fitted on every row: by equation error (least squares on
+// the derivatives), or by that and then by simulation error (simulation_refit.h).
+enum class WeightFit { kEquation, kSimulation };
+
 struct GpIdentifyOptions {
   GpOptions search;
   double validation_fraction = 0.2;  // the record's last part; 0: the search's best is kept
   double horizon_s = 10.0;           // of the short-horizon simulations
+  WeightFit weight_fit = WeightFit::kSimulation;  // needs a validation part
   // Variables computed from the states (regime_features.h): searched like any other, written
   // into the equations as their expressions, recomputed from the simulated states when
   // candidates are simulated.

@@ -19,31 +19,13 @@
 // tries).
 #pragma once
 
-#include <Eigen/Core>
 #include <string>
 #include <vector>
 
-#include "methods/expression.h"
 #include "methods/gp/search.h"
+#include "methods/gp/segment_simulator.h"
 
 namespace usvid::gp {
-
-// A variable computed from others (a regime feature): recomputed in every simulation step from
-// the simulated states and the measured rest.
-struct DerivedColumn {
-  int index = 0;               // into SelectionData::names
-  Expression expression;       // of the variables `arguments`
-  std::vector<int> arguments;  // into names, in the order of expression.Variables()
-};
-
-struct SelectionData {
-  Eigen::VectorXd t;
-  std::vector<std::string> names;          // variables, as in the search
-  std::vector<Eigen::VectorXd> variables;  // every row
-  long validation_begin = 0;               // the rows [validation_begin, end) score candidates
-  double horizon_s = 10.0;
-  std::vector<DerivedColumn> derived;  // computed after the states, in this order
-};
 
 struct StateCandidates {
   std::string state;  // one of `names`

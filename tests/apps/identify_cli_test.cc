@@ -8,6 +8,7 @@
 #include "core/csv_dataset.h"
 #include "core/json_file.h"
 #include "methods/expression.h"
+#include "methods/regime_features.h"
 #include "tests/apps/run_usvid.h"
 
 namespace usvid {
@@ -182,7 +183,8 @@ TEST_F(IdentifyCliTest, SindyTakesTheRegimeFeaturesAndAFreeRunRecomputesThem) {
                             train + " --features " + features + " --out " + model);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     const nlohmann::json m = ReadJsonFile(model);
-    EXPECT_EQ(m.at("sindy").at("features").size(), features == "auto" ? 5u : 0u);
+    EXPECT_EQ(m.at("sindy").at("features").size(),
+              features == "auto" ? 1u + kSindyFroudeHinges : 0u);
     EXPECT_EQ(m.at("inputs"), nlohmann::json({"tau_x", "tau_y", "tau_n", "jet_flow"}));
     if (features == "auto")
       EXPECT_THAT(m.at("equations").at("u").get<std::string>(), HasSubstr("(abs(sqrt(u*u + v*v)/"));

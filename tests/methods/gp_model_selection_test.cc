@@ -8,44 +8,15 @@
 #include <cmath>
 
 #include "methods/gp/model_selection.h"
-#include "methods/gp/ols.h"
+#include "tests/methods/gp_msd_record.h"
 
 namespace usvid::gp {
 namespace {
 
-// bias + sum w_k * variable_k, variables by index.
-Model Linear(const std::vector<std::pair<int, double>>& terms, double bias = 0.0) {
-  Model m;
-  for (size_t k = 0; k < terms.size(); ++k) {
-    m.tree.push_back({Op::kVar, static_cast<uint16_t>(terms[k].first), 1, 0.0});
-    if (k > 0) m.tree.push_back({Op::kAdd, 0, 1, 0.0});
-    m.weights.push_back(terms[k].second);
-  }
-  UpdateLengths(m.tree);
-  m.term_roots = SplitTerms(m.tree);
-  m.bias = bias;
-  return m;
-}
+using testing::Linear;
 
 SelectionData Msd() {
-  SelectionData d;
-  constexpr int kRows = 6000;  // 300 s at 20 Hz
-  d.names = {"x", "v", "f"};
-  d.t.resize(kRows);
-  Eigen::VectorXd x(kRows), v(kRows), f(kRows);
-  double xs = 0.0, vs = 0.0;
-  for (int i = 0; i < kRows; ++i) {
-    d.t(i) = 0.05 * i;
-    f(i) = ((i / 200) % 3 - 1) * 2.0 + std::sin(0.013 * i);
-    x(i) = xs;
-    v(i) = vs;
-    for (int k = 0; k < 50; ++k) {  // fine Euler steps within the sample
-      const double a = -0.2 * xs - 0.1 * vs + 0.1 * f(i);
-      xs += 0.001 * vs;
-      vs += 0.001 * a;
-    }
-  }
-  d.variables = {x, v, f};
+  SelectionData d = testing::MsdRecord(6000);  // 300 s
   d.validation_begin = 4800;
   return d;
 }

@@ -37,7 +37,7 @@ Dataset Speeds(double u0, double u1) {
 }
 
 TEST(RegimeFeaturesTest, FroudeNumberIsSpeedOverRootGL) {
-  const auto f = RegimeFeatures("froude", kFroudePerSpeed, Speeds(3.0, 4.0));
+  const auto f = RegimeFeatures("froude", kFroudePerSpeed, Speeds(3.0, 4.0), kSindyFroudeHinges);
   ASSERT_EQ(f.size(), 1u);
   EXPECT_EQ(f[0].name, "Fn");
   const Expression e = Expression::Parse(f[0].expression);
@@ -46,34 +46,37 @@ TEST(RegimeFeaturesTest, FroudeNumberIsSpeedOverRootGL) {
   EXPECT_NEAR(e.Evaluate(uv), std::hypot(12.0, 0.5) / std::sqrt(9.81 * kLength), 1e-9);
 }
 
-// Fn 0.2 .. 1.6, evenly in time: the hinges sit at its 1/5 .. 4/5 quantiles, 0.48, 0.76, 1.04
-// and 1.32, and each evaluates to abs(Fn - k).
+// Fn 0.2 .. 1.6, evenly in time: the hinges sit at its 1/9 .. 8/9 quantiles (the samples at or
+// just below 0.2 + 1.4 i / 9, rounded to 0.01), and each evaluates to abs(Fn - k).
 TEST(RegimeFeaturesTest, HingesSitAtQuantilesOfTheRecordsFroudeNumber) {
   const double root_gl = std::sqrt(9.81 * kLength);  // speed at Fn 1 [m/s]
   // Sway 0.1 m/s shifts Fn by at most 0.1^2 / (2 u sqrt(gL)) < 0.001: the knots round as in u.
-  const auto f = RegimeFeatures("hinges", kFroudePerSpeed, Speeds(0.2 * root_gl, 1.6 * root_gl));
-  ASSERT_EQ(f.size(), 1u + kFroudeHinges);
+  const auto f = RegimeFeatures("hinges", kFroudePerSpeed, Speeds(0.2 * root_gl, 1.6 * root_gl),
+                                kSindyFroudeHinges);
+  ASSERT_EQ(f.size(), 1u + kSindyFroudeHinges);
   EXPECT_EQ(f[0].name, "Fn");
-  const double knots[] = {0.48, 0.76, 1.04, 1.32};
-  for (int i = 0; i < kFroudeHinges; ++i) {
+  const double knots[] = {0.35, 0.51, 0.66, 0.82, 0.97, 1.12, 1.28, 1.43};
+  ASSERT_EQ(std::size(knots), static_cast<size_t>(kSindyFroudeHinges));
+  for (int i = 0; i < kSindyFroudeHinges; ++i) {
     EXPECT_EQ(f[i + 1].name, "Fn_k" + std::to_string(i + 1));
     const Expression e = Expression::Parse(f[i + 1].expression);
     const double uv[2] = {12.0, 0.5};
     EXPECT_NEAR(e.Evaluate(uv), std::abs(std::hypot(12.0, 0.5) / root_gl - knots[i]), 1e-9)
         << f[i + 1].expression;
   }
-  // A record at one speed has one knot, not four equal ones.
-  EXPECT_EQ(RegimeFeatures("hinges", kFroudePerSpeed, Speeds(5.0, 5.0)).size(), 2u);
+  // A record at one speed has one knot, not eight equal ones.
+  EXPECT_EQ(RegimeFeatures("hinges", kFroudePerSpeed, Speeds(5.0, 5.0), kSindyFroudeHinges).size(),
+            2u);
 }
 
 // Why hinges: odin-hs's resistance (simulators/odin_hs.h) rises about as U^6 to the hump at
 // Fn 0.5 and levels off as lift takes over. Least squares on [1, Fn, hinges at the quantiles of
-// a 3-17 m/s record] follows it to within 8 % of its largest value at every speed (6.7 %); on
+// a 3-17 m/s record] follows it to within 8 % of its largest value at every speed (4.0 %); on
 // [1, Fn, Fn^2], the form a search builds without hinges, the worst error is 2.5 times that or
 // more (20.5 %).
 TEST(RegimeFeaturesTest, HingesFollowTheResistanceHumpAQuadraticMisses) {
   const Dataset record = Speeds(3.0, 17.0);
-  const auto f = RegimeFeatures("hinges", kFroudePerSpeed, record);
+  const auto f = RegimeFeatures("hinges", kFroudePerSpeed, record, kSindyFroudeHinges);
   const int n = 141;
   Eigen::VectorXd resistance(n);
   Eigen::MatrixXd hinges(n, f.size() + 1), quadratic(n, 3);
@@ -97,16 +100,24 @@ TEST(RegimeFeaturesTest, HingesFollowTheResistanceHumpAQuadraticMisses) {
 TEST(RegimeFeaturesTest, AutoOffersHingesOnlyWhenTheRecordCrossesARegimeBoundary) {
   const double fn = std::sqrt(9.81 * kLength);  // speed at Fn 1 [m/s]
   EXPECT_TRUE(
-      RegimeFeatures("auto", kFroudePerSpeed, Speeds(0.2 * fn, 0.35 * fn)).empty());  // displ.
-  EXPECT_TRUE(RegimeFeatures("auto", kFroudePerSpeed, Speeds(0.5 * fn, 1.0 * fn)).empty());  // semi
+      RegimeFeatures("auto", kFroudePerSpeed, Speeds(0.2 * fn, 0.35 * fn), kSindyFroudeHinges)
+          .empty());  // displ.
+  EXPECT_TRUE(
+      RegimeFeatures("auto", kFroudePerSpeed, Speeds(0.5 * fn, 1.0 * fn), kSindyFroudeHinges)
+          .empty());  // semi
   for (const auto& [from, to] : {std::pair{0.3, 0.6}, std::pair{0.9, 1.5}}) {
-    const auto a = RegimeFeatures("auto", kFroudePerSpeed, Speeds(from * fn, to * fn));
-    const auto h = RegimeFeatures("hinges", kFroudePerSpeed, Speeds(from * fn, to * fn));
-    ASSERT_EQ(a.size(), 1u + kFroudeHinges) << from;
+    const auto a =
+        RegimeFeatures("auto", kFroudePerSpeed, Speeds(from * fn, to * fn), kSindyFroudeHinges);
+    const auto h =
+        RegimeFeatures("hinges", kFroudePerSpeed, Speeds(from * fn, to * fn), kSindyFroudeHinges);
+    ASSERT_EQ(a.size(), 1u + kSindyFroudeHinges) << from;
     for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].expression, h[i].expression);
   }
-  EXPECT_TRUE(RegimeFeatures("auto", 0.0, Speeds(0.3 * fn, 1.5 * fn)).empty());  // no length
-  EXPECT_TRUE(RegimeFeatures("none", kFroudePerSpeed, Speeds(0.3 * fn, 1.5 * fn)).empty());
+  EXPECT_TRUE(RegimeFeatures("auto", 0.0, Speeds(0.3 * fn, 1.5 * fn), kSindyFroudeHinges)
+                  .empty());  // no length
+  EXPECT_TRUE(
+      RegimeFeatures("none", kFroudePerSpeed, Speeds(0.3 * fn, 1.5 * fn), kSindyFroudeHinges)
+          .empty());
 }
 
 TEST(RegimeFeaturesTest, RefusesUnknownSpecsAndFroudeWithoutLengthOrSpeeds) {
@@ -118,14 +129,15 @@ TEST(RegimeFeaturesTest, RefusesUnknownSpecsAndFroudeWithoutLengthOrSpeeds) {
     }
     return std::string("no error");
   };
-  EXPECT_THAT(message([] { RegimeFeatures("speed", kFroudePerSpeed, Speeds(1, 2)); }),
-              HasSubstr("unknown"));
-  EXPECT_THAT(message([] { RegimeFeatures("froude", 0.0, Speeds(1, 2)); }),
+  EXPECT_THAT(
+      message([] { RegimeFeatures("speed", kFroudePerSpeed, Speeds(1, 2), kSindyFroudeHinges); }),
+      HasSubstr("unknown"));
+  EXPECT_THAT(message([] { RegimeFeatures("froude", 0.0, Speeds(1, 2), kSindyFroudeHinges); }),
               HasSubstr("no hull length"));
   Dataset no_v;
   no_v.SetTime(Eigen::VectorXd::LinSpaced(5, 0, 1));
   no_v.Set("u", Eigen::VectorXd::Ones(5));
-  EXPECT_THAT(message([&] { RegimeFeatures("froude", kFroudePerSpeed, no_v); }),
+  EXPECT_THAT(message([&] { RegimeFeatures("froude", kFroudePerSpeed, no_v, kSindyFroudeHinges); }),
               HasSubstr("u and v"));
 }
 

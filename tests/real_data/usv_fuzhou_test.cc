@@ -42,8 +42,11 @@ TEST(UsvFuzhouTest, NomotoModelOfTheWholeLog) {
   EXPECT_NEAR(metrics.at("psi").at("fit_percent").get<double>(), 72.2, 1.0);
 }
 
-// Held out: the last 70 s. The Nomoto model's two constants carry over; GP and SINDy, which must
-// find their terms in a 2 Hz derivative of a GPS heading, do not.
+// Held out: the last 70 s. The Nomoto model's two constants carry over. SINDy, which must find
+// its terms in a 2 Hz derivative of a GPS heading, does not. GP does in two seeds of three: its
+// chosen terms' weights are refitted by simulation error (methods/gp/simulation_refit.h), which
+// the noise of the differentiated heading does not bias, and then hold the heading at least as
+// well as Nomoto; the third seed's terms fail either way.
 TEST(UsvFuzhouTest, MethodsOnTheHeldBackPart) {
   if (!fs::exists(kLog)) GTEST_SKIP() << "shared data absent: " << kLog;
   const fs::path dir = FreshTempDir();
@@ -60,11 +63,16 @@ TEST(UsvFuzhouTest, MethodsOnTheHeldBackPart) {
   ASSERT_EQ(fits.at("nomoto").size(), 1u);
   EXPECT_NEAR(fits.at("nomoto")[0].first, 48.3, 1.0);
   EXPECT_NEAR(fits.at("nomoto")[0].second, 75.7, 1.0);
-  for (const char* method : {"sindy", "gp[+,-,*]"})
-    for (const auto& [r_fit, psi_fit] : fits.at(method)) {
-      EXPECT_LT(r_fit, fits.at("nomoto")[0].first - 10.0) << method;
-      EXPECT_LT(psi_fit, fits.at("nomoto")[0].second - 30.0) << method;
-    }
+  for (const auto& [r_fit, psi_fit] : fits.at("sindy")) {
+    EXPECT_LT(r_fit, fits.at("nomoto")[0].first - 10.0);
+    EXPECT_LT(psi_fit, fits.at("nomoto")[0].second - 30.0);
+  }
+  ASSERT_EQ(fits.at("gp[+,-,*]").size(), 3u);
+  int carried_over = 0;
+  for (const auto& [r_fit, psi_fit] : fits.at("gp[+,-,*]"))
+    carried_over +=
+        r_fit > fits.at("nomoto")[0].first - 3.0 && psi_fit >= fits.at("nomoto")[0].second;
+  EXPECT_EQ(carried_over, 2);
 }
 
 }  // namespace

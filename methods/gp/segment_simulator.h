@@ -1,0 +1,60 @@
+// Simulates GP's equations over segments of a record, side by side: each segment starts from
+// the measured value of the integrated states, is integrated by RK4 under the measured inputs
+// (zero-order hold) and the measured values of every other variable, and is compared with the
+// measured states at every sample. Model selection (model_selection.h) scores candidates with
+// it and the simulation-error refit (simulation_refit.h) fits weights by it.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "methods/expression.h"
+#include "methods/gp/search.h"
+
+namespace usvid::gp {
+
+// A variable computed from others (a regime feature): recomputed in every simulation step from
+// the simulated states and the measured rest.
+struct DerivedColumn {
+  int index = 0;               // into SelectionData::names
+  Expression expression;       // of the variables `arguments`
+  std::vector<int> arguments;  // into names, in the order of expression.Variables()
+};
+
+struct SelectionData {
+  Eigen::VectorXd t;
+  std::vector<std::string> names;          // variables, as in the search
+  std::vector<Eigen::VectorXd> variables;  // every row
+  long validation_begin = 0;               // the rows [validation_begin, end) score candidates
+  double horizon_s = 10.0;
+  std::vector<DerivedColumn> derived;  // computed after the states, in this order
+};
+
+// Integrates segments side by side: segment j starts at row starts[j] and runs `steps` samples.
+// Each state's error is divided by its variance over the rows [validation_begin, end), and a
+// state that leaves its bounds (ten times its largest measured magnitude) ends its segment.
+class SegmentSimulator {
+ public:
+  // Variances per sample charged to a segment for each sample after it left the bounds.
+  static constexpr double kDivergedPenalty = 100.0;
+
+  // `state_vars`: the variables integrated; the others are read from the data.
+  SegmentSimulator(const SelectionData& data, const std::vector<int>& state_vars);
+
+  // The mean over segments, steps and states of the squared error over the state's variance;
+  // `diverged` says whether any segment left the bounds. `per_segment` (when given) receives
+  // each segment's mean; `residuals` (when given) each segment's, step's and state's error over
+  // the state's standard deviation, segment-major (0 after a segment left the bounds).
+  double Error(const std::vector<const Model*>& models, const std::vector<long>& starts, long steps,
+               bool& diverged, std::vector<double>* per_segment = nullptr,
+               std::vector<double>* residuals = nullptr) const;
+
+ private:
+  const SelectionData& data_;
+  std::vector<int> state_vars_;
+  std::vector<int> is_state_;
+  std::vector<double> variance_, bound_;
+};
+
+}  // namespace usvid::gp
