@@ -196,8 +196,6 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& o) {
   s.seed = o.seed;
   s.threads = o.threads;
   g.validation_fraction = o.validation_fraction.value_or(g.validation_fraction);
-  if (o.fit_mode != "simulation" && o.fit_mode != "equation")
-    throw InputError("--fit '" + o.fit_mode + "': unknown (known: simulation, equation)");
   g.weight_fit = o.fit_mode == "equation" || o.preset == "report" ? gp::WeightFit::kEquation
                                                                   : gp::WeightFit::kSimulation;
   if (s.population < 4 || s.generations < 1 || s.max_depth < 2 || s.max_depth > 17)
@@ -230,6 +228,8 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
         "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit, nominal, nomoto)");
   if (o.method != "gp" && o.method != "sindy" && o.features != "auto")
     throw InputError("--features: only gp and sindy take regime features");
+  if (o.fit_mode != "simulation" && o.fit_mode != "equation")
+    throw InputError("--fit '" + o.fit_mode + "': unknown (known: simulation, equation)");
   if (o.method == "refit") return IdentifyRefit(data, o, log);
   if (o.method == "nominal") return NominalModel(data, o);
   const auto start = std::chrono::steady_clock::now();

@@ -79,7 +79,8 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--features", o->request.features,
                   "gp, sindy: regime features among the variables: auto (hinges when the vessel "
                   "has a length and the record crosses a regime boundary), hinges (the Froude "
-                  "number Fn and abs(Fn - k) at 8 quantiles of the record's Fn), froude (Fn "
+                  "number Fn and abs(Fn - k) at quantiles of the record's Fn: 4 for gp, 8 for "
+                  "sindy), froude (Fn "
                   "alone), none")
       ->check(CLI::IsMember({"auto", "hinges", "froude", "none"}));
   cmd->add_option("--population", o->request.population, "GP population (2000, the report's)");

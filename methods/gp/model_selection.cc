@@ -25,8 +25,7 @@ Selection SelectModels(const SelectionData& data, const std::vector<StateCandida
   const double dt = (data.t(rows - 1) - data.t(0)) / static_cast<double>(rows - 1);
   const long span = rows - 1 - data.validation_begin;
   const long steps = std::clamp<long>(std::lround(data.horizon_s / dt), 1, span);
-  std::vector<long> starts;
-  for (long s = data.validation_begin; s + steps <= rows - 1; s += steps) starts.push_back(s);
+  const std::vector<long> starts = SegmentSimulator::Starts(data.validation_begin, rows, steps);
 
   Selection out;
   out.candidate_scores.resize(states.size());

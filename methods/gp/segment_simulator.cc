@@ -21,6 +21,12 @@ SegmentSimulator::SegmentSimulator(const SelectionData& data, const std::vector<
   }
 }
 
+std::vector<long> SegmentSimulator::Starts(long first, long end, long steps) {
+  std::vector<long> starts;
+  for (long s = first; s + steps < end; s += steps) starts.push_back(s);
+  return starts;
+}
+
 double SegmentSimulator::Error(const std::vector<const Model*>& models,
                                const std::vector<long>& starts, long steps, bool& diverged,
                                std::vector<double>* per_segment,

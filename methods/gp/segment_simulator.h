@@ -36,6 +36,9 @@ struct SelectionData {
 // state that leaves its bounds (ten times its largest measured magnitude) ends its segment.
 class SegmentSimulator {
  public:
+  // Segment starts every `steps` rows from `first`, each segment ending before row `end`.
+  static std::vector<long> Starts(long first, long end, long steps);
+
   // Variances per sample charged to a segment for each sample after it left the bounds.
   static constexpr double kDivergedPenalty = 100.0;
 

@@ -8,8 +8,29 @@
 namespace usvid::gp {
 namespace {
 
-// Residuals of every segment for the models with the biases and weights in the parameter
-// blocks (one block per state: bias, then weights); false when a segment leaves the bounds.
+// `models` with the biases and weights of `parameters` (one block per model: bias, then weights).
+std::vector<Model> WithParameters(const std::vector<Model>& models,
+                                  const std::vector<const double*>& parameters) {
+  std::vector<Model> out = models;
+  for (size_t s = 0; s < out.size(); ++s) {
+    out[s].bias = parameters[s][0];
+    for (size_t t = 0; t < out[s].weights.size(); ++t) out[s].weights[t] = parameters[s][t + 1];
+  }
+  return out;
+}
+
+// The error of `models` on segments of `steps` from each of `starts`; `residuals` as
+// SegmentSimulator::Error gives them.
+double Error(const SegmentSimulator& sim, const std::vector<Model>& models,
+             const std::vector<long>& starts, long steps, bool& diverged,
+             std::vector<double>* residuals = nullptr) {
+  std::vector<const Model*> pointers;
+  for (const Model& m : models) pointers.push_back(&m);
+  return sim.Error(pointers, starts, steps, diverged, nullptr, residuals);
+}
+
+// Residuals of every segment for the models with the parameter blocks' biases and weights;
+// false when a segment leaves the bounds.
 class SegmentResiduals {
  public:
   SegmentResiduals(const SegmentSimulator& sim, const std::vector<Model>& models,
@@ -17,17 +38,10 @@ class SegmentResiduals {
       : sim_(sim), models_(models), starts_(starts), steps_(steps) {}
 
   bool operator()(double const* const* parameters, double* residuals) const {
-    std::vector<Model> trial = models_;
-    std::vector<const Model*> pointers;
-    for (size_t s = 0; s < trial.size(); ++s) {
-      trial[s].bias = parameters[s][0];
-      for (size_t t = 0; t < trial[s].weights.size(); ++t)
-        trial[s].weights[t] = parameters[s][t + 1];
-      pointers.push_back(&trial[s]);
-    }
+    const std::vector<const double*> blocks(parameters, parameters + models_.size());
     bool diverged = false;
     std::vector<double> r;
-    sim_.Error(pointers, starts_, steps_, diverged, nullptr, &r);
+    Error(sim_, WithParameters(models_, blocks), starts_, steps_, diverged, &r);
     if (diverged) return false;
     std::copy(r.begin(), r.end(), residuals);
     return std::all_of(r.begin(), r.end(), [](double x) { return std::isfinite(x); });
@@ -39,21 +53,6 @@ class SegmentResiduals {
   const std::vector<long>& starts_;
   long steps_;
 };
-
-// The error of `models` on segments of `steps` from each of `starts`.
-double Error(const SegmentSimulator& sim, const std::vector<Model>& models,
-             const std::vector<long>& starts, long steps, bool& diverged) {
-  std::vector<const Model*> pointers;
-  for (const Model& m : models) pointers.push_back(&m);
-  return sim.Error(pointers, starts, steps, diverged);
-}
-
-// Segment starts: every `steps` rows from `first` while the segment ends before `end`.
-std::vector<long> Starts(long first, long end, long steps) {
-  std::vector<long> starts;
-  for (long s = first; s + steps < end; s += steps) starts.push_back(s);
-  return starts;
-}
 
 }  // namespace
 
@@ -69,8 +68,8 @@ SimulationRefit RefitBySimulation(const SelectionData& data, const std::vector<i
   const double dt = (data.t(rows - 1) - data.t(0)) / static_cast<double>(rows - 1);
   const long steps = std::clamp<long>(std::lround(options.horizon_s / dt), 1, rows - 1);
   const long fit_rows = std::clamp<long>(options.fit_rows, 0, rows);
-  const std::vector<long> starts = Starts(0, fit_rows, steps);
-  const std::vector<long> check = Starts(fit_rows, rows, steps);
+  const std::vector<long> starts = SegmentSimulator::Starts(0, fit_rows, steps);
+  const std::vector<long> check = SegmentSimulator::Starts(fit_rows, rows, steps);
   out.segments = static_cast<int>(starts.size());
   out.validation_segments = static_cast<int>(check.size());
   if (starts.empty() || check.empty()) {
@@ -115,11 +114,7 @@ SimulationRefit RefitBySimulation(const SelectionData& data, const std::vector<i
     out.reason = "the refit did not lower the simulation error (" + summary.message + ")";
     return out;
   }
-  std::vector<Model> refitted = models;
-  for (size_t s = 0; s < refitted.size(); ++s) {
-    refitted[s].bias = p[s][0];
-    for (size_t t = 0; t < refitted[s].weights.size(); ++t) refitted[s].weights[t] = p[s][t + 1];
-  }
+  std::vector<Model> refitted = WithParameters(models, {blocks.begin(), blocks.end()});
   out.validation_error_after = Error(sim, refitted, check, steps, diverged);
   if (diverged || !(out.validation_error_after < out.validation_error_before)) {
     out.reason = "the refitted weights did not lower the simulation error of the validation part";
