@@ -70,6 +70,15 @@ void Dataset::KeepRows(const std::vector<bool>& keep) {
   }
 }
 
+Dataset Dataset::Rows(Eigen::Index first, Eigen::Index count) const {
+  if (first < 0 || count < 0 || first + count > rows()) std::abort();
+  Dataset out(t_.segment(first, count));
+  out.metadata_ = metadata_;
+  for (const Channel& c : channels_)
+    out.channels_.push_back({c.name, c.values.segment(first, count), c.sampled.segment(first, count)});
+  return out;
+}
+
 void Dataset::SetTime(Eigen::VectorXd t) {
   if (t.size() != rows() && !channels_.empty()) std::abort();
   t_ = std::move(t);

@@ -43,6 +43,9 @@ class Dataset {
   void Remove(const std::string& name);
   // Keeps the rows where keep(i) is true, in every channel.
   void KeepRows(const std::vector<bool>& keep);
+  // A copy of `count` rows from `first` (every channel, the metadata): a window of a long record
+  // in time proportional to the window, not the record.
+  Dataset Rows(Eigen::Index first, Eigen::Index count) const;
   void SetTime(Eigen::VectorXd t);
 
   // The file the data came from (metadata "source"), or ""; SourcePrefix is "FILE: " or "", to

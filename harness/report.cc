@@ -6,7 +6,9 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "harness/markdown_html.h"
 #include "metrics/evaluation.h"
+#include "metrics/rank_tests.h"
 #include "plot/figure_grid.h"
 #include "plot/heat_map.h"
 #include "plot/svg_text.h"
@@ -15,6 +17,9 @@
 namespace usvid {
 namespace {
 
+// Method x test maneuver: the median held-out free-run fit (rank-based: diverged runs need no
+// clamping). The colour scale runs from the lowest median (at most 0, at least -100: lower ones
+// take its colour, their labels say how low) to 100 %.
 std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
                        const std::string& vessel) {
   std::vector<std::string> methods;
@@ -23,26 +28,22 @@ std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
     if (r.vessel != vessel) continue;
     if (std::find(methods.begin(), methods.end(), r.method) == methods.end())
       methods.push_back(r.method);
-    // As in summary.md: below -100 % counts as -100 % (one diverged run would swamp the mean).
-    if (r.status == "ok")
-      fits[{r.method, r.test_maneuver}].push_back(std::max(r.mean_fit_percent, -100.0));
+    if (r.status == "ok") fits[{r.method, r.test_maneuver}].push_back(r.mean_fit_percent);
   }
   Eigen::MatrixXd values(methods.size(), suite.test_maneuvers.size());
+  double lowest = 0.0;
   for (size_t m = 0; m < methods.size(); ++m)
     for (size_t t = 0; t < suite.test_maneuvers.size(); ++t) {
       const auto it = fits.find({methods[m], suite.test_maneuvers[t]});
-      double mean = NAN;
-      if (it != fits.end() && !it->second.empty()) {
-        mean = 0.0;
-        for (double f : it->second) mean += f / static_cast<double>(it->second.size());
-      }
-      values(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(t)) = mean;
+      const double median = it == fits.end() ? NAN : Median(it->second);
+      if (std::isfinite(median)) lowest = std::min(lowest, std::max(median, -100.0));
+      values(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(t)) = median;
     }
   HeatMap map(methods, suite.test_maneuvers, values);
-  map.SetTitle(vessel + ": held-out free-run fit (below -100 % counted as -100 %)")
+  map.SetTitle(vessel + ": held-out free-run fit, median over training maneuvers, noise, seeds")
       .SetAxisLabels("method", "test maneuver")
       .SetValueLabel("fit", "%")
-      .SetValueRange(0.0, 100.0)
+      .SetValueRange(lowest, 100.0)
       .SetDecimals(1);
   return map.ToSvg(900, 120 + 60 * static_cast<int>(methods.size()));
 }
@@ -90,39 +91,6 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
   return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));
 }
 
-// Markdown tables and headings to HTML, enough for summary.md.
-std::string MarkdownToHtml(const std::string& md) {
-  std::istringstream in(md);
-  std::ostringstream out;
-  bool table = false;
-  for (std::string line; std::getline(in, line);) {
-    if (line.starts_with("|")) {
-      if (line.find("---") != std::string::npos) continue;
-      if (!table) out << "<table>\n";
-      table = true;
-      out << "<tr>";
-      std::istringstream cells(line.substr(1));
-      for (std::string cell; std::getline(cells, cell, '|');)
-        out << "<td>" << svg::Escape(cell) << "</td>";
-      out << "</tr>\n";
-      continue;
-    }
-    if (table) out << "</table>\n";
-    table = false;
-    if (line.starts_with("### ")) {
-      out << "<h3>" << svg::Escape(line.substr(4)) << "</h3>\n";
-    } else if (line.starts_with("## ")) {
-      out << "<h2>" << svg::Escape(line.substr(3)) << "</h2>\n";
-    } else if (line.starts_with("# ")) {
-      out << "<h1>" << svg::Escape(line.substr(2)) << "</h1>\n";
-    } else if (!line.empty()) {
-      out << "<p>" << svg::Escape(line) << "</p>\n";
-    }
-  }
-  if (table) out << "</table>\n";
-  return out.str();
-}
-
 }  // namespace
 
 void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const std::string& summary,
@@ -135,8 +103,13 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
       << svg::Escape(suite.name)
       << "</title>\n<style>body{font-family:sans-serif;max-width:1060px;margin:2em auto;color:#222}"
          "table{border-collapse:collapse;margin:1em 0}td{border:1px solid #ccc;padding:3px 8px;"
-         "font-size:13px}figure{margin:1.5em 0}</style></head><body>\n";
+         "font-size:13px}th{border:1px solid #ccc;padding:3px 8px;font-size:13px;background:#f3f3f3}"
+         "figure{margin:1.5em 0}</style></head><body>\n";
   html << "<h1>usvid compare: " << svg::Escape(suite.name) << "</h1>\n";
+  // The verdict opens the report, as it opens summary.md; the rest of the summary follows the
+  // plots.
+  const size_t rest = summary.find("\n## ", summary.find("## Verdict") + 1);
+  html << MarkdownToHtml(summary.substr(0, rest));
   for (const std::string& vessel : vessels) {
     const std::string heat = FitHeatMap(suite, rows, vessel);
     WriteFileAtomically(dir + "/fit_" + vessel + ".svg", heat);
@@ -152,7 +125,8 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
       html << "<figure class=\"plot\">" << run << "</figure>\n";
     }
   }
-  html << MarkdownToHtml(summary) << "</body></html>\n";
+  if (rest != std::string::npos) html << MarkdownToHtml(summary.substr(rest));
+  html << "</body></html>\n";
   WriteFileAtomically(dir + "/report.html", html.str());
 }
 

@@ -18,6 +18,14 @@ nlohmann::json ResultRow::ToJson() const {
     j["nrmse"] = nrmse;
     j["mean_fit_percent"] = mean_fit_percent;
     j["diverged"] = diverged;
+    if (diverged) {
+      j["diverged_at_s"] = diverged_at_s;
+      j["diverged_channel"] = diverged_channel;
+    }
+    j["horizon_fit_percent"] = horizon_fit_percent;
+    if (valid_prediction_s) j["valid_prediction_s"] = *valid_prediction_s;
+    if (!derivative_r2.empty()) j["derivative_r2"] = derivative_r2;
+    j["closed_loop"] = closed_loop;
     j["fit_seconds"] = fit_seconds;
     j["terms"] = terms;
     if (!regime_fit_percent.empty()) j["regime_fit_percent"] = regime_fit_percent;
@@ -52,6 +60,13 @@ ResultRow ResultRow::FromCellJson(const nlohmann::json& j) {
   r.nrmse = j.at("nrmse").get<std::map<std::string, double>>();
   r.mean_fit_percent = j.at("mean_fit_percent").get<double>();
   r.diverged = j.at("diverged").get<bool>();
+  r.diverged_at_s = j.value("diverged_at_s", 0.0);
+  r.diverged_channel = j.value("diverged_channel", "");
+  r.horizon_fit_percent = j.at("horizon_fit_percent").get<std::map<std::string, double>>();
+  if (j.contains("valid_prediction_s")) r.valid_prediction_s = j["valid_prediction_s"].get<double>();
+  if (j.contains("derivative_r2"))
+    r.derivative_r2 = j["derivative_r2"].get<std::map<std::string, double>>();
+  r.closed_loop = j.at("closed_loop");
   r.terms = j.at("terms").get<int>();
   if (j.contains("regime_fit_percent"))
     r.regime_fit_percent = j["regime_fit_percent"].get<std::map<std::string, double>>();

@@ -21,7 +21,16 @@ struct ResultRow {
   std::map<std::string, double> channel_fit_percent;  // every channel of the free run (psi too)
   double mean_fit_percent = 0.0;
   std::map<std::string, double> regime_fit_percent;  // mean over states, per speed regime
+  // Per prediction horizon ("5", "30" s, "all": the free run), the mean fit % over the states.
+  std::map<std::string, double> horizon_fit_percent;
+  std::optional<double> valid_prediction_s;    // the free run's valid prediction time
+  std::map<std::string, double> derivative_r2;  // per state: the equation against the data
   bool diverged = false;
+  double diverged_at_s = 0.0;
+  std::string diverged_channel;  // which channel left its bound (metrics/free_run.h)
+  // The closed-loop replay of the test maneuver (metrics/closed_loop_replay.h ClosedLoopScore):
+  // its criteria against the record's, or why it could not be replayed.
+  nlohmann::json closed_loop = nlohmann::json::object();
   double fit_seconds = 0.0;
   int terms = 0;                          // complexity: additive terms over all equations
   std::optional<double> precision;        // structure recovery, mean over states, where the true

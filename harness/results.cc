@@ -8,38 +8,25 @@
 #include <sstream>
 
 #include "core/parse_number.h"
+#include "harness/verdict.h"
+#include "metrics/rank_tests.h"
 
 namespace usvid {
 namespace {
 
-// In the tables a fit below -100 % counts as -100 %: such a free run is useless either way, and
-// one diverged run at -1e5 % would otherwise swamp every mean. results.json keeps the raw values.
-constexpr double kFitFloor = -100.0;
-
-struct Stats {
-  double mean = 0.0, sd = 0.0;
-  int n = 0;
-};
-
-Stats Of(const std::vector<double>& v) {
-  Stats s;
-  s.n = static_cast<int>(v.size());
-  if (v.empty()) return s;
-  for (double x : v) s.mean += x / s.n;
-  for (double x : v) s.sd += (x - s.mean) * (x - s.mean) / std::max(1, s.n - 1);
-  s.sd = std::sqrt(s.sd);
-  return s;
-}
-
-std::string Cell(const Stats& s) {
-  if (s.n == 0) return "n/a";
-  char buf[64];
-  if (std::abs(s.mean) < 10 && s.mean != std::round(s.mean)) {
-    std::snprintf(buf, sizeof buf, "%.2f ± %.2f", s.mean, s.sd);
-  } else {
-    std::snprintf(buf, sizeof buf, "%.1f ± %.1f", s.mean, s.sd);
-  }
-  return buf;
+// Table cells: the median and, over more than two values, the interquartile range. Rank-based,
+// so a diverged run's fit of -1e5 % needs no clamping: it moves the median by one place.
+std::string Cell(const std::vector<double>& v) {
+  if (v.empty()) return "n/a";
+  const Spread s = Describe(v);
+  auto number = [](double x) {
+    char buf[32];
+    if (!std::isfinite(x)) return std::string(x > 0 ? "inf" : "-inf");
+    std::snprintf(buf, sizeof buf, std::abs(x) < 10 && x != std::round(x) ? "%.2f" : "%.1f", x);
+    return std::string(buf);
+  };
+  if (s.n <= 2) return number(s.median);
+  return number(s.median) + " [" + number(s.q1) + ", " + number(s.q3) + "]";
 }
 
 template <typename Key>
@@ -48,12 +35,12 @@ std::map<Key, std::vector<double>> Group(const std::vector<ResultRow>& rows,
                                          const std::function<Key(const ResultRow&)>& key) {
   std::map<Key, std::vector<double>> g;
   for (const ResultRow& r : rows)
-    if (r.status == "ok" && keep(r)) g[key(r)].push_back(std::max(r.mean_fit_percent, kFitFloor));
+    if (r.status == "ok" && keep(r)) g[key(r)].push_back(r.mean_fit_percent);
   return g;
 }
 
 // On measured data: per test maneuver, method x channel (heading and positions too), the
-// free-run fit % (mean ± sd over seeds).
+// free-run fit % (median over seeds).
 void PerChannelTables(const Suite& suite, const std::vector<ResultRow>& rows,
                       const std::string& vessel, const std::set<std::string>& methods,
                       std::ostringstream& md) {
@@ -78,11 +65,11 @@ void PerChannelTables(const Suite& suite, const std::vector<ResultRow>& rows,
       for (const ResultRow& r : rows)
         if (r.vessel == vessel && r.method == m && r.test_maneuver == test && r.status == "ok")
           for (const auto& [c, fit] : r.channel_fit_percent)
-            by[c].push_back(std::max(fit, kFitFloor));
+            by[c].push_back(fit);
       if (by.empty()) continue;
       md << "| " << m << " |";
       for (const std::string& c : channels)
-        md << ' ' << Cell(by.contains(c) ? Of(by[c]) : Stats{}) << " |";
+        md << ' ' << Cell(by.contains(c) ? by[c] : std::vector<double>{}) << " |";
       md << '\n';
     }
   }
@@ -97,12 +84,111 @@ std::string CsvField(const std::string& text) {
   return quoted + "\"";
 }
 
+
+// The headline tables: per training maneuver (never pooled), per method the median
+// [interquartile range] over its test rows of each score, and how many runs diverged or failed.
+void HeadlineTables(const Suite& suite, const std::vector<ResultRow>& rows,
+                    const std::string& vessel, const std::set<std::string>& methods,
+                    std::ostringstream& md) {
+  for (const std::string& train : suite.train_maneuvers) {
+    bool header = false;
+    for (const std::string& m : methods) {
+      std::vector<double> fit, h5, h30, vpt, r2, overshoot;
+      int runs = 0, diverged = 0, failed = 0;
+      for (const ResultRow& r : rows) {
+        if (r.vessel != vessel || r.train_maneuver != train || r.method != m) continue;
+        ++runs;
+        if (r.status != "ok") {
+          ++failed;
+          continue;
+        }
+        diverged += r.diverged;
+        fit.push_back(r.mean_fit_percent);
+        if (r.horizon_fit_percent.contains("5")) h5.push_back(r.horizon_fit_percent.at("5"));
+        if (r.horizon_fit_percent.contains("30")) h30.push_back(r.horizon_fit_percent.at("30"));
+        if (r.valid_prediction_s) vpt.push_back(*r.valid_prediction_s);
+        if (!r.derivative_r2.empty()) {
+          double sum = 0.0;
+          for (const auto& [_, v] : r.derivative_r2) sum += v;
+          r2.push_back(sum / static_cast<double>(r.derivative_r2.size()));
+        }
+        if (r.closed_loop.contains("first_overshoot_error_deg")) {
+          const nlohmann::json& e = r.closed_loop["first_overshoot_error_deg"];
+          overshoot.push_back(e.is_number() ? std::abs(e.get<double>()) : INFINITY);
+        }
+      }
+      if (runs == 0) continue;
+      if (!header) {
+        md << "\n### Trained on " << train
+           << "\n\n| method | free-run fit % | 5 s horizon fit % | 30 s horizon fit % | valid "
+              "prediction s | derivative R^2 | zig-zag 1st overshoot abs error deg | diverged | "
+              "failed |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+        header = true;
+      }
+      md << "| " << m << " | " << Cell(fit) << " | " << Cell(h5) << " | " << Cell(h30) << " | "
+         << Cell(vpt) << " | " << Cell(r2) << " | " << Cell(overshoot) << " | " << diverged << "/"
+         << (runs - failed) << " | " << failed << "/" << runs << " |\n";
+    }
+  }
+}
+
+// Per closed-loop test maneuver: the criteria of the held-out records and of each model's
+// replay (medians over the rows; "replayed": replays that gave the criteria).
+void ClosedLoopTables(const Suite& suite, const std::vector<ResultRow>& rows,
+                      const std::string& vessel, const std::set<std::string>& methods,
+                      std::ostringstream& md) {
+  for (const std::string& test : suite.test_maneuvers) {
+    std::vector<std::string> criteria;
+    std::map<std::string, std::map<std::string, std::vector<double>>> values;  // who, criterion
+    std::map<std::string, std::pair<int, int>> replayed;                       // ok, all
+    std::string not_replayable;
+    for (const ResultRow& r : rows) {
+      if (r.vessel != vessel || r.test_maneuver != test || r.status != "ok") continue;
+      const nlohmann::json& c = r.closed_loop;
+      if (!c.contains("measured")) {
+        if (c.contains("status")) not_replayable = c["status"].get<std::string>();
+        continue;
+      }
+      auto& [ok, all] = replayed[r.method];
+      ++all;
+      ok += c["status"] == "ok";
+      for (const auto& [name, v] : c["measured"].items()) {
+        if (std::ranges::find(criteria, name) == criteria.end()) criteria.push_back(name);
+        if (v.is_number()) values["measured"][name].push_back(v.get<double>());
+        const nlohmann::json& m = c["model"][name];
+        if (m.is_number()) values[r.method][name].push_back(m.get<double>());
+      }
+    }
+    if (criteria.empty()) {
+      if (suite.Measured() && !not_replayable.empty())
+        md << "\n" << test << ": " << not_replayable << ".\n";
+      continue;
+    }
+    md << "\n### " << test << ": closed-loop criteria (the maneuver re-run on each model)\n\n| |";
+    for (const std::string& c : criteria) md << ' ' << c << " |";
+    md << " replayed |\n| --- |";
+    for (size_t i = 0; i <= criteria.size(); ++i) md << " --- |";
+    md << "\n| measured |";
+    for (const std::string& c : criteria) md << ' ' << Cell(values["measured"][c]) << " |";
+    md << " |\n";
+    for (const std::string& m : methods) {
+      if (!replayed.contains(m)) continue;
+      md << "| " << m << " |";
+      for (const std::string& c : criteria) md << ' ' << Cell(values[m][c]) << " |";
+      md << ' ' << replayed[m].first << "/" << replayed[m].second << " |\n";
+    }
+  }
+}
+
 }  // namespace
 
 nlohmann::json ResultsJson(const Suite& suite, const std::vector<ResultRow>& rows, double seconds) {
   nlohmann::json r = nlohmann::json::array();
   for (const ResultRow& row : rows) r.push_back(row.ToJson());
-  return {{"suite", SuiteToJson(suite)}, {"seconds", seconds}, {"rows", r}};
+  return {{"suite", SuiteToJson(suite)},
+          {"seconds", seconds},
+          {"verdict", VerdictJson(Verdict(suite, rows))},
+          {"rows", r}};
 }
 
 std::string ResultsCsv(const std::vector<ResultRow>& rows) {
@@ -147,17 +233,29 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
     diverged += r.status == "ok" && r.diverged;
   }
   md << rows.size() << " scores (" << failed << " failed, " << diverged << " diverged) in "
-     << std::lround(seconds) << " s. Numbers: free-run fit % on held-out data (another maneuver, "
-     << "or the same with another seed), mean over the identified states, then mean ± sd over "
-        "seeds and noise levels; fits below -100 % count as -100 % in the tables (results.json "
-        "has the raw values).\n\n";
+     << std::lround(seconds)
+     << " s. Every score is on held-out data (another maneuver, or the same with another seed). "
+        "Fits are the free-run fit % averaged over the identified states; tables give the "
+        "median [interquartile range] of the raw values (results.json has every row).\n\n";
+  md << "## Verdict\n\nPer vessel, training maneuver and metric: each method's cell score (a "
+        "noise level and seed; its test maneuvers averaged), the methods ranked by a Friedman "
+        "test over the paired cells, each against the best and the next by Wilcoxon "
+        "signed-rank tests, Holm-adjusted, at "
+     << kVerdictAlpha
+     << ". The medians shown are of the cell scores; nominal (the true simulator) is the "
+        "ceiling.\n"
+     << VerdictMarkdown(Verdict(suite, rows)) << '\n';
   std::set<std::string> methods, vessels;
   for (const ResultRow& r : rows) {
     methods.insert(r.method);
     vessels.insert(r.vessel);
   }
   for (const std::string& vessel : vessels) {
-    md << "## " << vessel << "\n\n### Method x test maneuver\n\n| method |";
+    md << "## " << vessel << "\n";
+    HeadlineTables(suite, rows, vessel, methods, md);
+    ClosedLoopTables(suite, rows, vessel, methods, md);
+    md << "\n### Method x test maneuver (pooled over training maneuvers, noise and seeds)\n\n"
+          "| method |";
     for (const std::string& t : suite.test_maneuvers) md << ' ' << t << " |";
     md << "\n| --- |";
     for (size_t i = 0; i < suite.test_maneuvers.size(); ++i) md << " --- |";
@@ -172,7 +270,7 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
       md << "| " << m << " |";
       for (const std::string& t : suite.test_maneuvers) {
         const auto it = g.find({m, t});
-        md << ' ' << Cell(it == g.end() ? Stats{} : Of(it->second)) << " |";
+        md << ' ' << Cell(it == g.end() ? std::vector<double>{} : it->second) << " |";
       }
       md << '\n';
     }
@@ -190,8 +288,8 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
           "parameter error\n\n| method | precision | recall | terms | worst parameter error % |\n"
           "| --- | --- | --- | --- | --- |\n";
     for (const auto& [m, t] : terms)
-      md << "| " << m << " | " << Cell(Of(prec[m])) << " | " << Cell(Of(rec[m])) << " | "
-         << Cell(Of(t)) << " | " << Cell(Of(perr[m])) << " |\n";
+      md << "| " << m << " | " << Cell(prec[m]) << " | " << Cell(rec[m]) << " | " << Cell(t)
+         << " | " << Cell(perr[m]) << " |\n";
     md << "\n### Training x test maneuver, per method (generalisation)\n\n";
     for (const std::string& m : methods) {
       const auto gm = Group<std::pair<std::string, std::string>>(
@@ -213,14 +311,13 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
         std::vector<double> others;
         for (const std::string& t : suite.test_maneuvers) {
           const auto it = gm.find({train, t});
-          md << ' ' << Cell(it == gm.end() ? Stats{} : Of(it->second)) << " |";
+          md << ' ' << Cell(it == gm.end() ? std::vector<double>{} : it->second) << " |";
           if (it != gm.end() && t != train)
             others.insert(others.end(), it->second.begin(), it->second.end());
         }
         md << '\n';
-        const Stats o = Of(others);
-        if (o.n > 0 && o.mean > best_other) {
-          best_other = o.mean;
+        if (!others.empty() && Median(others) > best_other) {
+          best_other = Median(others);
           best = train;
         }
       }
@@ -228,13 +325,13 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
         char buf[64];
         std::snprintf(buf, sizeof buf, "%.1f", best_other);
         md << "\nBest training maneuver for " << m << " on " << vessel << ": **" << best
-           << "** (mean fit " << buf << " % on the other maneuvers).\n";
+           << "** (median fit " << buf << " % on the other maneuvers).\n";
       }
       md << '\n';
     }
   }
   // The maneuver design question per speed regime: which training maneuver gives the best
-  // held-out fit on the rows of the other test maneuvers in each regime.
+  // median held-out fit on the rows of the other test maneuvers in each regime.
   md << "## Best training maneuver per speed regime\n\n| vessel | method | displacement | "
         "semi-displacement | planing |\n| --- | --- | --- | --- | --- |\n";
   for (const std::string& vessel : vessels)
@@ -244,18 +341,18 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
         if (r.vessel == vessel && r.method == m && r.status == "ok" &&
             r.train_maneuver != r.test_maneuver)
           for (const auto& [regime, fit] : r.regime_fit_percent)
-            by[regime][r.train_maneuver].push_back(std::max(fit, kFitFloor));
+            by[regime][r.train_maneuver].push_back(fit);
       if (by.empty()) continue;
       md << "| " << vessel << " | " << m << " |";
       for (const char* regime : {"displacement", "semi-displacement", "planing"}) {
         std::string best = "n/a";
         double best_fit = -INFINITY;
         for (const auto& [train, fits] : by[regime]) {
-          const Stats st = Of(fits);
-          if (st.mean > best_fit) {
-            best_fit = st.mean;
+          const double median = Median(fits);
+          if (median > best_fit) {
+            best_fit = median;
             char buf[96];
-            std::snprintf(buf, sizeof buf, "%s (%.1f)", train.c_str(), st.mean);
+            std::snprintf(buf, sizeof buf, "%s (%.1f)", train.c_str(), median);
             best = buf;
           }
         }

@@ -11,6 +11,7 @@
 #include "diagnosis/diagnosis_json.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/identify.h"
+#include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
 #include "metrics/structure.h"
 #include "preprocessing/waterjet_forces.h"
@@ -164,6 +165,15 @@ std::vector<std::string> ScoredStates(const nlohmann::json& model) {
   return states;
 }
 
+// The maneuver a test was run with: its name in a simulated suite, the test data's declared
+// "maneuver" on measured data ("" when it declares none: recorded inputs only).
+std::string TestManeuverSpec(const Suite& suite, const std::string& test) {
+  if (!suite.Measured()) return test;
+  for (const SuiteData& d : suite.test_data)
+    if (d.name == test) return d.maneuver;
+  return "";
+}
+
 // One cell: the job's fit, scored on every test maneuver. Never throws: a failure is a row.
 std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                                const std::map<std::string, Dataset>& train_sets,
@@ -222,8 +232,20 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
             regime_sum += scores.at(state).at("fit_percent").get<double>();
           row.regime_fit_percent[regime] = regime_sum / static_cast<double>(row.fit_percent.size());
         }
+      for (const auto& [horizon, fits] : e.metrics.at("horizon_fit_percent").items()) {
+        double horizon_sum = 0.0;
+        for (const auto& [state, _] : row.fit_percent) horizon_sum += fits.at(state).get<double>();
+        row.horizon_fit_percent[horizon] = horizon_sum / static_cast<double>(row.fit_percent.size());
+      }
+      if (e.metrics.contains("valid_prediction_s"))
+        row.valid_prediction_s = e.metrics["valid_prediction_s"].get<double>();
+      for (const auto& [state, r2] : e.metrics.at("derivative_r2").items())
+        if (r2.is_number() && std::isfinite(r2.get<double>())) row.derivative_r2[state] = r2;
       ScoreModel(job.vessel, model, suite.Measured(), row);
       row.diverged = e.metrics.at("diverged").get<bool>();
+      row.diverged_at_s = e.run.diverged_at_s;
+      row.diverged_channel = e.run.diverged_channel;
+      row.closed_loop = ClosedLoopScore(model, job.vessel, TestManeuverSpec(suite, test), held);
     } catch (const std::exception& e) {
       row.status = std::string("failed: ") + e.what();
     }

@@ -18,7 +18,7 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
                          const std::string& where) {
   if (!v.is_object()) throw InputError(where + ": each data entry is an object");
   static const std::set<std::string> kFields = {"name",      "file",   "format", "map",
-                                                "rate_from", "from_s", "to_s"};
+                                                "rate_from", "from_s", "to_s", "maneuver"};
   for (const auto& [key, value] : v.items()) {
     if (!kFields.contains(key)) throw InputError(where + ": unknown field '" + key + "'");
     const bool number = key == "from_s" || key == "to_s";
@@ -39,6 +39,10 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
   if (!d.map.empty() && d.format != "csv-log")
     throw InputError(where + ": 'map' applies to format csv-log only");
   d.rate_from = v.value("rate_from", std::string());
+  d.maneuver = v.value("maneuver", std::string());
+  if (!d.maneuver.empty() && !d.maneuver.starts_with("zigzag") && !d.maneuver.starts_with("turning"))
+    throw InputError(where + ": maneuver '" + d.maneuver +
+                     "': only a zig-zag or a turning circle can be replayed (zigzag:A/B, turning:A)");
   d.from_s = v.value("from_s", d.from_s);
   d.to_s = v.value("to_s", d.to_s);
   if (!(d.from_s < d.to_s)) throw InputError(where + ": from_s must be before to_s");
@@ -49,6 +53,7 @@ nlohmann::json SuiteDataToJson(const SuiteData& d) {
   nlohmann::json j = {{"name", d.name}, {"file", d.file}, {"format", d.format}};
   if (!d.map.empty()) j["map"] = d.map;
   if (!d.rate_from.empty()) j["rate_from"] = d.rate_from;
+  if (!d.maneuver.empty()) j["maneuver"] = d.maneuver;
   if (std::isfinite(d.from_s)) j["from_s"] = d.from_s;
   if (std::isfinite(d.to_s)) j["to_s"] = d.to_s;
   return j;

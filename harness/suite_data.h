@@ -2,11 +2,14 @@
 // test on recorded files ("data": {"train": [...], "test": [...]}), each
 //   {"name": "zigzag 20/-20", "file": "path", "format": "csv" | "marin-dat" | "csv-log",
 //    "map": "t=time,psi=psi,delta=delta" (csv-log: import --map), "rate_from": "psi",
-//    "from_s": 0, "to_s": 140}
+//    "from_s": 0, "to_s": 140, "maneuver": "zigzag:-20/20"}
 // Paths are relative to the suite file's folder. "rate_from" adds the rate of turn r from that
 // heading (preprocessing/heading_rate.h) for logs without a gyro. A file is read as
 // `usvid import` would read it, with the same repairs. "from_s" and "to_s" keep the rows with
-// from_s <= t < to_s (a held-back part of one log as its own test set).
+// from_s <= t < to_s (a held-back part of one log as its own test set). "maneuver" names the
+// maneuver a test record was run with (maneuver_factory.h: zigzag:A/B or turning:A, A in
+// starboard-positive degrees), so that compare can replay it closed-loop on each model; without
+// it the record is scored on its recorded inputs only.
 #pragma once
 
 #include <cmath>
@@ -19,7 +22,7 @@
 namespace usvid {
 
 struct SuiteData {
-  std::string name, file, format = "csv", map, rate_from;
+  std::string name, file, format = "csv", map, rate_from, maneuver;
   double from_s = -INFINITY, to_s = INFINITY;
 };
 

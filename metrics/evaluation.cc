@@ -10,8 +10,60 @@
 #include "preprocessing/pipeline.h"
 #include "preprocessing/waterjet_forces.h"
 #include "simulation/vessel_simulator.h"
+#include "simulators/vessel.h"
 
 namespace usvid {
+namespace {
+
+// The time until the RMS of the dynamic channels' errors, each in units of its standard
+// deviation in the record, first exceeds kValidPredictionError (the record's length if never).
+double ValidPredictionTime(const Dataset& data, const FreeRun& run) {
+  std::vector<std::pair<const Eigen::VectorXd*, const Eigen::VectorXd*>> pairs;
+  std::vector<double> sd;
+  for (const std::string& c : run.channels) {
+    if (IsPositionOrHeading(c) || c == "x" || !data.Has(c)) continue;
+    const Eigen::VectorXd& m = data[c];
+    const double mean = m.mean(), s = std::sqrt((m.array() - mean).square().mean());
+    if (!(s > 0)) continue;
+    pairs.push_back({&m, &run.simulated[c]});
+    sd.push_back(s);
+  }
+  if (pairs.empty()) return NAN;
+  for (Eigen::Index k = 0; k < data.rows(); ++k) {
+    double sum = 0.0;
+    for (size_t i = 0; i < pairs.size(); ++i)
+      sum += std::pow(((*pairs[i].second)(k) - (*pairs[i].first)(k)) / sd[i], 2);
+    if (!(std::sqrt(sum / pairs.size()) <= kValidPredictionError)) return data.t()(k) - data.t()(0);
+  }
+  return data.duration();
+}
+
+}  // namespace
+
+std::string HorizonKey(double horizon_s) {
+  return std::isfinite(horizon_s) ? std::to_string(std::lround(horizon_s)) : "all";
+}
+
+std::map<std::string, double> HorizonFit(const nlohmann::json& model, const Dataset& data,
+                                         double horizon_s) {
+  std::map<std::string, Eigen::VectorXd> predicted;
+  const Eigen::VectorXd& t = data.t();
+  for (Eigen::Index start = 0; start < data.rows();) {
+    Eigen::Index end = start + 1;
+    while (end < data.rows() && t(end) < t(start) + horizon_s - 1e-9) ++end;
+    const Dataset window = data.Rows(start, end - start);
+    const FreeRun run = FreeRunModel(model, window);
+    for (const std::string& c : run.channels) {
+      if (!data.Has(c)) continue;
+      auto [it, _] = predicted.try_emplace(c, Eigen::VectorXd::Constant(data.rows(), NAN));
+      it->second.segment(start, end - start) = run.simulated[c];
+    }
+    start = end;
+  }
+  std::map<std::string, double> fit;
+  for (const auto& [c, p] : predicted) fit[c] = ScoreChannel(data[c], p).fit_percent;
+  return fit;
+}
 
 Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
   Dataset data = recorded;
@@ -63,10 +115,7 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
     if (data.rows() < 3 * k) continue;
     std::map<std::string, std::vector<double>> measured, predicted;
     for (Eigen::Index start = 0; start + k < data.rows(); start += k) {
-      std::vector<bool> keep(data.rows(), false);
-      for (Eigen::Index i = start; i <= start + k; ++i) keep[i] = true;
-      Dataset window = data;
-      window.KeepRows(keep);
+      const Dataset window = data.Rows(start, k + 1);
       const FreeRun run = FreeRunModel(model, window);
       for (const std::string& c : run.channels)
         if (data.Has(c)) {
@@ -83,10 +132,20 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
     k_step[std::to_string(k)] = per;
   }
   e.metrics["k_step_nrmse"] = k_step;
+  nlohmann::json horizons = {{"all", nlohmann::json::object()}};
+  for (const auto& [c, s] : channels.items()) horizons["all"][c] = s.at("fit_percent");
+  for (const double h : kHorizonsS)
+    if (h < data.duration()) horizons[HorizonKey(h)] = HorizonFit(model, data, h);
+  e.metrics["horizon_fit_percent"] = horizons;
+  if (const double vpt = ValidPredictionTime(data, e.run); std::isfinite(vpt))
+    e.metrics["valid_prediction_s"] = vpt;
 
   // Flat per-channel fields too, as the contract lists them per state channel.
   for (const auto& [c, s] : channels.items()) e.metrics[c] = s;
-  if (e.run.diverged) e.metrics["diverged_at_s"] = e.run.diverged_at_s;
+  if (e.run.diverged) {
+    e.metrics["diverged_at_s"] = e.run.diverged_at_s;
+    e.metrics["diverged_channel"] = e.run.diverged_channel;
+  }
 
   // Per speed regime, over the rows measured in it.
   Eigen::VectorXd speed;

@@ -421,6 +421,11 @@ std::vector<ActuatorModel> IdentifyWaterjetActuators(const Dataset& data,
   return models;
 }
 
+double ActuatorStep(const ActuatorModel& m, double y, double command, double h) {
+  const double q = m.RateLimited() ? 1.0 / (m.rate_max * m.rate_max) : 0.0;
+  return Step(y, m.offset + m.gain * command, h, m.time_constant_s, q);
+}
+
 void SimulateActuators(Dataset& data, const std::vector<ActuatorModel>& models) {
   std::vector<std::string> added;
   for (const ActuatorModel& m : models) {

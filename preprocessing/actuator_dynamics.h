@@ -88,6 +88,10 @@ std::vector<ActuatorModel> IdentifyWaterjetActuators(const Dataset& data,
 // delay_s >= 0, time_constant_s > 0 and rate_max > 0; the data are unchanged then.
 void SimulateActuators(Dataset& data, const std::vector<ActuatorModel>& models);
 
+// The actuator state `h` seconds after `y`, with the (already delayed) command held: one exact
+// step of the model (no delay applied here). For a closed loop that issues commands as it goes.
+double ActuatorStep(const ActuatorModel& model, double y, double command, double h);
+
 // A JSON array of the models: rate_max is null when not rate-limited, unknown deviations null.
 nlohmann::json ActuatorModelsToJson(const std::vector<ActuatorModel>& models);
 // The models of ActuatorModelsToJson (rms_error, samples and sd optional). Throws InputError

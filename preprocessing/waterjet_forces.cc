@@ -7,6 +7,17 @@
 
 namespace usvid {
 
+std::array<double, 4> WaterjetForces(double rpm, double nozzle_angle, double bucket_position) {
+  const double* p = OdinHs::kDefaultParams.data();
+  const double q = p[OdinHs::kJetFlowPerRpm] * rpm;
+  const double v_jet = q / p[OdinHs::kNozzleArea];
+  const double momentum = 2.0 * OdinHs::kRho * q * v_jet;
+  // The surge thrust at zero inlet speed: the momentum thrust alone.
+  const double fy = -momentum * std::sin(nozzle_angle);
+  return {OdinHs::SurgeThrust(rpm, 0.0, bucket_position, nozzle_angle, p), fy, OdinHs::kJetX * fy,
+          2.0 * q};
+}
+
 void AddWaterjetForces(Dataset& data) {
   std::string missing;
   for (const std::string& c : kWaterjetStateChannels)
@@ -20,7 +31,6 @@ void AddWaterjetForces(Dataset& data) {
     if (data.Has(c))
       throw InputError(data.SourcePrefix() + "--forces waterjet: the data already have '" + c +
                        "'");
-  const double* p = OdinHs::kDefaultParams.data();
   const Channel& rpm = data.Get("rpm");
   const Channel& nozzle = data.Get("nozzle_angle");
   const Channel& bucket = data.Get("bucket_position");
@@ -30,14 +40,8 @@ void AddWaterjetForces(Dataset& data) {
   Eigen::VectorXd fx = Eigen::VectorXd::Constant(n, NAN), fy = fx, fn = fx, flow = fx;
   for (Eigen::Index k = 0; k < n; ++k) {
     if (!sampled(k)) continue;
-    const double q = p[OdinHs::kJetFlowPerRpm] * rpm.values(k);
-    const double v_jet = q / p[OdinHs::kNozzleArea];
-    const double momentum = 2.0 * OdinHs::kRho * q * v_jet;
-    // The surge thrust at zero inlet speed: the momentum thrust alone.
-    fx(k) = OdinHs::SurgeThrust(rpm.values(k), 0.0, bucket.values(k), nozzle.values(k), p);
-    fy(k) = -momentum * std::sin(nozzle.values(k));
-    fn(k) = OdinHs::kJetX * fy(k);
-    flow(k) = 2.0 * q;
+    const auto f = WaterjetForces(rpm.values(k), nozzle.values(k), bucket.values(k));
+    fx(k) = f[0], fy(k) = f[1], fn(k) = f[2], flow(k) = f[3];
   }
   data.Set("tau_x", fx, sampled);
   data.Set("tau_y", fy, sampled);

@@ -27,6 +27,9 @@ inline const std::array<std::string, 3> kWaterjetStateChannels = {"rpm", "nozzle
 inline const std::array<std::string, 4> kWaterjetForceChannels = {"tau_x", "tau_y", "tau_n",
                                                                   "jet_flow"};
 
+// tau_x, tau_y, tau_n, jet_flow (kWaterjetForceChannels' order) of one sample of the jet states.
+std::array<double, 4> WaterjetForces(double rpm, double nozzle_angle, double bucket_position);
+
 // Adds tau_x, tau_y, tau_n, jet_flow, sampled where all three jet states are. Throws InputError
 // naming the jet-state channels the data lack, or a force channel the data already have.
 void AddWaterjetForces(Dataset& data);

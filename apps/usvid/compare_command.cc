@@ -85,8 +85,9 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("--suite", o->suite, "Suite JSON (default: the embedded default suite)");
   cmd->add_flag("--quick", o->quick, "The default suite, smaller: seconds, not minutes");
   cmd->add_option("--baseline", o->baseline,
-                  "A previous results.json: mark groups that got worse beyond the spread over "
-                  "seeds, and exit 3 when any did");
+                  "A previous results.json: per vessel and method, the cells paired with the "
+                  "baseline's and tested (Wilcoxon signed-rank, Holm); exit 3 when any group "
+                  "got worse");
   cmd->add_option("--threads", o->threads,
                   "Fits in parallel, per MPI rank (0: OMP_NUM_THREADS, else all cores)");
   cmd->add_flag("--fresh", o->fresh,

@@ -1,6 +1,10 @@
-// usvid evaluate --model model.json --data F.csv [--out DIR]
+// usvid evaluate --model model.json --data F.csv [--maneuver zigzag:A/B|turning:A]
+//                [--vessel V] [--out DIR]
 // Free-runs the model on F's inputs and scores it: metrics.json (on stdout without --out) and,
-// with --out, a plot of measured against simulated channels.
+// with --out, a plot of measured against simulated channels. With --maneuver, the maneuver F
+// records is also re-run closed-loop on the model (metrics/closed_loop_replay.h) and its
+// criteria reported beside F's own under "closed_loop"; the vessel (actuators, limits) is the
+// model's "vessel" unless --vessel names one.
 
 #include <iostream>
 #include <memory>
@@ -11,7 +15,9 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
+#include "simulation/vessel_simulator.h"
 #include "plot/figure_grid.h"
 
 namespace usvid {
@@ -21,6 +27,7 @@ struct EvaluateOptions {
   std::string model;
   std::string data;
   std::string actuators;
+  std::string maneuver, vessel;
   std::string out;
 };
 
@@ -34,6 +41,15 @@ void RunEvaluate(const EvaluateOptions& o) {
     e = EvaluateModel(model, data);
   } catch (const InputError& err) {
     throw InputError(o.model + " on " + o.data + ": " + err.what());
+  }
+  if (!o.maneuver.empty()) {
+    std::string vessel = o.vessel;
+    if (vessel.empty() && model.contains("vessel") && model["vessel"].is_string())
+      vessel = model["vessel"].get<std::string>();
+    if (vessel.empty())
+      throw InputError(o.model + ": --maneuver needs a vessel: the model names none, give --vessel");
+    FindVessel(vessel);  // throws for an unknown name
+    e.metrics["closed_loop"] = ClosedLoopScore(model, vessel, o.maneuver, data);
   }
   e.metrics["model"] = o.model;
   e.metrics["data"] = o.data;
@@ -71,6 +87,11 @@ void AddEvaluateCommand(CLI::App& app) {
   cmd->add_option("--actuators", o->actuators,
                   "actuators.json from usvid actuators: actuator states the log lacks are "
                   "simulated from its commands");
+  cmd->add_option("--maneuver", o->maneuver,
+                  "The maneuver the data record (zigzag:A/B or turning:A, A in starboard-positive "
+                  "degrees): re-run closed-loop on the model, its criteria beside the data's");
+  cmd->add_option("--vessel", o->vessel, "The vessel whose actuators the replay uses (default: "
+                  "the model's)");
   cmd->add_option("--out", o->out, "Directory for metrics.json and plots (else stdout)");
   cmd->callback([o] { RunEvaluate(*o); });
 }

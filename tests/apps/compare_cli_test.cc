@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 
 #include "core/csv_tokenizer.h"
@@ -76,8 +77,9 @@ TEST_F(CompareCliTest, BaselineMarksWhatGotWorse) {
   const nlohmann::json same_groups = ReadJsonFile((dir_ / "same" / "regressions.json").string());
   for (const auto& g : same_groups.at("groups"))
     EXPECT_NE(g.value("verdict", ""), "worse fit") << g.dump();
-  // Against a baseline whose fits were 30 points better: every group whose spread over seeds
-  // is smaller than that is worse, and the run exits 3.
+  // Against a baseline whose fits were 30 points better: every paired cell dropped by 30, so
+  // every group with pairs has median difference -30, each group the Holm-adjusted signed-rank
+  // test finds (p_adjusted < 0.05) is "worse fit", at least one is, and the run exits 3.
   nlohmann::json better = ReadJsonFile((first / "results.json").string());
   for (auto& row : better["rows"])
     if (row["status"] == "ok") row["mean_fit_percent"] = row["mean_fit_percent"].get<double>() + 30;
@@ -90,16 +92,90 @@ TEST_F(CompareCliTest, BaselineMarksWhatGotWorse) {
   const nlohmann::json reg = ReadJsonFile((dir_ / "worse" / "regressions.json").string());
   int worse_groups = 0;
   for (const auto& g : reg.at("groups")) {
-    if (g.at("spread").get<double>() < 30.0) {
+    if (g.at("pairs").get<int>() == 0) continue;
+    EXPECT_NEAR(g.at("median_difference").get<double>(), -30.0, 1e-6) << g.dump();
+    EXPECT_GE(g.at("p_adjusted").get<double>(), g.at("p_value").get<double>()) << g.dump();
+    if (g.at("p_adjusted").get<double>() < 0.05) {
       EXPECT_EQ(g.at("verdict"), "worse fit") << g.dump();
     }
     worse_groups += g.at("verdict") == "worse fit";
   }
   EXPECT_GT(worse_groups, 0);
+  EXPECT_THAT(ReadTextFile((dir_ / "worse" / "summary.md").string()),
+              HasSubstr("Wilcoxon signed-rank"));
   // Not a results.json: exit 2.
   const auto bad = RunUsvid("compare --suite " + suite_ + " --baseline " + suite_ + " --out " +
                             (dir_ / "bad").string());
   EXPECT_EQ(bad.exit_code, 2);
+}
+
+}  // namespace
+}  // namespace usvid
+
+namespace usvid {
+namespace {
+
+// Issue 20's row contract: a zig-zag test is re-run closed-loop on every model, and every
+// scored row has its prediction horizons; an open-loop test maneuver's rows say that they were
+// not replayed. results.csv reads back with Python's csv module: every row as wide as the header.
+TEST_F(CompareCliTest, RowsCarryClosedLoopCriteriaAndHorizons) {
+  const std::string suite = (dir_ / "zigzag.json").string();
+  WriteText(suite, nlohmann::json{{"name", "zigzag"},
+                                  {"vessels", {"odin3dof"}},
+                                  {"train_maneuvers", {"random-steps"}},
+                                  {"test_maneuvers", {"zigzag:20/20", "random-steps"}},
+                                  {"methods", {"nominal", "sindy", "eb-lr"}},
+                                  {"seeds", {1}},
+                                  {"train_seconds", 120},
+                                  {"test_seconds", 60}}
+                       .dump());
+  const auto out = dir_ / "zigzag";
+  const auto r = RunUsvid("compare --suite " + suite + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json results = ReadJsonFile((out / "results.json").string());
+  int replayed = 0;
+  for (const auto& row : results.at("rows")) {
+    if (row.at("status") != "ok") continue;
+    EXPECT_TRUE(row.at("horizon_fit_percent").contains("5") &&
+                row.at("horizon_fit_percent").contains("30") &&
+                row.at("horizon_fit_percent").contains("all"))
+        << row.dump();
+    const nlohmann::json& c = row.at("closed_loop");
+    if (row.at("test_maneuver") == "zigzag:20/20") {
+      ASSERT_TRUE(c.contains("first_overshoot_error_deg")) << c.dump();
+      replayed += c.at("status") == "ok";
+    } else {
+      EXPECT_THAT(c.at("status").get<std::string>(), HasSubstr("not replayable"));
+    }
+  }
+  EXPECT_GE(replayed, 2);  // nominal and sindy
+  EXPECT_TRUE(results.at("verdict").is_array() && !results.at("verdict").empty());
+  const std::string summary = ReadTextFile((out / "summary.md").string());
+  EXPECT_LT(summary.find("## Verdict"), summary.find("## odin3dof"));
+  if (std::system("python3 -c 'import csv' 2>/dev/null") != 0)
+    GTEST_SKIP() << "python3 absent: results.csv not read back";
+  const std::string check =
+      "python3 -c \"import csv,sys; rows=list(csv.reader(open(sys.argv[1]))); "
+      "sys.exit(0 if len(rows) > 1 and all(len(r) == len(rows[0]) for r in rows) else 1)\" " +
+      (out / "results.csv").string();
+  EXPECT_EQ(std::system(check.c_str()), 0) << "results.csv: rows differ in width from the header";
+}
+
+// A suite naming an unknown maneuver is refused before any fit (exit 2), and writes nothing.
+TEST_F(CompareCliTest, AnUnknownManeuverIsRefusedBeforeAnyFit) {
+  const std::string suite = (dir_ / "typo.json").string();
+  WriteText(suite, nlohmann::json{{"name", "typo"},
+                                  {"vessels", {"odin3dof"}},
+                                  {"train_maneuvers", {"random-steps"}},
+                                  {"test_maneuvers", {"zigzog:20/20"}},
+                                  {"methods", {"sindy"}}}
+                       .dump());
+  const auto out = dir_ / "typo";
+  const auto r = RunUsvid("compare --suite " + suite + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("zigzog"));
+  EXPECT_THAT(r.err, HasSubstr("test_maneuvers"));
+  EXPECT_FALSE(fs::exists(out / "results.json"));
 }
 
 }  // namespace

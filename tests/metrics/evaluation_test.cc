@@ -5,6 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <utility>
+#include <vector>
+
 #include "core/error.h"
 #include "effects/effect.h"
 #include "effects/effect_values.h"
@@ -126,6 +133,195 @@ TEST_F(EvaluationTest, BadVesselModelsAreRefused) {
                               {"effects", {{{"effect", "inertia"}, {"parameters", {{"sc", 1}}}}}}},
                              data),
                InputError);
+}
+
+}  // namespace
+}  // namespace usvid
+
+namespace usvid {
+namespace {
+
+// Records for the tests below: a vessel's noise-free run, and a record written channel by
+// channel as functions of time (10 Hz).
+Dataset Simulated(const std::string& vessel, const std::string& maneuver, double duration_s) {
+  const VesselSimulator& sim = FindVessel(vessel);
+  auto m = MakeManeuver(maneuver, sim.Info().actuation, duration_s, 4);
+  return sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
+}
+
+Dataset Written(double duration_s,
+                const std::vector<std::pair<std::string, std::function<double(double)>>>& of_t) {
+  const auto rows = static_cast<Eigen::Index>(std::lround(duration_s / 0.1)) + 1;
+  Dataset d(Eigen::VectorXd::LinSpaced(rows, 0.0, duration_s));
+  for (const auto& [name, f] : of_t) d.Set(name, d.t().unaryExpr(f));
+  return d;
+}
+
+// The msd's equation (domain.md section 2.1, x'' = (f - d x' - k x) / m) with damping d.
+nlohmann::json MsdModel(double damping) {
+  return {{"method", "truth"},
+          {"states", {"v"}},
+          {"variables", {"x", "v"}},
+          {"inputs", {"f"}},
+          {"equations", {{"v", "(f - " + std::to_string(damping) + "*v - 2*x) / 10"}}}};
+}
+
+// A vessel model of `vessel` with its damping scaled.
+nlohmann::json DampedVesselModel(const std::string& vessel, double scale) {
+  const Effect damping{EffectKind::kDamping, {{"scale", scale}}};
+  return {{"vessel", vessel}, {"effects", nlohmann::json::array({EffectToJson(damping)})}};
+}
+
+// Divergence is per channel: sway that grows as v' = 2 v from 0.1 m/s, on a record whose |v|
+// never exceeds 0.1 m/s, is stopped when it passes 10 x 0.1 = 1 m/s (0.1 e^(2t) = 1 at
+// t = ln(10) / 2 = 1.15 s, so at the 1.2 s sample), reported as "v", and held at its last value
+// in bound. The old single bound, ten times the largest magnitude of any channel (north up to
+// 1300 m here), would have let it reach 13000 m/s first, at t = ln(130000) / 2 = 5.9 s.
+TEST_F(EvaluationTest, GrowingSwayDivergesAtItsOwnBound) {
+  const Dataset data = Written(60.0, {{"u", [](double) { return 5.0; }},
+                                      {"v", [](double t) { return 0.1 * std::cos(0.5 * t); }},
+                                      {"r", [](double) { return 0.0; }},
+                                      {"psi", [](double) { return 0.0; }},
+                                      {"north", [](double t) { return 1000.0 + 5.0 * t; }},
+                                      {"east", [](double) { return 0.0; }}});
+  const nlohmann::json model = {{"equations", {{"u", "0*u"}, {"v", "2*v"}, {"r", "0*r"}}}};
+  const FreeRun run = FreeRunModel(model, data);
+  ASSERT_TRUE(run.diverged);
+  EXPECT_EQ(run.diverged_channel, "v");
+  EXPECT_NEAR(run.diverged_at_s, 1.2, 1e-9);
+  const Eigen::VectorXd& v = run.simulated["v"];
+  EXPECT_NEAR(v(11), 0.1 * std::exp(2.0 * 1.1), 1e-6);  // in bound at 1.1 s
+  EXPECT_EQ(v(v.size() - 1), v(11));                    // held from there on
+  const DivergenceBounds bounds(run.channels, data);
+  const auto at = [&](const char* c) {
+    return static_cast<size_t>(std::ranges::find(run.channels, c) - run.channels.begin());
+  };
+  EXPECT_NEAR(bounds.Bound(at("v")), 1.0, 1e-12);
+  EXPECT_NEAR(bounds.Bound(at("u")), 50.0, 1e-12);
+  EXPECT_NEAR(bounds.Bound(at("r")), 1e-2, 1e-15);  // a channel held at zero: 10 x 1e-3
+  for (const char* c : {"psi", "north", "east"}) EXPECT_TRUE(std::isinf(bounds.Bound(at(c)))) << c;
+  // The metrics name the channel too.
+  const Evaluation e = EvaluateModel(model, data);
+  EXPECT_TRUE(e.metrics.at("diverged").get<bool>());
+  EXPECT_EQ(e.metrics.at("diverged_channel"), "v");
+  EXPECT_NEAR(e.metrics.at("diverged_at_s").get<double>(), 1.2, 1e-9);
+}
+
+// Heading and positions are integrals of the velocities, only checked for finiteness: a model
+// turning in circles at a steady 0.2 rad/s for 300 s winds its heading up to 60 rad, 19 times the
+// largest heading the (wrapped) record shows, and is not diverged.
+TEST_F(EvaluationTest, ModelTurningInCirclesIsNotDiverged) {
+  const Dataset data = Written(
+      300.0, {{"u", [](double) { return 5.0; }},
+              {"v", [](double) { return 0.0; }},
+              {"r", [](double) { return 0.2; }},
+              {"psi", [](double t) { return std::remainder(0.2 * t, 2 * std::numbers::pi); }},
+              {"north", [](double t) { return 25.0 * std::sin(0.2 * t); }},
+              {"east", [](double t) { return 25.0 * (1 - std::cos(0.2 * t)); }}});
+  const nlohmann::json model = {{"equations", {{"u", "0*u"}, {"v", "-v"}, {"r", "0*r"}}}};
+  const FreeRun run = FreeRunModel(model, data);
+  EXPECT_FALSE(run.diverged);
+  EXPECT_TRUE(run.diverged_channel.empty());
+  const Eigen::VectorXd& psi = run.simulated["psi"];
+  EXPECT_NEAR(psi(psi.size() - 1), 60.0, 1e-6);
+  EXPECT_GT(std::abs(psi(psi.size() - 1)), 10 * data["psi"].cwiseAbs().maxCoeff());
+  // The circle itself is integrated right: radius u / r = 25 m about (0, 25).
+  EXPECT_NEAR(run.simulated["north"](1500), 25.0 * std::sin(30.0), 1e-6);
+  const Evaluation e = EvaluateModel(model, data);
+  EXPECT_FALSE(e.metrics.at("diverged").get<bool>());
+  EXPECT_FALSE(e.metrics.contains("diverged_channel"));
+}
+
+// Prediction horizons: the true model (the msd's exact equation, or the nominal odin3dof
+// simulator that made the noise-free data) fits every horizon to > 99 %. With the damping 30 %
+// low, restarting from the measured state every H seconds bounds how far the error grows: the
+// 5 s horizon fits better than the 30 s one, which fits at least as well as the free run ("all").
+TEST_F(EvaluationTest, ShortHorizonsBoundTheErrorGrowthOfAWrongModel) {
+  const Dataset msd = Simulated("msd", "random-steps", 180.0);
+  const Dataset odin = Simulated("odin3dof", "random-steps", 180.0);
+  const std::pair<const Dataset*, nlohmann::json> truths[] = {{&msd, MsdModel(1.0)},
+                                                              {&odin, {{"vessel", "odin3dof"}}}};
+  const std::pair<const Dataset*, nlohmann::json> wrongs[] = {
+      {&msd, MsdModel(0.7)}, {&odin, DampedVesselModel("odin3dof", 0.7)}};
+  for (const auto& [data, model] : truths) {
+    const auto fits = EvaluateModel(model, *data).metrics.at("horizon_fit_percent");
+    for (const char* h : {"5", "30", "all"})
+      for (const auto& [c, fit] : fits.at(h).items())
+        EXPECT_GT(fit.get<double>(), 99.0) << model.dump() << " " << h << " " << c;
+  }
+  for (const auto& [data, model] : wrongs) {
+    const auto fits = EvaluateModel(model, *data).metrics.at("horizon_fit_percent");
+    ASSERT_FALSE(fits.at("all").empty());
+    for (const auto& [c, all] : fits.at("all").items()) {
+      const double fit5 = fits.at("5").at(c), fit30 = fits.at("30").at(c);
+      EXPECT_GT(fit5, fit30) << model.dump() << " " << c;
+      EXPECT_GE(fit30, all.get<double>()) << model.dump() << " " << c;
+      EXPECT_LT(fit5, 99.0) << model.dump() << " " << c;  // the error shows at 5 s too
+    }
+  }
+  // An endless horizon is one window from the first row: the free run.
+  EXPECT_EQ(HorizonKey(INFINITY), "all");
+  EXPECT_EQ(HorizonKey(30.0), "30");
+  const auto endless = HorizonFit(MsdModel(0.7), msd, INFINITY);
+  const FreeRun run = FreeRunModel(MsdModel(0.7), msd);
+  for (const char* c : {"x", "v"})
+    EXPECT_NEAR(endless.at(c), ScoreChannel(msd[c], run.simulated[c]).fit_percent, 1e-9) << c;
+}
+
+// The horizons scored are those shorter than the record: "5", "30" and "all" for 180 s, and no
+// "30" for 20 s.
+TEST_F(EvaluationTest, HorizonsShorterThanTheRecordAreScored) {
+  const auto keys = [](const nlohmann::json& fits) {
+    std::vector<std::string> k;
+    for (const auto& [key, _] : fits.items()) k.push_back(key);
+    std::ranges::sort(k);
+    return k;
+  };
+  const auto long_fits = EvaluateModel(MsdModel(1.0), Simulated("msd", "multisine", 180.0))
+                             .metrics.at("horizon_fit_percent");
+  EXPECT_EQ(keys(long_fits), (std::vector<std::string>{"30", "5", "all"}));
+  const auto short_fits = EvaluateModel(MsdModel(1.0), Simulated("msd", "multisine", 20.0))
+                              .metrics.at("horizon_fit_percent");
+  EXPECT_EQ(keys(short_fits), (std::vector<std::string>{"5", "all"}));
+  for (const char* c : {"x", "v"}) EXPECT_GT(short_fits.at("5").at(c).get<double>(), 99.0) << c;
+}
+
+// valid_prediction_s: the true model's free run never leaves the record by more than
+// kValidPredictionError standard deviations, so it is valid for the whole record; one with the
+// damping 30 % low drifts off sooner.
+TEST_F(EvaluationTest, ValidPredictionTimeIsTheRecordForTheTruthAndShorterForADriftingModel) {
+  for (const char* vessel : {"msd", "odin3dof"}) {
+    const Dataset data = Simulated(vessel, "random-steps", 180.0);
+    const nlohmann::json truth =
+        std::string(vessel) == "msd" ? MsdModel(1.0) : nlohmann::json{{"vessel", vessel}};
+    const nlohmann::json drifting =
+        std::string(vessel) == "msd" ? MsdModel(0.7) : DampedVesselModel(vessel, 0.7);
+    EXPECT_DOUBLE_EQ(EvaluateModel(truth, data).metrics.at("valid_prediction_s").get<double>(),
+                     data.duration())
+        << vessel;
+    const double drift = EvaluateModel(drifting, data).metrics.at("valid_prediction_s");
+    EXPECT_GT(drift, 0.0) << vessel;
+    EXPECT_LT(drift, 0.75 * data.duration()) << vessel;
+  }
+}
+
+// A vessel model is held to the same per-channel bounds as an equation model, not only to its
+// simulator's 1e7: the msd with its damping scaled by -5 (x'' = (f + 5 x' - 2 x) / 10) on a
+// 180 s random-steps record (|v| <= 3.65 m/s, bound 36.5 m/s) is stopped where v leaves its
+// bound, as the equivalent equation model is, and held there.
+TEST_F(EvaluationTest, DivergingVesselModelIsStoppedAtItsChannelBound) {
+  const Dataset data = Simulated("msd", "random-steps", 180.0);
+  const FreeRun equations = FreeRunModel(MsdModel(-5.0), data);
+  ASSERT_TRUE(equations.diverged);
+  ASSERT_EQ(equations.diverged_channel, "v");
+  const FreeRun vessel = FreeRunModel(DampedVesselModel("msd", -5.0), data);
+  ASSERT_TRUE(vessel.diverged);
+  EXPECT_EQ(vessel.diverged_channel, "v");
+  EXPECT_NEAR(vessel.diverged_at_s, equations.diverged_at_s, 0.1);
+  const DivergenceBounds bounds(vessel.channels, data);
+  for (size_t i = 0; i < vessel.channels.size(); ++i)
+    EXPECT_LE(vessel.simulated[vessel.channels[i]].cwiseAbs().maxCoeff(), bounds.Bound(i))
+        << vessel.channels[i];
 }
 
 }  // namespace

@@ -1,0 +1,359 @@
+#include "metrics/closed_loop_replay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "core/derived_channels.h"
+#include "core/error.h"
+#include "maneuvers/maneuver_factory.h"
+#include "metrics/equation_model.h"
+#include "metrics/free_run.h"
+#include "metrics/turning_response.h"
+#include "metrics/zigzag_response.h"
+#include "preprocessing/actuator_dynamics.h"
+#include "preprocessing/waterjet_forces.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+namespace {
+
+constexpr double kMaxStep = 0.01;  // [s] integration step, as the free run's
+
+bool Varies(const Eigen::VectorXd& v) {
+  for (Eigen::Index k = 1; k < v.size(); ++k)
+    if (std::isfinite(v(k)) && std::isfinite(v(0)) && v(k) != v(0)) return true;
+  return false;
+}
+
+double MedianOf(Eigen::VectorXd v) {
+  std::vector<double> x;
+  for (double value : v)
+    if (std::isfinite(value)) x.push_back(value);
+  if (x.empty()) return 0.0;
+  std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+  return x[x.size() / 2];
+}
+
+// The maneuver, with every command but the yaw held at the record's first value: the record's
+// approach (its thrust, its bucket), which a vessel's default cruise need not be.
+class RecordedApproach : public Maneuver {
+ public:
+  RecordedApproach(std::unique_ptr<Maneuver> inner, const Actuation& act, const Dataset& recorded)
+      : inner_(std::move(inner)), held_(act.inputs(), NAN) {
+    for (int i = 0; i < act.inputs(); ++i)
+      if (i != act.yaw_input && recorded.Has(act.input_names[i]))
+        held_[i] = recorded[act.input_names[i]](0);
+  }
+  std::string Spec() const override { return inner_->Spec(); }
+  double Duration() const override { return inner_->Duration(); }
+  std::vector<double> InitialCommand() const override {
+    std::vector<double> u = inner_->InitialCommand();
+    Hold(u);
+    return u;
+  }
+  void Command(double t, std::span<const double> state, std::span<double> u) override {
+    inner_->Command(t, state, u);
+    Hold(u);
+  }
+  bool Done() const override { return inner_->Done(); }
+  nlohmann::json Report() const override { return inner_->Report(); }
+
+ private:
+  template <typename U>
+  void Hold(U& u) const {
+    for (size_t i = 0; i < held_.size(); ++i)
+      if (std::isfinite(held_[i])) u[i] = held_[i];
+  }
+  std::unique_ptr<Maneuver> inner_;
+  std::vector<double> held_;
+};
+
+double SampleRate(const Dataset& d) {
+  if (d.rows() < 2) throw InputError(d.SourcePrefix() + "closed loop: fewer than two rows");
+  return (d.rows() - 1) / d.duration();
+}
+
+// The commands issued so far, for the input in force at a (delayed) time.
+class CommandHistory {
+ public:
+  explicit CommandHistory(std::vector<double> initial) : initial_(std::move(initial)) {}
+  void Append(double t, const std::vector<double>& u) {
+    times_.push_back(t);
+    commands_.push_back(u);
+  }
+  double At(double t, int input) const {
+    const auto it = std::upper_bound(times_.begin(), times_.end(), t + 1e-12);
+    if (it == times_.begin()) return initial_[input];
+    return commands_[it - times_.begin() - 1][input];
+  }
+
+ private:
+  std::vector<double> initial_;
+  std::vector<double> times_;
+  std::vector<std::vector<double>> commands_;
+};
+
+// An actuator state the model reads: simulated from its command, or held.
+struct ActuatorState {
+  std::string channel;
+  int command = -1;                    // the command's input index
+  std::optional<ActuatorModel> model;  // none: held at `value`
+  double value = 0.0;
+};
+
+ClosedLoopReplay ReplayVesselModel(const nlohmann::json& model, Maneuver& maneuver,
+                                   double rate_hz) {
+  const VesselModel vessel = ParseVesselModel(model);
+  RunOptions options;
+  options.rate_hz = rate_hz;
+  const SimulationResult r =
+      vessel.simulator->RunManeuver(maneuver, vessel.params, ValuesOf(vessel.effects), options);
+  ClosedLoopReplay out;
+  out.run = r.data;
+  out.diverged = r.diverged;
+  out.diverged_at_s = r.diverged_at_s;
+  if (r.diverged) out.diverged_channel = "(simulator)";
+  return out;
+}
+
+ClosedLoopReplay ReplayEquationModel(const nlohmann::json& model, const VesselInfo& info,
+                                     Maneuver& maneuver, const Dataset& recorded) {
+  const Actuation& act = info.actuation;
+  const EquationModel system(model, [&](const std::string& c) { return recorded.Has(c); });
+  const std::vector<std::string>& channels = system.Channels();
+  auto command_index = [&](const std::string& name) {
+    const auto it = std::ranges::find(act.input_names, name);
+    return it == act.input_names.end() ? -1 : static_cast<int>(it - act.input_names.begin());
+  };
+  const bool jet_forces = model.contains("preprocessing") &&
+                          model["preprocessing"].value("forces", nlohmann::json()) == "waterjet";
+  // Each input's source: a command, an actuator state, or a jet force from the actuator states.
+  enum class Kind { kCommand, kActuator, kForce };
+  std::vector<std::pair<Kind, int>> sources;
+  std::vector<ActuatorState> actuators;
+  auto actuator = [&](const std::string& state) -> int {
+    for (size_t i = 0; i < actuators.size(); ++i)
+      if (actuators[i].channel == state) return static_cast<int>(i);
+    ActuatorState a{state};
+    for (const auto& [command, s] : kWaterjetActuators)
+      if (s == state) a.command = command_index(command);
+    if (a.command < 0 || !recorded.Has(state) || !recorded.Has(act.input_names[a.command]))
+      throw InputError("the record lacks '" + state + "' or its command");
+    if (Varies(recorded[act.input_names[a.command]])) {
+      a.model = IdentifyActuator(recorded, act.input_names[a.command], state);
+    } else {
+      a.value = MedianOf(recorded[state]);
+    }
+    actuators.push_back(a);
+    return static_cast<int>(actuators.size() - 1);
+  };
+  for (const std::string& name : system.Inputs()) {
+    if (const int c = command_index(name); c >= 0) {
+      sources.push_back({Kind::kCommand, c});
+    } else if (std::ranges::find(kWaterjetStateChannels, name) != kWaterjetStateChannels.end()) {
+      sources.push_back({Kind::kActuator, actuator(name)});
+    } else if (const auto f = std::ranges::find(kWaterjetForceChannels, name);
+               jet_forces && f != kWaterjetForceChannels.end()) {
+      for (const std::string& s : kWaterjetStateChannels) actuator(s);
+      sources.push_back({Kind::kForce, static_cast<int>(f - kWaterjetForceChannels.begin())});
+    } else {
+      throw InputError("input '" + name + "' is neither a command of " + info.name +
+                       " nor derived from one");
+    }
+  }
+  const std::vector<double> initial = maneuver.InitialCommand();
+  CommandHistory history(initial);
+  const auto n = static_cast<Eigen::Index>(channels.size());
+  Eigen::VectorXd x(n), u(static_cast<Eigen::Index>(sources.size()));
+  for (Eigen::Index i = 0; i < n; ++i)
+    x(i) = recorded.Has(channels[i]) ? recorded[channels[i]](0) : 0.0;
+  std::vector<double> y(actuators.size());
+  for (size_t a = 0; a < actuators.size(); ++a)
+    y[a] = actuators[a].model ? recorded[actuators[a].channel](0) : actuators[a].value;
+  const DivergenceBounds bounds(channels, recorded);
+  // The state the maneuver sees, in the vessel's order: the model's, the actuators', else the
+  // record's first row.
+  std::vector<double> vessel_state(info.states.size());
+  auto fill_state = [&] {
+    for (size_t i = 0; i < info.states.size(); ++i) {
+      const std::string& s = info.states[i];
+      if (const int c = system.Index(s); c >= 0) {
+        vessel_state[i] = x(c);
+      } else if (recorded.Has(s)) {
+        vessel_state[i] = recorded[s](0);
+      }
+      for (size_t a = 0; a < actuators.size(); ++a)
+        if (actuators[a].channel == s) vessel_state[i] = y[a];
+    }
+  };
+  const double period = 1.0 / SampleRate(recorded);
+  const int substeps = std::max(1, static_cast<int>(std::ceil(period / kMaxStep - 1e-9)));
+  const double h = period / substeps;
+  const long ticks = static_cast<long>(std::floor(recorded.duration() / period + 1e-9)) + 1;
+  ClosedLoopReplay out;
+  std::vector<double> times;
+  std::vector<std::vector<double>> rows;
+  std::vector<double> command(act.inputs());
+  for (long k = 0; k < ticks; ++k) {
+    const double t = static_cast<double>(k) * period;
+    fill_state();
+    maneuver.Command(t, vessel_state, command);
+    history.Append(t, command);
+    std::vector<double> row(x.data(), x.data() + n);
+    row.insert(row.end(), command.begin(), command.end());
+    row.insert(row.end(), y.begin(), y.end());
+    times.push_back(t);
+    rows.push_back(std::move(row));
+    if (k + 1 == ticks || maneuver.Done()) break;
+    for (int s = 0; s < substeps; ++s) {
+      const double ts = t + s * h;
+      for (size_t a = 0; a < actuators.size(); ++a)
+        if (actuators[a].model)
+          y[a] = ActuatorStep(*actuators[a].model, y[a],
+                              history.At(ts - actuators[a].model->delay_s, actuators[a].command),
+                              h);
+      for (size_t i = 0; i < sources.size(); ++i) {
+        const auto [kind, index] = sources[i];
+        double value = 0.0;
+        if (kind == Kind::kCommand) {
+          value = history.At(ts - system.DelayS(), index);
+        } else if (kind == Kind::kActuator) {
+          value = y[index];
+        } else {
+          double jet[3];
+          for (size_t j = 0; j < 3; ++j)
+            for (size_t a = 0; a < actuators.size(); ++a)
+              if (actuators[a].channel == kWaterjetStateChannels[j]) jet[j] = y[a];
+          value = WaterjetForces(jet[0], jet[1], jet[2])[index];
+        }
+        u(static_cast<Eigen::Index>(i)) = value;
+      }
+      system.Step(u, h, x);
+    }
+    if (const int bad = bounds.Exceeded(x); bad >= 0) {
+      out.diverged = true;
+      out.diverged_at_s = t + period;
+      out.diverged_channel = channels[bad];
+      break;
+    }
+  }
+  Eigen::VectorXd ts = Eigen::Map<const Eigen::VectorXd>(times.data(), times.size());
+  out.run = Dataset(ts);
+  std::vector<std::string> names = channels;
+  names.insert(names.end(), act.input_names.begin(), act.input_names.end());
+  for (const ActuatorState& a : actuators) names.push_back(a.channel);
+  for (size_t c = 0; c < names.size(); ++c) {
+    if (out.run.Has(names[c])) continue;  // a command the model also integrates: keep the state
+    Eigen::VectorXd v(static_cast<Eigen::Index>(rows.size()));
+    for (size_t k = 0; k < rows.size(); ++k) v(static_cast<Eigen::Index>(k)) = rows[k][c];
+    out.run.Set(names[c], v);
+  }
+  return out;
+}
+
+// first_overshoot_deg -> first_overshoot_error_deg, steady_rate_deg_s -> steady_rate_error_deg_s.
+std::string ErrorKey(const std::string& criterion) {
+  for (const std::string unit : {"_deg_s", "_deg", "_m", "_s"})
+    if (criterion.ends_with(unit))
+      return criterion.substr(0, criterion.size() - unit.size()) + "_error" + unit;
+  return criterion + "_error";
+}
+
+// A criterion's value for JSON: null when not finite.
+nlohmann::json Value(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+}  // namespace
+
+bool HasManeuverCriteria(const std::string& spec) {
+  return spec.starts_with("zigzag") || spec.starts_with("turning");
+}
+
+ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
+                                const std::string& spec, const Dataset& recorded) {
+  const VesselInfo& info = FindVessel(vessel).Info();
+  RecordedApproach maneuver(MakeManeuver(spec, info.actuation, recorded.duration(), 1),
+                            info.actuation, recorded);
+  if (IsVesselModel(model)) return ReplayVesselModel(model, maneuver, SampleRate(recorded));
+  return ReplayEquationModel(model, info, maneuver, recorded);
+}
+
+nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
+                                const std::string& heading, const std::string& rudder) {
+  if (spec.starts_with("zigzag")) {
+    // The threshold B: zigzag[:A/B], 20 by default.
+    double threshold = 20.0;
+    if (const size_t slash = spec.find('/'); slash != std::string::npos)
+      threshold = std::abs(std::stod(spec.substr(slash + 1)));
+    const ZigzagResponse z = AnalyseZigzag(data, threshold, heading, rudder);
+    auto at = [](const std::vector<double>& v, size_t i) { return i < v.size() ? v[i] : NAN; };
+    return {{"first_overshoot_deg", Value(at(z.overshoot_deg, 0))},
+            {"second_overshoot_deg", Value(at(z.overshoot_deg, 1))},
+            {"second_execute_s", Value(at(z.reversal_s, 0) - z.execute_s)},
+            {"period_s", Value(at(z.reversal_s, 2) - at(z.reversal_s, 0))}};
+  }
+  if (spec.starts_with("turning")) {
+    const TurningResponse r = AnalyseTurning(data, heading, rudder);
+    return {{"advance_m", Value(r.advance_m)},
+            {"transfer_m", Value(r.transfer_m)},
+            {"tactical_diameter_m", Value(r.tactical_diameter_m)},
+            {"steady_rate_deg_s", Value(r.steady_rate_deg_s)}};
+  }
+  throw InputError("closed loop: '" + spec + "' has no maneuver criteria");
+}
+
+nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
+                               const std::string& spec, const Dataset& recorded_data) {
+  nlohmann::json out = {{"maneuver", spec}};
+  if (spec.empty()) {
+    out["status"] = "not replayable: recorded inputs only (the test data name no maneuver)";
+    return out;
+  }
+  if (!HasManeuverCriteria(spec)) {
+    out["status"] = "not replayable: " + spec + " is open-loop, scored on its recorded inputs";
+    return out;
+  }
+  if (vessel.empty()) {
+    out["status"] = "not replayable: no vessel to take the actuators and limits from";
+    return out;
+  }
+  Dataset recorded = recorded_data;
+  AddSpeedAndCourse(recorded);
+  const Actuation& act = FindVessel(vessel).Info().actuation;
+  const std::string rudder = act.input_names.at(act.yaw_input);
+  ClosedLoopReplay replay;
+  try {
+    replay = ReplayManeuver(model, vessel, spec, recorded);
+  } catch (const InputError& e) {
+    out["status"] = std::string("not replayable: ") + e.what();
+    return out;
+  }
+  const std::string heading = replay.run.Has("psi") ? "psi" : "chi";
+  out["measured"] = ManeuverCriteria(spec, recorded, heading, rudder);
+  nlohmann::json model_criteria;
+  for (const auto& [name, _] : out["measured"].items()) model_criteria[name] = nullptr;
+  if (replay.diverged) {
+    out["status"] = "diverged at " + std::to_string(static_cast<int>(replay.diverged_at_s)) +
+                    " s (" + replay.diverged_channel + ")";
+  } else {
+    out["status"] = "ok";
+    try {
+      model_criteria = ManeuverCriteria(spec, replay.run, heading, rudder);
+      bool any = false;
+      for (const auto& [_, v] : model_criteria.items()) any = any || v.is_number();
+      if (!any) out["status"] = "incomplete: the model never turned far enough for the criteria";
+    } catch (const InputError& e) {
+      out["status"] = std::string("no criteria: ") + e.what();
+    }
+  }
+  out["model"] = model_criteria;
+  for (const auto& [name, measured] : out["measured"].items()) {
+    const nlohmann::json& m = model_criteria[name];
+    out[ErrorKey(name)] = measured.is_number() && m.is_number()
+                   ? nlohmann::json(m.get<double>() - measured.get<double>())
+                   : nlohmann::json();
+  }
+  return out;
+}
+
+}  // namespace usvid

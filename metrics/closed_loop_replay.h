@@ -1,0 +1,59 @@
+// Closed-loop replay of a test maneuver on an identified model, and the maneuver's criteria
+// (ITTC 7.5-04-02-01, IMO MSC.137(76)) of the replay beside those of the held-out record.
+//
+// A zig-zag's rudder reverses when the heading crosses its threshold. Replaying the recorded
+// rudder open-loop makes the model's reversals follow the true hull's heading, not its own, so
+// the overshoots it shows are not the model's. Here the model runs the maneuver's own rule
+// (maneuvers/: heading-triggered reversals, the vessel's yaw limits and rate), from the record's
+// first state, with every other command (thrust, bucket) held at the record's first value (the
+// record's approach: its speed and thrust). The criteria are read from the replay and from the
+// record by the same analysis (metrics/zigzag_response.h, metrics/turning_response.h).
+//
+// Models: an equation model (metrics/equation_model.h) whose inputs are the vessel's commands,
+// or the waterjet's actuator states or forces (preprocessing/waterjet_forces.h). Those follow the
+// commands through actuator dynamics identified on the record itself
+// (preprocessing/actuator_dynamics.h): the actuators are the test's hardware, the same for
+// every model, not part of the hull model scored. An actuator whose command the record holds is
+// held at its recorded median. A vessel model (nominal, refit, diagnose) runs the maneuver in
+// its simulator, from steady state under the record's first commands.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/dataset.h"
+
+namespace usvid {
+
+struct ClosedLoopReplay {
+  Dataset run;  // t, the model's channels, the commands (the vessel's input names)
+  bool diverged = false;
+  double diverged_at_s = 0.0;
+  std::string diverged_channel;
+};
+
+// Whether `spec` names a maneuver with criteria: zigzag[:A/B] or turning[:A].
+bool HasManeuverCriteria(const std::string& spec);
+
+// Runs maneuver `spec` on `model` closed-loop, on `vessel`'s actuation, for as long as
+// `recorded` lasts. Throws InputError saying why when the model cannot be replayed (an input
+// that is neither a command nor derived from one, an actuator the record cannot identify).
+ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
+                                const std::string& spec, const Dataset& recorded);
+
+// The criteria of maneuver `spec` read from a record (null where the record cannot give one):
+//   zigzag: first_overshoot_deg, second_overshoot_deg, second_execute_s (first execute to the
+//           first reversal), period_s (first to third reversal);
+//   turning: advance_m, transfer_m, tactical_diameter_m, steady_rate_deg_s.
+nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
+                                const std::string& heading, const std::string& rudder);
+
+// A row's "closed_loop" object: {"maneuver", "status", "measured": {criteria}, "model":
+// {criteria}, and per criterion "<name>_error_<unit>" = model - measured (null when either is)}.
+// status "ok"; "diverged at T s (channel)"; or "not replayable: why" (an open-loop maneuver, a
+// record without a maneuver, a model that cannot run one): never a missing field, never throws
+// for the model's sake (a record without the maneuver's channels still throws InputError).
+nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
+                               const std::string& spec, const Dataset& recorded);
+
+}  // namespace usvid
