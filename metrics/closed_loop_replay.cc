@@ -1,6 +1,7 @@
 #include "metrics/closed_loop_replay.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -9,6 +10,7 @@
 #include "maneuvers/maneuver_factory.h"
 #include "metrics/equation_model.h"
 #include "metrics/free_run.h"
+#include "metrics/rank_tests.h"
 #include "metrics/turning_response.h"
 #include "metrics/zigzag_response.h"
 #include "preprocessing/actuator_dynamics.h"
@@ -26,13 +28,12 @@ bool Varies(const Eigen::VectorXd& v) {
   return false;
 }
 
-double MedianOf(Eigen::VectorXd v) {
+// The median of a channel's samples (unsampled ones left out).
+double SampledMedian(const Eigen::VectorXd& v) {
   std::vector<double> x;
   for (double value : v)
     if (std::isfinite(value)) x.push_back(value);
-  if (x.empty()) return 0.0;
-  std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
-  return x[x.size() / 2];
+  return x.empty() ? 0.0 : Median(std::move(x));
 }
 
 // The maneuver, with every command but the yaw held at the record's first value: the record's
@@ -143,7 +144,7 @@ ClosedLoopReplay ReplayEquationModel(const nlohmann::json& model, const VesselIn
     if (Varies(recorded[act.input_names[a.command]])) {
       a.model = IdentifyActuator(recorded, act.input_names[a.command], state);
     } else {
-      a.value = MedianOf(recorded[state]);
+      a.value = SampledMedian(recorded[state]);
     }
     actuators.push_back(a);
     return static_cast<int>(actuators.size() - 1);
@@ -162,6 +163,13 @@ ClosedLoopReplay ReplayEquationModel(const nlohmann::json& model, const VesselIn
                        " nor derived from one");
     }
   }
+  // Where the jet states sit among the actuators, for the forces (-1: no force input).
+  std::array<int, 3> jet = {-1, -1, -1};
+  for (size_t j = 0; j < jet.size(); ++j)
+    for (size_t a = 0; a < actuators.size(); ++a)
+      if (actuators[a].channel == kWaterjetStateChannels[j]) jet[j] = static_cast<int>(a);
+  const bool any_force =
+      std::ranges::any_of(sources, [](const auto& s) { return s.first == Kind::kForce; });
   const std::vector<double> initial = maneuver.InitialCommand();
   CommandHistory history(initial);
   const auto n = static_cast<Eigen::Index>(channels.size());
@@ -210,24 +218,17 @@ ClosedLoopReplay ReplayEquationModel(const nlohmann::json& model, const VesselIn
       const double ts = t + s * h;
       for (size_t a = 0; a < actuators.size(); ++a)
         if (actuators[a].model)
-          y[a] = ActuatorStep(*actuators[a].model, y[a],
-                              history.At(ts - actuators[a].model->delay_s, actuators[a].command),
-                              h);
+          y[a] =
+              ActuatorStep(*actuators[a].model, y[a],
+                           history.At(ts - actuators[a].model->delay_s, actuators[a].command), h);
+      const std::array<double, 4> forces =
+          any_force ? WaterjetForces(y[jet[0]], y[jet[1]], y[jet[2]]) : std::array<double, 4>{};
       for (size_t i = 0; i < sources.size(); ++i) {
         const auto [kind, index] = sources[i];
-        double value = 0.0;
-        if (kind == Kind::kCommand) {
-          value = history.At(ts - system.DelayS(), index);
-        } else if (kind == Kind::kActuator) {
-          value = y[index];
-        } else {
-          double jet[3];
-          for (size_t j = 0; j < 3; ++j)
-            for (size_t a = 0; a < actuators.size(); ++a)
-              if (actuators[a].channel == kWaterjetStateChannels[j]) jet[j] = y[a];
-          value = WaterjetForces(jet[0], jet[1], jet[2])[index];
-        }
-        u(static_cast<Eigen::Index>(i)) = value;
+        u(static_cast<Eigen::Index>(i)) = kind == Kind::kCommand
+                                              ? history.At(ts - system.DelayS(), index)
+                                          : kind == Kind::kActuator ? y[index]
+                                                                    : forces[index];
       }
       system.Step(u, h, x);
     }
@@ -350,8 +351,8 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& v
   for (const auto& [name, measured] : out["measured"].items()) {
     const nlohmann::json& m = model_criteria[name];
     out[ErrorKey(name)] = measured.is_number() && m.is_number()
-                   ? nlohmann::json(m.get<double>() - measured.get<double>())
-                   : nlohmann::json();
+                              ? nlohmann::json(m.get<double>() - measured.get<double>())
+                              : nlohmann::json();
   }
   return out;
 }
