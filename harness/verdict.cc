@@ -42,11 +42,11 @@ const std::vector<Metric>& Metrics() {
        [](const ResultRow& r) { return Horizon(r, "5"); }},
       {"horizon_30s_fit_percent", "30 s horizon fit %", true,
        [](const ResultRow& r) { return Horizon(r, "30"); }},
-      {"first_overshoot_error_deg", "zig-zag 1st overshoot |error| deg", false,
+      {"first_overshoot_error_deg", "zig-zag 1st overshoot abs error deg", false,
        [](const ResultRow& r) { return CriterionError(r, "first_overshoot_error_deg"); }},
-      {"second_overshoot_error_deg", "zig-zag 2nd overshoot |error| deg", false,
+      {"second_overshoot_error_deg", "zig-zag 2nd overshoot abs error deg", false,
        [](const ResultRow& r) { return CriterionError(r, "second_overshoot_error_deg"); }},
-      {"tactical_diameter_error_m", "turning tactical diameter |error| m", false,
+      {"tactical_diameter_error_m", "turning tactical diameter abs error m", false,
        [](const ResultRow& r) { return CriterionError(r, "tactical_diameter_error_m"); }},
   };
   return metrics;
