@@ -296,6 +296,12 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
         o.vessel.empty() ? 0.0 : FindVessel(o.vessel).FroudeNumber(1.0).value_or(0.0);
     gpo.features = RegimeFeatures(o.features, froude_per_speed, prepared.data,
                                   o.method == "gp" ? kGpFroudeHinges : kSindyFroudeHinges);
+    // Term completion where it was measured to help: on records with regime features
+    // (odin-hs's zig-zag, docs/gp.md); on KVLCC2's single zig-zag it cost GP the heading.
+    gpo.complete_terms = o.method == "gp" && !gpo.features.empty();
+    if (gpo.complete_terms && o.features != "froude")
+      gpo.completion_features =
+          RegimeFeatures(o.features, froude_per_speed, prepared.data, kSindyFroudeHinges);
     for (const DerivedVariable& f : gpo.features) features_json[f.name] = f.expression;
   }
   nlohmann::json model = {

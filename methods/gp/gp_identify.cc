@@ -9,6 +9,7 @@
 #include "core/parse_number.h"
 #include "methods/gp/model_selection.h"
 #include "methods/gp/simulation_refit.h"
+#include "methods/gp/term_completion.h"
 
 namespace usvid::gp {
 
@@ -71,21 +72,25 @@ GpIdentification IdentifyWithGp(
   // A feature is named by its expression in parentheses, so that every equation written is in
   // channel names, and is computed from the variables it names (which must be among them).
   std::vector<DerivedColumn> derived;
-  for (const DerivedVariable& f : options.features) {
-    DerivedColumn d{static_cast<int>(all.names.size()),
-                    Expression::Parse(f.expression, "feature " + f.name),
-                    {}};
-    for (const std::string& arg : d.expression.Variables()) {
-      const auto it = std::find(all.names.begin(), all.names.end(), arg);
-      if (it == all.names.end())
-        throw InputError("gp: feature " + f.name + " = " + f.expression + " needs variable '" +
-                         arg + "'");
-      d.arguments.push_back(static_cast<int>(it - all.names.begin()));
+  auto add_features = [&](const std::vector<DerivedVariable>& features) {
+    for (const DerivedVariable& f : features) {
+      if (std::find(all.names.begin(), all.names.end(), f.Column()) != all.names.end()) continue;
+      DerivedColumn d{static_cast<int>(all.names.size()),
+                      Expression::Parse(f.expression, "feature " + f.name),
+                      {}};
+      for (const std::string& arg : d.expression.Variables()) {
+        const auto it = std::find(all.names.begin(), all.names.end(), arg);
+        if (it == all.names.end())
+          throw InputError("gp: feature " + f.name + " = " + f.expression + " needs variable '" +
+                           arg + "'");
+        d.arguments.push_back(static_cast<int>(it - all.names.begin()));
+      }
+      all.names.push_back(f.Column());
+      all.variables.push_back(d.expression.Evaluate(prepared.data));
+      derived.push_back(std::move(d));
     }
-    all.names.push_back(f.Column());
-    all.variables.push_back(d.expression.Evaluate(prepared.data));
-    derived.push_back(std::move(d));
-  }
+  };
+  add_features(options.features);
   const long rows = prepared.data.rows();
   const double f = options.validation_fraction;
   const long train_rows = f > 0 ? std::lround((1.0 - f) * static_cast<double>(rows)) : rows;
@@ -109,6 +114,30 @@ GpIdentification IdentifyWithGp(
     for (const ParetoPoint& p : r.pareto)
       if (seen.insert(p.equation).second) c.models.push_back(p.model);
     candidates.push_back(std::move(c));
+  }
+  if (options.complete_terms) {
+    add_features(options.completion_features);  // after the search, which does not draw them
+    std::vector<int> state_vars, feature_vars;
+    for (const std::string& s : states) {
+      const auto it = std::find(all.names.begin(), all.names.end(), s);
+      if (it != all.names.end()) state_vars.push_back(static_cast<int>(it - all.names.begin()));
+    }
+    for (const DerivedColumn& d : derived) feature_vars.push_back(d.index);
+    const std::vector<Tree> library =
+        CompletionLibrary(state_vars, feature_vars, options.search.functions);
+    const GpProblem head = Head(all, train_rows);
+    for (size_t i = 0; i < states.size(); ++i) {
+      GpProblem p = head;
+      p.target = prepared.data[states[i] + "_dot"].head(train_rows);
+      std::set<std::string> seen;
+      for (const Model& m : candidates[i].models) seen.insert(m.Equation(all.names));
+      const size_t n = candidates[i].models.size();
+      for (size_t c = 0; c < n; ++c) {
+        Model completed = CompleteTerms(candidates[i].models[c], library, p, options.search);
+        if (completed.fitness > -1.0 && seen.insert(completed.Equation(all.names)).second)
+          candidates[i].models.push_back(std::move(completed));
+      }
+    }
   }
 
   Selection selection;

@@ -36,6 +36,12 @@ struct GpIdentifyOptions {
   // into the equations as their expressions, recomputed from the simulated states when
   // candidates are simulated.
   std::vector<DerivedVariable> features;
+  // Each candidate also offered with the regime features, `completion_features` and the
+  // products of two states added, and its terms chosen again (term_completion.h). usvid
+  // identify turns it on with regime features.
+  bool complete_terms = false;
+  // Variables offered to term completion but not to the search (a finer regime basis).
+  std::vector<DerivedVariable> completion_features;
 };
 
 struct GpIdentification {
