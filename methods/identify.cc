@@ -381,6 +381,7 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     model["gp"] = {{"preset", o.preset},
                    {"operators", gp::OperatorList(so.functions)},
                    {"features", features_json},
+                   {"term_completion", gpo.complete_terms},
                    {"population", so.population},
                    {"generations", so.generations},
                    {"max_depth", so.max_depth},

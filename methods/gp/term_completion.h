@@ -11,6 +11,12 @@
 // at one standard error, and the completed candidate then competes with the others in model
 // selection by short-horizon simulation (model_selection.h), which keeps the smaller unless the
 // completed one simulates better. The library holds no operator GP was not given.
+// usvid identify turns it on where it was measured to help, on records with regime features,
+// and adds to them the regime basis at eight knots, which the search is not given (four hinges
+// there, regime_features.h): on odin-hs's zig-zag the finer basis and the products together
+// lifted GP's surge, and neither alone did. On KVLCC2's single training zig-zag, with no regime
+// features, the completed candidates fitted the training record's validation part and lost
+// heading on the other zig-zag (docs/gp.md).
 #pragma once
 
 #include <vector>
