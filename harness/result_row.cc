@@ -25,7 +25,6 @@ nlohmann::json ResultRow::ToJson() const {
     j["horizon_fit_percent"] = horizon_fit_percent;
     if (valid_prediction_s) j["valid_prediction_s"] = *valid_prediction_s;
     if (!derivative_r2.empty()) j["derivative_r2"] = derivative_r2;
-    j["closed_loop"] = closed_loop;
     j["fit_seconds"] = fit_seconds;
     j["terms"] = terms;
     if (!regime_fit_percent.empty()) j["regime_fit_percent"] = regime_fit_percent;
@@ -33,6 +32,8 @@ nlohmann::json ResultRow::ToJson() const {
     if (recall) j["structure_recall"] = *recall;
     if (parameter_error) j["parameter_error"] = *parameter_error;
   }
+  // Every row says whether its test was replayed closed-loop, failed fits too.
+  if (!closed_loop.is_null()) j["closed_loop"] = closed_loop;
   return j;
 }
 
@@ -54,6 +55,7 @@ ResultRow ResultRow::FromCellJson(const nlohmann::json& j) {
   r.test_seed = j.at("test_seed").get<uint64_t>();
   r.status = j.at("status").get<std::string>();
   r.fit_seconds = j.at("fit_seconds").get<double>();
+  if (j.contains("closed_loop")) r.closed_loop = j["closed_loop"];
   if (r.status != "ok") return r;
   r.fit_percent = j.at("fit_percent").get<std::map<std::string, double>>();
   r.channel_fit_percent = j.at("channel_fit_percent").get<std::map<std::string, double>>();
@@ -63,10 +65,10 @@ ResultRow ResultRow::FromCellJson(const nlohmann::json& j) {
   r.diverged_at_s = j.value("diverged_at_s", 0.0);
   r.diverged_channel = j.value("diverged_channel", "");
   r.horizon_fit_percent = j.at("horizon_fit_percent").get<std::map<std::string, double>>();
-  if (j.contains("valid_prediction_s")) r.valid_prediction_s = j["valid_prediction_s"].get<double>();
+  if (j.contains("valid_prediction_s"))
+    r.valid_prediction_s = j["valid_prediction_s"].get<double>();
   if (j.contains("derivative_r2"))
     r.derivative_r2 = j["derivative_r2"].get<std::map<std::string, double>>();
-  r.closed_loop = j.at("closed_loop");
   r.terms = j.at("terms").get<int>();
   if (j.contains("regime_fit_percent"))
     r.regime_fit_percent = j["regime_fit_percent"].get<std::map<std::string, double>>();

@@ -208,6 +208,8 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
     row.inputs = InputsOf(model);
     if (!failure.empty()) {
       row.status = failure;
+      row.closed_loop = {{"maneuver", TestManeuverSpec(suite, test)},
+                         {"status", "not replayed: the fit failed, there is no model"}};
       rows.push_back(row);
       continue;
     }
@@ -235,7 +237,8 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       for (const auto& [horizon, fits] : e.metrics.at("horizon_fit_percent").items()) {
         double horizon_sum = 0.0;
         for (const auto& [state, _] : row.fit_percent) horizon_sum += fits.at(state).get<double>();
-        row.horizon_fit_percent[horizon] = horizon_sum / static_cast<double>(row.fit_percent.size());
+        row.horizon_fit_percent[horizon] =
+            horizon_sum / static_cast<double>(row.fit_percent.size());
       }
       if (e.metrics.contains("valid_prediction_s"))
         row.valid_prediction_s = e.metrics["valid_prediction_s"].get<double>();
@@ -248,6 +251,8 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       row.closed_loop = ClosedLoopScore(model, job.vessel, TestManeuverSpec(suite, test), held);
     } catch (const std::exception& e) {
       row.status = std::string("failed: ") + e.what();
+      row.closed_loop = {{"maneuver", TestManeuverSpec(suite, test)},
+                         {"status", "not replayed: the model's evaluation failed"}};
     }
     rows.push_back(row);
   }

@@ -135,7 +135,11 @@ TEST_F(CompareCliTest, RowsCarryClosedLoopCriteriaAndHorizons) {
   const nlohmann::json results = ReadJsonFile((out / "results.json").string());
   int replayed = 0;
   for (const auto& row : results.at("rows")) {
-    if (row.at("status") != "ok") continue;
+    if (row.at("status") != "ok") {  // a failed fit's row still says it was not replayed
+      ASSERT_TRUE(row.contains("closed_loop")) << row.dump();
+      EXPECT_THAT(row.at("closed_loop").at("status").get<std::string>(), HasSubstr("not replayed"));
+      continue;
+    }
     EXPECT_TRUE(row.at("horizon_fit_percent").contains("5") &&
                 row.at("horizon_fit_percent").contains("30") &&
                 row.at("horizon_fit_percent").contains("all"))
