@@ -76,18 +76,15 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
 
 // The input map a job's method is fitted through: the method's "forces" ("none": the commands),
 // else the waterjet forces when the vessel logs its jets' states and the method takes inputs
-// as channels (not a vessel model, nor the inputs named by hand; not eb-lr, whose steady windows
-// need inputs held constant, which forces from measured jet states never are).
+// as channels (not a vessel model, nor the inputs named by hand; eb-lr finds its steady windows
+// where the commands are held).
 std::string ForcesFor(const FitJob& job) {
   const nlohmann::json& o = job.method.options;
   if (o.contains("forces")) return o["forces"] == "none" ? "" : o["forces"].get<std::string>();
-  static const std::set<std::string> kChannelMethods = {"gp", "sindy", "fossen-ceres"};
+  static const std::set<std::string> kChannelMethods = {"gp", "sindy", "fossen-ceres", "eb-lr"};
   if (job.vessel.empty() || o.contains("inputs") || !kChannelMethods.contains(job.method.method))
     return "";
-  const std::vector<std::string>& states = FindVessel(job.vessel).Info().states;
-  for (const std::string& c : kWaterjetStateChannels)
-    if (std::ranges::find(states, c) == states.end()) return "";
-  return "waterjet";
+  return HasWaterjetStates(FindVessel(job.vessel).Info().states) ? "waterjet" : "";
 }
 
 // What a row's model was driven by: its inputs, and the force map that derived them.

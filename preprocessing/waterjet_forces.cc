@@ -1,5 +1,6 @@
 #include "preprocessing/waterjet_forces.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -59,6 +60,12 @@ void CheckMap(const std::string& map) {
 void AddForces(Dataset& data, const std::string& map) {
   CheckMap(map);
   if (!map.empty()) AddWaterjetForces(data);
+}
+
+bool HasWaterjetStates(const std::vector<std::string>& channels) {
+  return std::ranges::all_of(kWaterjetStateChannels, [&](const std::string& c) {
+    return std::ranges::find(channels, c) != channels.end();
+  });
 }
 
 std::vector<std::string> ForceChannels(const std::string& map) {

@@ -27,6 +27,9 @@ inline const std::array<std::string, 3> kWaterjetStateChannels = {"rpm", "nozzle
 inline const std::array<std::string, 4> kWaterjetForceChannels = {"tau_x", "tau_y", "tau_n",
                                                                   "jet_flow"};
 
+// Whether `channels` (a vessel's states, a log's columns) hold every jet state: a waterjet craft.
+bool HasWaterjetStates(const std::vector<std::string>& channels);
+
 // tau_x, tau_y, tau_n, jet_flow (kWaterjetForceChannels' order) of one sample of the jet states.
 std::array<double, 4> WaterjetForces(double rpm, double nozzle_angle, double bucket_position);
 

@@ -20,6 +20,7 @@ using Span = SteadyWindow;  // samples [first, last]
 struct Signals {
   Eigen::VectorXd t;
   std::array<Eigen::VectorXd, 2> x, s, u;  // raw states, smoothed states, inputs
+  Eigen::VectorXd q;  // the thrust's loss channel (EbLrOptions::thrust_loss_channel), or empty
 };
 
 // One row of M(x) x' + sigma(x) = tau: its bases, coefficients and fit residuals.
@@ -29,8 +30,17 @@ struct Equation {
   const Basis* mass_basis = nullptr;
   std::vector<std::string> sigma_terms, mass_terms;
   Eigen::VectorXd sigma, mass, sigma_residual, mass_residual;
+  bool thrust_loss_term = false;  // sigma gains k q U (EbLrOptions::thrust_loss_channel)
+  double thrust_loss = 0.0;       // k
+  std::string thrust_loss_text;   // "q*U"
   double output_error_rms = -1.0;
   int output_error_iterations = 0;
+
+  // sigma at (speed, rate) with the loss channel at q.
+  double Sigma(double speed, double rate, double q) const {
+    return Combination(*sigma_basis, sigma, speed, rate) +
+           (thrust_loss_term ? thrust_loss * q * speed : 0.0);
+  }
 };
 
 void CheckOptions(const EbLrOptions& o) {
@@ -121,9 +131,14 @@ std::vector<Span> TransientRuns(Eigen::Index n, const std::vector<Span>& windows
 }
 
 // sigma from the steady windows, each corrected by what it still accelerates under the mass.
+// With the thrust's loss, k is one more column, the window's mean of tau U: at a held command
+// the windows of a step grid reach several speeds (straight and in turns of each yaw step), so
+// the steady states separate k tau U from sigma(U, r). The transients cannot: near a steady
+// state the loss scales the force as (1 - k U) / m_U(U), which a mass slope nearly matches.
 void FitSigma(const Signals& s, int i, const std::vector<Span>& windows, Equation& eq) {
   const Basis& basis = *eq.sigma_basis;
-  const auto cols = static_cast<Eigen::Index>(basis.size());
+  const auto terms = static_cast<Eigen::Index>(basis.size());
+  const Eigen::Index cols = terms + (eq.thrust_loss_term ? 1 : 0);
   const auto rows = static_cast<Eigen::Index>(windows.size());
   Eigen::MatrixXd a(rows, cols);
   Eigen::VectorXd b(rows), scale(cols);
@@ -132,7 +147,10 @@ void FitSigma(const Signals& s, int i, const std::vector<Span>& windows, Equatio
     const Eigen::Index len = span.last - span.first + 1;
     const double speed = s.x[0].segment(span.first, len).mean();
     const double rate = s.x[1].segment(span.first, len).mean();
-    for (Eigen::Index j = 0; j < cols; ++j) a(w, j) = basis[j].Evaluate(speed, rate);
+    for (Eigen::Index j = 0; j < terms; ++j) a(w, j) = basis[j].Evaluate(speed, rate);
+    if (eq.thrust_loss_term)
+      a(w, terms) =
+          s.q.segment(span.first, len).cwiseProduct(s.x[0].segment(span.first, len)).mean();
     const double accelerating = Stieltjes(s.s[i], span, [&](Eigen::Index k) {
       return Combination(*eq.mass_basis, eq.mass, s.s[0](k), s.s[1](k));
     });
@@ -140,13 +158,19 @@ void FitSigma(const Signals& s, int i, const std::vector<Span>& windows, Equatio
         s.u[i].segment(span.first, len).mean() - accelerating / (s.t(span.last) - s.t(span.first));
   }
   const double speed_max = s.x[0].cwiseAbs().maxCoeff(), rate_max = s.x[1].cwiseAbs().maxCoeff();
-  for (Eigen::Index j = 0; j < cols; ++j)
+  for (Eigen::Index j = 0; j < terms; ++j)
     scale(j) = std::abs(basis[j].Evaluate(speed_max, rate_max));
-  eq.sigma = Solve(a, b, scale, eq.sigma_terms, "sigma_" + eq.state);
-  eq.sigma_residual = b - a * eq.sigma;
+  if (eq.thrust_loss_term) scale(terms) = s.q.cwiseAbs().maxCoeff() * speed_max;
+  std::vector<std::string> names = eq.sigma_terms;
+  if (eq.thrust_loss_term) names.push_back(eq.thrust_loss_text);
+  const Eigen::VectorXd c = Solve(a, b, scale, names, "sigma_" + eq.state);
+  eq.sigma = c.head(terms);
+  if (eq.thrust_loss_term) eq.thrust_loss = c(terms);
+  eq.sigma_residual = b - a * c;
 }
 
-// M from the transient pieces: sum_j c_j int mu_j dx = int (tau - sigma) dt.
+// M from the transient pieces: sum_j c_j int mu_j dx = int (tau - sigma) dt, sigma with the
+// thrust's loss k tau U.
 void FitMass(const Signals& s, int i, const std::vector<Span>& pieces, Equation& eq) {
   const Basis& basis = *eq.mass_basis;
   const auto cols = static_cast<Eigen::Index>(basis.size());
@@ -159,8 +183,9 @@ void FitMass(const Signals& s, int i, const std::vector<Span>& pieces, Equation&
       a(p, j) = Stieltjes(s.s[i], span,
                           [&](Eigen::Index k) { return basis[j].Evaluate(s.s[0](k), s.s[1](k)); });
     for (Eigen::Index k = span.first; k < span.last; ++k) {
-      const double sigma0 = Combination(*eq.sigma_basis, eq.sigma, s.s[0](k), s.s[1](k));
-      const double sigma1 = Combination(*eq.sigma_basis, eq.sigma, s.s[0](k + 1), s.s[1](k + 1));
+      const double q = eq.thrust_loss_term ? s.q(k) : 0.0;
+      const double sigma0 = eq.Sigma(s.s[0](k), s.s[1](k), q);
+      const double sigma1 = eq.Sigma(s.s[0](k + 1), s.s[1](k + 1), q);
       b(p) += (s.u[i](k) - 0.5 * (sigma0 + sigma1)) * (s.t(k + 1) - s.t(k));
     }
   }
@@ -210,8 +235,23 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
   eq[1].sigma_basis = &options.sigma_rate_basis;
   eq[0].mass_basis = &options.mass_speed_basis;
   eq[1].mass_basis = &options.mass_rate_basis;
+  eq[0].thrust_loss_term = !options.thrust_loss_channel.empty();
+  if (eq[0].thrust_loss_term) {
+    s.q = Column(data, options.thrust_loss_channel, "thrust loss");
+    eq[0].thrust_loss_text = options.thrust_loss_channel + "*" + speed;
+  }
+  // The inputs that are held at each step of the experiment: the commands, when the regression's
+  // inputs are forces that slew to their new values and carry measurement noise.
+  std::array<Eigen::VectorXd, 2> held = s.u;
+  if (!options.held_inputs.empty()) {
+    if (options.held_inputs.size() != 2)
+      throw InputError("eb-lr option held_inputs: names a thrust and a yaw command, got " +
+                       std::to_string(options.held_inputs.size()) + " channels");
+    held = {Column(data, options.held_inputs[0], "held thrust command"),
+            Column(data, options.held_inputs[1], "held yaw command")};
+  }
   const std::vector<Eigen::Index> breaks =
-      StepBreaks({s.u[0], s.u[1]}, options.steady.input_tolerance);
+      StepBreaks({held[0], held[1]}, options.steady.input_tolerance);
   for (int i = 0; i < 2; ++i) {
     if (s.u[i].maxCoeff() == s.u[i].minCoeff())
       throw InputError("eb-lr: the input '" + eq[i].input +
@@ -223,7 +263,7 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
   }
 
   const SteadyWindowReport steady =
-      DetectSteadyWindows(s.t, {s.x[0], s.x[1]}, {s.u[0], s.u[1]}, options.steady);
+      DetectSteadyWindows(s.t, {s.x[0], s.x[1]}, {held[0], held[1]}, options.steady);
   const std::vector<Span>& windows = steady.windows;
   for (const Equation& e : eq)
     if (windows.size() < e.sigma_terms.size())
@@ -257,7 +297,7 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
       if (!options.output_error_mass) continue;
       const MassOutputErrorFit fit =
           FitMassByOutputError({s.t, s.s[0], s.s[1], s.x[i], s.u[i], i, *eq[i].sigma_basis,
-                                eq[i].sigma, *eq[i].mass_basis, runs},
+                                eq[i].sigma, *eq[i].mass_basis, runs, s.q, eq[i].thrust_loss},
                                eq[i].mass);
       eq[i].mass = fit.mass;
       eq[i].output_error_rms = fit.rms;
@@ -289,20 +329,27 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
   for (int i = 0; i < 2; ++i) {
     const Equation& e = eq[i];
     info["noise_sd"][e.state] = steady.noise_sd[i];
-    info["fit"]["sigma_" + e.state] = {{"basis", BasisText(*e.sigma_basis)},
-                                       {"rms", Rms(e.sigma_residual)}};
+    info["fit"]["sigma_" + e.state] = {
+        {"basis", BasisText(*e.sigma_basis) + (e.thrust_loss_term ? "," + e.thrust_loss_text : "")},
+        {"rms", Rms(e.sigma_residual)}};
     info["fit"]["m_" + e.state] = {{"basis", BasisText(*e.mass_basis)},
                                    {"rms", Rms(e.mass_residual)}};
     if (options.output_error_mass) {
       info["fit"]["m_" + e.state]["output_error_rms"] = e.output_error_rms;
       info["fit"]["m_" + e.state]["output_error_iterations"] = e.output_error_iterations;
     }
-    for (size_t j = 0; j < e.sigma_terms.size(); ++j)
+    for (Eigen::Index j = 0; j < e.sigma.size(); ++j)
       out.parameters["sigma_" + e.state + "." + e.sigma_terms[j]] = e.sigma(j);
+    std::string sigma_text = Sum(*e.sigma_basis, e.sigma, speed, rate);
+    if (e.thrust_loss_term) {
+      out.parameters["sigma_" + e.state + "." + e.thrust_loss_text] = e.thrust_loss;
+      sigma_text += (e.thrust_loss < 0 ? " - " : " + ") + FormatNumber(std::abs(e.thrust_loss)) +
+                    "*" + e.thrust_loss_text;
+    }
     for (size_t j = 0; j < e.mass_terms.size(); ++j)
       out.parameters["m_" + e.state + "." + e.mass_terms[j]] = e.mass(j);
-    out.equations[e.state] = "(" + e.input + " - (" + Sum(*e.sigma_basis, e.sigma, speed, rate) +
-                             ")) / (" + Sum(*e.mass_basis, e.mass, speed, rate) + ")";
+    out.equations[e.state] = "(" + e.input + " - (" + sigma_text + ")) / (" +
+                             Sum(*e.mass_basis, e.mass, speed, rate) + ")";
     double least = INFINITY;
     for (Eigen::Index k = 0; k < n; ++k)
       least = std::min(least, Combination(*e.mass_basis, e.mass, s.x[0](k), s.x[1](k)));

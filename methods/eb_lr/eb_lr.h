@@ -27,7 +27,8 @@
 //     those runs, each simulated from its start (RK4, the other state from the smoothed data):
 //     noise on the regressors biases and scatters equation error, not output error.
 //  4. Steps 2 and 3 are repeated `refinements` times.
-// Equations (contract section 5): speed -> "(tau_m - (a1*U + ...)) / (c1 + c2*U)", and so for r.
+// Equations (contract section 5): speed -> "(tau_m - (a1*U + ...)) / (c1 + c2*U)", and so for r;
+// with a thrust_loss_channel q, sigma_U's sum ends with "k*q*U".
 // A mass that is not positive over the data is reported in details.warnings, not thrown.
 //
 // Throws InputError: a missing, not fully sampled or non-finite channel; a non-uniform time
@@ -55,6 +56,15 @@ struct EbLrOptions {
   double transient_margin_s = 1.0;  // [s] step 3
   bool output_error_mass = false;   // step 3
   int refinements = 2;              // step 4
+  // A thrust that falls with speed: sigma_U gains the column q U of a channel q, so that the
+  // speed equation's force is tau_m - k q U - sigma_U(U, r). A waterjet's net thrust is its
+  // jet's momentum less the inlet's, rho Q (V_j - (1 - w) U): with tau_m the jet momentum
+  // (tau_x of --forces waterjet), q is the jet flow Q (jet_flow). Empty: no loss term.
+  std::string thrust_loss_channel;
+  // The commands that are held at each step (thrust, yaw), when the inputs are not: forces
+  // derived from measured actuator states slew to each new value and carry the sensors' noise,
+  // so the steady windows and the spline's step breaks follow the commands. Empty: the inputs.
+  std::vector<std::string> held_inputs;
 };
 
 struct EbLrIdentification {                              // the shape of gp::GpIdentification

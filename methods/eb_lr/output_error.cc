@@ -13,9 +13,11 @@ Eigen::VectorXd Simulate(const MassOutputErrorProblem& p, const Eigen::VectorXd&
   const bool speed_equation = p.state == 0;
   const Eigen::VectorXd& own = speed_equation ? p.speed : p.rate;
   const Eigen::VectorXd& other = speed_equation ? p.rate : p.speed;
-  auto f = [&](double y, double x, double u) {
+  const bool loss_term = speed_equation && p.loss_channel.size() > 0;
+  auto f = [&](double y, double x, double u, double q) {
     const double speed = speed_equation ? y : x, rate = speed_equation ? x : y;
-    return (u - Combination(p.sigma_basis, p.sigma, speed, rate)) /
+    const double loss = loss_term ? p.thrust_loss * q * speed : 0.0;
+    return (u - loss - Combination(p.sigma_basis, p.sigma, speed, rate)) /
            Combination(p.mass_basis, mass, speed, rate);
   };
   Eigen::VectorXd out(rows);
@@ -24,8 +26,9 @@ Eigen::VectorXd Simulate(const MassOutputErrorProblem& p, const Eigen::VectorXd&
     double y = own(run.first);
     for (Eigen::Index k = run.first; k < run.last; ++k) {
       const double h = p.t(k + 1) - p.t(k), u = p.input(k), mid = 0.5 * (other(k) + other(k + 1));
-      const double k1 = f(y, other(k), u), k2 = f(y + 0.5 * h * k1, mid, u);
-      const double k3 = f(y + 0.5 * h * k2, mid, u), k4 = f(y + h * k3, other(k + 1), u);
+      const double q = loss_term ? p.loss_channel(k) : 0.0;  // held, like the input
+      const double k1 = f(y, other(k), u, q), k2 = f(y + 0.5 * h * k1, mid, u, q);
+      const double k3 = f(y + 0.5 * h * k2, mid, u, q), k4 = f(y + h * k3, other(k + 1), u, q);
       y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
       out(row++) = y;
     }

@@ -28,6 +28,8 @@ struct MassOutputErrorProblem {
   const Eigen::VectorXd& sigma;
   const std::vector<Monomial>& mass_basis;
   const std::vector<SteadyWindow>& runs;  // sample spans [first, last]
+  const Eigen::VectorXd& loss_channel;    // q, empty without the thrust's loss
+  double thrust_loss = 0.0;               // k: the speed equation's force is tau - k q U - sigma
 };
 
 struct MassOutputErrorFit {
