@@ -254,10 +254,12 @@ std::string VerdictMarkdown(const std::vector<VerdictEntry>& verdict) {
     for (size_t i = 0; i < e.ranking.size(); ++i) {
       const Standing& s = e.ranking[i];
       if (i > 0) md << (s.tied_with_previous ? " = " : " > ");
-      md << (s.tied_with_best ? "**" + s.method + "**" : s.method) << ' ' << Number(s.median);
+      md << (s.tied_with_best ? "**" + s.method + "**" : s.method) << ' ';
+      // Half or more of the cells failed, diverged or gave no criterion: no number to show.
+      md << (std::isfinite(s.median) ? Number(s.median) : std::string("no median"));
       if (s.diverged > 0 && e.metric == "free_run_fit_percent")
         md << " (" << s.diverged << "/" << s.runs << " diverged)";
-      if (s.failed > 0) md << " (" << s.failed << " failed)";
+      if (s.failed > 0) md << " (" << s.failed << " of " << s.cells << " cells failed)";
     }
     for (const std::string& m : e.failing) md << "; " << m << " failed in every cell";
     md << " | " << PValue(e.friedman_p) << " | " << e.cells << " | "

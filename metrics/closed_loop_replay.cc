@@ -136,7 +136,8 @@ ClosedLoopReplay ReplayEquationModel(const nlohmann::json& model, const VesselIn
   auto actuator = [&](const std::string& state) -> int {
     for (size_t i = 0; i < actuators.size(); ++i)
       if (actuators[i].channel == state) return static_cast<int>(i);
-    ActuatorState a{state};
+    ActuatorState a;
+    a.channel = state;
     for (const auto& [command, s] : kWaterjetActuators)
       if (s == state) a.command = command_index(command);
     if (a.command < 0 || !recorded.Has(state) || !recorded.Has(act.input_names[a.command]))

@@ -285,8 +285,9 @@ TEST_F(SuiteTest, MeasuredSuiteTrainsAndTestsOnTheFiles) {
     a.erase("fit_seconds");
     b.erase("fit_seconds");
     EXPECT_EQ(a, b) << i;
-    if (one[i].method == "nominal" || one[i].method == "refit")
+    if (one[i].method == "nominal" || one[i].method == "refit") {
       EXPECT_GT(one[i].mean_fit_percent, 99.9) << one[i].method << " " << one[i].test_maneuver;
+    }
   }
   EXPECT_THAT(SummaryMarkdown(suite, one, 1.0), HasSubstr("sines: free-run fit % per channel"));
   std::filesystem::remove_all(dir);

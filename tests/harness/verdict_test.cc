@@ -224,8 +224,22 @@ TEST_F(VerdictTest, FailedFitsAreWorstOrListed) {
   EXPECT_DOUBLE_EQ(Of(e, "D").mean_rank, 1.9);
   EXPECT_EQ(Of(e, "A").failed, 0);
   const std::string line = Line(VerdictMarkdown(verdict), "free-run fit %");
-  EXPECT_THAT(line, HasSubstr("(1 failed)"));
+  EXPECT_THAT(line, HasSubstr("(1 of 10 cells failed)"));
   EXPECT_THAT(line, HasSubstr("; F failed in every cell"));
+}
+
+// A method that failed in half of its cells or more has an infinite median (failed cells score
+// worst): the summary says so in words, not "-inf".
+TEST_F(VerdictTest, AMostlyFailedMethodShowsNoMedian) {
+  Add("A", 10, [](size_t i) { return Base(i); });
+  Add("E", 10, [](size_t i) { return Base(i) - 5.0; });
+  for (ResultRow& r : rows_)
+    if (r.method == "E" && r.seed % 2 == 1) r.status = "failed: too few steady windows";
+  const std::vector<VerdictEntry> verdict = Verdict(suite_, rows_);
+  const std::string line = Line(VerdictMarkdown(verdict), "free-run fit %");
+  EXPECT_THAT(line, HasSubstr("E no median ("));
+  EXPECT_THAT(line, Not(HasSubstr("inf")));
+  EXPECT_EQ(Entry(verdict, "free_run_fit_percent").ranking.back().method, "E");
 }
 
 // The zig-zag's first overshoot: only the zig-zag rows carry it (the random-steps rows do not
