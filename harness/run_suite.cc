@@ -118,6 +118,7 @@ IdentifyRequest RequestFor(const FitJob& job) {
   set("max_depth", r.max_depth);
   set("ols_threshold", r.ols_threshold);
   set("validation_fraction", r.validation_fraction);
+  set("horizon_s", r.horizon_s);
   set("constant_iterations", r.constant_iterations);
   set("restarts", r.restarts);
   r.fit_mode = o.value("fit", r.fit_mode);

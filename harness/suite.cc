@@ -56,6 +56,7 @@ const std::map<std::string, OptionKind>& MethodOptions() {
       {"causes", OptionKind::kCount},
       {"preset", OptionKind::kText},
       {"validation_fraction", OptionKind::kNumber},
+      {"horizon_s", OptionKind::kNumber},
       {"constant_iterations", OptionKind::kCount},
       {"restarts", OptionKind::kCount},
       {"forces", OptionKind::kText},

@@ -8,6 +8,7 @@
 
 #include "core/derived_channels.h"
 #include "core/error.h"
+#include "core/parse_number.h"
 #include "methods/eb_lr/eb_lr.h"
 #include "methods/expression.h"
 #include "methods/fossen_ceres/fossen_fit.h"
@@ -196,6 +197,7 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& o) {
   s.seed = o.seed;
   s.threads = o.threads;
   g.validation_fraction = o.validation_fraction.value_or(g.validation_fraction);
+  g.horizon_s = o.horizon_s.value_or(g.horizon_s);
   g.weight_fit = o.fit_mode == "equation" || o.preset == "report" ? gp::WeightFit::kEquation
                                                                   : gp::WeightFit::kSimulation;
   if (s.population < 4 || s.generations < 1 || s.max_depth < 2 || s.max_depth > 17)
@@ -206,6 +208,8 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& o) {
     throw InputError(
         "--validation-fraction: must be in [0, 0.5] (the share of the record kept "
         "to choose the model by simulation; 0: none)");
+  if (!(g.horizon_s > 0 && g.horizon_s <= 600))
+    throw InputError("--horizon: must be in (0, 600] seconds, got " + FormatNumber(g.horizon_s));
   if (s.constant_iterations < 0)
     throw InputError("--constant-iterations: must be >= 0 (0: no constant optimisation)");
   if (s.restarts < 0) throw InputError("--restarts: must be >= 0");
@@ -327,6 +331,10 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
     // Term completion where it was measured to help: on records with regime features
     // (odin-hs's zig-zag, docs/gp.md); on KVLCC2's single zig-zag it cost GP the heading.
     gpo.complete_terms = o.method == "gp" && !gpo.features.empty();
+    // A hull that crosses regimes holds its speed where the resistance is steep (the knee of
+    // odin-hs's hump): a surge equation a few percent off there shows over 30 s, not over 10 s
+    // (docs/gp.md).
+    if (gpo.complete_terms && !o.horizon_s) gpo.horizon_s = kRegimeHorizonS;
     if (gpo.complete_terms && o.features != "froude")
       gpo.completion_features =
           RegimeFeatures(o.features, froude_per_speed, prepared.data, kSindyFroudeHinges);

@@ -28,6 +28,9 @@ struct IdentifyRequest {
   std::string operators = "+,-,*";
   std::optional<int> population, generations, max_depth, restarts, constant_iterations;
   std::optional<double> ols_threshold, validation_fraction;
+  // gp: the short-horizon simulations' length [s] (model selection and the simulation refit);
+  // unset: 10 s, or kRegimeHorizonS on a record with regime features.
+  std::optional<double> horizon_s;
   std::string fitness = "r2";
   // Regime features for gp and sindy (regime_features.h): auto, hinges, froude or none.
   std::string features = "auto";

@@ -1,7 +1,7 @@
 // usvid identify --method gp --data F.csv (--vessel V | --states u,v,r --inputs a,b)
 //                [preprocessing flags] [--preset default|report] [--operators +,-,*]
 //                [--population N] [--generations N] [--max-depth D] [--ols-threshold E]
-//                [--validation-fraction F] [--constant-iterations N] [--restarts N]
+//                [--validation-fraction F] [--horizon S] [--constant-iterations N] [--restarts N]
 //                [--seed N] [--threads N] --out model.json
 // Fits one method and writes model.json (contract section 5).
 
@@ -92,6 +92,9 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--validation-fraction", o->request.validation_fraction,
                   "gp: the last share of the record, in [0, 0.5], on which the model is chosen "
                   "among the Pareto candidates by short-horizon simulation (0.2; 0: none)");
+  cmd->add_option("--horizon", o->request.horizon_s,
+                  "gp: seconds of each short-horizon simulation that chooses the model and "
+                  "refits its weights (10; 30 on a record with regime features)");
   cmd->add_option("--constant-iterations", o->request.constant_iterations,
                   "gp: Levenberg-Marquardt iterations on the constants inside terms, per elite "
                   "(5; 0: none)");

@@ -186,8 +186,9 @@ TEST_F(IdentifyCliTest, SindyTakesTheRegimeFeaturesAndAFreeRunRecomputesThem) {
     EXPECT_EQ(m.at("sindy").at("features").size(),
               features == "auto" ? 1u + kSindyFroudeHinges : 0u);
     EXPECT_EQ(m.at("inputs"), nlohmann::json({"tau_x", "tau_y", "tau_n", "jet_flow"}));
-    if (features == "auto")
+    if (features == "auto") {
       EXPECT_THAT(m.at("equations").at("u").get<std::string>(), HasSubstr("(abs(sqrt(u*u + v*v)/"));
+    }
     const auto ev = (dir_ / ("ev_s_" + features)).string();
     const auto e = RunUsvid("evaluate --model " + model + " --data " + test + " --out " + ev);
     EXPECT_EQ(e.exit_code, 0) << e.err;
@@ -261,6 +262,7 @@ TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
       {"--method gp --vessel msd --validation-fraction 0.9", "--validation-fraction"},
       {"--method gp --vessel msd --validation-fraction -0.1", "--validation-fraction"},
       {"--method gp --vessel msd --constant-iterations -1", "--constant-iterations"},
+      {"--method gp --vessel msd --horizon 0", "--horizon: must be in (0, 600]"},
       {"--method gp --vessel msd --ols-threshold 1.5", "--ols-threshold"},
       {"--method gp --states v --inputs tau_x --forces waterjet",
        "the data lack rpm, nozzle_angle, bucket_position"},
