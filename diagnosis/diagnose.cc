@@ -75,19 +75,47 @@ bool Passes(const Candidate& c, double reference_error, const DiagnoseOptions& o
          c.heldout_error < (1.0 - options.min_reduction) * reference_error;
 }
 
-// Every effect of the catalogue fitted on the training part (on top of d.base) and scored on the
-// held-out part against the reference error; ranked best first, look-alikes listed.
+// Whether the commands of input i change over the record (a bucket held open does not).
+bool InputMoves(const MeasuredData& d, int i) {
+  const double first = d.inputs.At(d.times.front())[i];
+  for (double t : d.times)
+    if (d.inputs.At(t)[i] != first) return true;
+  return false;
+}
+
+// The candidates: every effect of the catalogue, and with more than one moving input, the
+// effects that can act on one input alone on each of them (input_bias: each but the yaw input,
+// which the whole-vessel input_bias already is).
+std::vector<EffectSearch> Searches(const MeasuredData& d, const EffectFitter& fitter) {
+  std::vector<int> moving;
+  for (int i = 0; i < static_cast<int>(d.peak_command.size()); ++i)
+    if (InputMoves(d, i)) moving.push_back(i);
+  std::vector<EffectSearch> out;
+  for (const EffectInfo& info : EffectCatalogue()) {
+    out.push_back(SearchFor(info.kind, d, fitter.YawInput()));
+    if (!OnInputs(info.kind) || moving.size() < 2) continue;
+    for (int i : moving)
+      if (info.kind != EffectKind::kInputBias || i != fitter.YawInput())
+        out.push_back(SearchFor(info.kind, d, fitter.YawInput(), i));
+  }
+  return out;
+}
+
+// Every candidate fitted on the training part (on top of d.base) and scored on the held-out
+// part against the reference error; ranked best first, look-alikes listed. k counts the
+// candidate's sizes; which input a one-input effect acts on is a choice among the candidates,
+// as the effect is.
 std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fitter,
                                    const std::vector<double>& params, double reference_error,
                                    double noise_floor, double effective_samples) {
-  const auto& catalogue = EffectCatalogue();
-  std::vector<Candidate> candidates(catalogue.size());
+  const std::vector<EffectSearch> searches = Searches(d, fitter);
+  std::vector<Candidate> candidates(searches.size());
   const double excess = reference_error - noise_floor;
 #pragma omp parallel for schedule(dynamic)
-  for (size_t i = 0; i < catalogue.size(); ++i) {
+  for (size_t i = 0; i < searches.size(); ++i) {
     const auto t0 = std::chrono::steady_clock::now();
     Candidate& c = candidates[i];
-    const EffectSearch search = SearchFor(catalogue[i].kind, d, fitter.YawInput());
+    const EffectSearch& search = searches[i];
     c.fit = fitter.Fit(d, d.train, params, search);
     const Eigen::VectorXd held = fitter.Residuals(d, d.heldout, params, c.fit.effect);
     c.heldout_error = MeanSquaredError(d, d.heldout, held);
@@ -98,14 +126,25 @@ std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fi
     c.explained = excess > 0 ? (reference_error - c.heldout_error) / excess : 0.0;
     c.seconds = Seconds(t0);
   }
+  // Ranked by score; where two candidates of as many sizes fit the held-out part alike (within
+  // 1e-6 of the reference error: a bias on an input that enters one equation linearly is a
+  // force on that equation), the whole-vessel effect goes first, the simpler account.
+  auto same = [&](const Candidate& a, const Candidate& b) {
+    return a.parameters == b.parameters &&
+           std::abs(a.heldout_error - b.heldout_error) <= 1e-6 * reference_error;
+  };
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+  for (size_t i = 0; i < candidates.size(); ++i)
+    for (size_t j = i + 1; j < candidates.size() && same(candidates[i], candidates[j]); ++j)
+      if (!candidates[i].fit.effect.inputs.empty() && candidates[j].fit.effect.inputs.empty())
+        std::rotate(candidates.begin() + i, candidates.begin() + j, candidates.begin() + j + 1);
   for (Candidate& a : candidates)
     for (const Candidate& b : candidates)
       if (&a != &b && std::abs(a.heldout_error - b.heldout_error) <= 1e-3 * reference_error &&
           a.likelihood_ratio >= ChiSquare999(a.parameters) &&
           b.likelihood_ratio >= ChiSquare999(b.parameters))
-        a.alike.emplace_back(b.fit.effect.name());
+        a.alike.emplace_back(EffectLabel(b.fit.effect));
   return candidates;
 }
 
@@ -118,7 +157,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   const VesselSimulator& sim = FindVessel(vessel);
   const EffectFitter& fitter = FindEffectFitter(vessel);
   MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
-  d.base = ValuesOf(options.base_effects);
+  d.base = ValuesOf(options.base_effects, sim.Info().inputs);
 
   Diagnosis out;
   out.vessel = vessel;
@@ -142,8 +181,8 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
     out.nominal_free_run_fit_percent[r.channel] = r.free_run_fit_percent;
   if (log)
     *log << "diagnose: " << vessel << ", " << d.rows() << " rows, train " << out.train_s
-         << " s, held out " << out.heldout_s << " s; fitting " << EffectCatalogue().size()
-         << " effects\n";
+         << " s, held out " << out.heldout_s << " s; fitting " << Searches(d, fitter).size()
+         << " candidate effects\n";
 
   // 2. Name.
   out.correlation_time = CorrelationTime(d, d.heldout, nominal_held);
@@ -152,9 +191,9 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
       RankEffects(d, fitter, params, out.nominal_error, out.noise_floor, out.effective_samples);
   if (log)
     for (const Candidate& c : out.candidates)
-      *log << "  " << c.fit.effect.name() << ": held-out E " << c.heldout_error << " (nominal "
-           << out.nominal_error << ", floor " << out.noise_floor << "), LR " << c.likelihood_ratio
-           << ", " << c.seconds << " s\n";
+      *log << "  " << EffectLabel(c.fit.effect) << ": held-out E " << c.heldout_error
+           << " (nominal " << out.nominal_error << ", floor " << out.noise_floor << "), LR "
+           << c.likelihood_ratio << ", " << c.seconds << " s\n";
 
   const Candidate& best = out.candidates.front();
   const bool found = Passes(best, out.nominal_error, options);
@@ -167,12 +206,12 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   if (found) {
     out.cause = std::string(best.fit.effect.name());
     out.cause_effect = best.fit.effect;
-    SetEffect(best.fit.effect, extended.base);
+    SetEffect(best.fit.effect, extended.base, sim.Info().inputs);
     error = best.heldout_error;
     explained = best.explained;
   }
   const double excess = out.nominal_error - out.noise_floor;
-  for (int round = 1; found && round < options.max_causes && explained < options.min_explained;
+  for (int round = 1; found && round < options.max_causes && explained < options.further_explained;
        ++round) {
     const std::vector<Candidate> next =
         RankEffects(extended, fitter, params, error, out.noise_floor, out.effective_samples);
@@ -180,10 +219,10 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
     if (!Passes(c, error, options)) break;
     FurtherCause f{c.fit.effect, c.alike, c.likelihood_ratio, c.explained, error, c.heldout_error};
     if (log)
-      *log << "diagnose: on the extended model, " << c.fit.effect.name() << " (LR "
+      *log << "diagnose: on the extended model, " << EffectLabel(c.fit.effect) << " (LR "
            << c.likelihood_ratio << ")\n";
     out.further_causes.push_back(f);
-    SetEffect(c.fit.effect, extended.base);
+    SetEffect(c.fit.effect, extended.base, sim.Info().inputs);
     error = c.heldout_error;
     explained = excess > 0 ? (out.nominal_error - error) / excess : 1.0;
   }

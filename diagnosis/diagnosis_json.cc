@@ -86,31 +86,35 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
     size_t i = 0;
     for (const auto& [name, _] : c.fit.effect.parameters)
       if (i < c.fit.sd.size()) sd[name] = Number(ThreeDigits(c.fit.sd[i++]));
-    candidates.push_back({{"effect", c.fit.effect.name()},
-                          {"parameters", parameters},
-                          {"parameter_sd", sd},
-                          {"heldout_fit_percent", Fits(c.heldout_fit_percent)},
-                          {"heldout_error", Number(c.heldout_error)},
-                          {"explained", Number(c.explained)},
-                          {"likelihood_ratio", Number(c.likelihood_ratio)},
-                          {"indistinguishable_from", c.alike},
-                          {"score", Number(c.score)},
-                          {"train_error", Number(c.fit.train_cost)},
-                          {"optimiser", c.fit.message},
-                          {"seconds", Number(c.seconds)}});
+    nlohmann::json candidate = {{"effect", c.fit.effect.name()},
+                                {"parameters", parameters},
+                                {"parameter_sd", sd},
+                                {"heldout_fit_percent", Fits(c.heldout_fit_percent)},
+                                {"heldout_error", Number(c.heldout_error)},
+                                {"explained", Number(c.explained)},
+                                {"likelihood_ratio", Number(c.likelihood_ratio)},
+                                {"indistinguishable_from", c.alike},
+                                {"score", Number(c.score)},
+                                {"train_error", Number(c.fit.train_cost)},
+                                {"optimiser", c.fit.message},
+                                {"seconds", Number(c.seconds)}};
+    if (!c.fit.effect.inputs.empty()) candidate["inputs"] = c.fit.effect.inputs;
+    candidates.push_back(std::move(candidate));
   }
   j["candidates"] = candidates;
   nlohmann::json further = nlohmann::json::array(), causes = nlohmann::json::array();
   if (d.cause_effect) causes.push_back(d.cause);
   for (const FurtherCause& f : d.further_causes) {
     causes.push_back(f.effect.name());
-    further.push_back({{"effect", f.effect.name()},
-                       {"parameters", f.effect.parameters},
-                       {"likelihood_ratio", Number(f.likelihood_ratio)},
-                       {"explained", Number(f.explained)},
-                       {"heldout_error_before", Number(f.error_before)},
-                       {"heldout_error_after", Number(f.error_after)},
-                       {"indistinguishable_from", f.alike}});
+    nlohmann::json cause = {{"effect", f.effect.name()},
+                            {"parameters", f.effect.parameters},
+                            {"likelihood_ratio", Number(f.likelihood_ratio)},
+                            {"explained", Number(f.explained)},
+                            {"heldout_error_before", Number(f.error_before)},
+                            {"heldout_error_after", Number(f.error_after)},
+                            {"indistinguishable_from", f.alike}};
+    if (!f.effect.inputs.empty()) cause["inputs"] = f.effect.inputs;
+    further.push_back(std::move(cause));
   }
   j["causes"] = causes;
   j["further_causes"] = further;

@@ -20,6 +20,7 @@ std::string Sizes(const Effect& e) {
   std::string out;
   for (const auto& [name, value] : e.parameters)
     out += (out.empty() ? "" : ", ") + name + " = " + Fixed(value, 4);
+  for (size_t i = 0; i < e.inputs.size(); ++i) out += (i ? "+" : ", on ") + e.inputs[i];
   return out;
 }
 

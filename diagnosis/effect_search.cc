@@ -4,8 +4,8 @@
 
 namespace usvid::diagnosis {
 
-EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input) {
-  EffectSearch s{kind, true, {}, {}, {}, {}};
+EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input, int input) {
+  EffectSearch s{kind, OnInputs(kind) ? input : -1, true, {}, {}, {}, {}};
   auto add = [&s](std::string name, double start, double lower, double upper) {
     s.names.push_back(std::move(name));
     s.start.push_back(start);
@@ -26,7 +26,7 @@ EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input)
       add("time_constant_s", 0.5, std::max(0.02, data.max_step), 30.0);
       break;
     case EffectKind::kInputBias: {
-      const double peak = std::max(data.peak_command[yaw_input], 1e-9);
+      const double peak = std::max(data.peak_command[input >= 0 ? input : yaw_input], 1e-9);
       add("bias", 0.0, -peak, peak);
       break;
     }
@@ -61,10 +61,12 @@ std::vector<std::string> SizeNames(EffectKind kind) {
   return {std::string(InfoOf(kind).main_parameter)};
 }
 
-Effect EffectOf(EffectKind kind, const std::vector<double>& theta) {
-  Effect e{kind, {}};
-  const std::vector<std::string> names = SizeNames(kind);
+Effect EffectOf(const EffectSearch& search, const std::vector<double>& theta,
+                const std::vector<std::string>& input_names) {
+  Effect e{search.kind, {}};
+  const std::vector<std::string> names = SizeNames(search.kind);
   for (size_t i = 0; i < names.size(); ++i) e.parameters[names[i]] = theta.at(i);
+  if (search.input >= 0) e.inputs = {input_names.at(search.input)};
   return e;
 }
 

@@ -28,20 +28,29 @@ namespace usvid::diagnosis {
 
 struct EffectSearch {
   EffectKind kind;
+  int input = -1;      // the one input it acts on (OnInputs kinds); -1: the kind's default
   bool smooth = true;  // Ceres (true) or NLopt (false)
   std::vector<std::string> names;
   std::vector<double> start, lower, upper;
   int size() const { return static_cast<int>(names.size()); }
 };
 
-EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input);
+// `input` >= 0: the effect on that input alone (OnInputs kinds only).
+EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input, int input = -1);
 
-// The sizes theta (SearchFor(kind).names order) into effect values; others stay neutral.
+// The sizes theta (SearchFor(kind).names order) into effect values, on `input` alone when it is
+// >= 0; others stay as they are.
 template <typename T>
-void ApplySizes(EffectKind kind, const T* theta, EffectValues<T>& e) {
+void ApplySizes(EffectKind kind, int input, const T* theta, EffectValues<T>& e) {
   switch (kind) {
     case EffectKind::kInputDelay:
-      e.delay_s = ValueOf(theta[0]);
+      if (input < 0) {
+        e.delay_s = ValueOf(theta[0]);
+      } else {
+        if (static_cast<int>(e.input_delays_s.size()) <= input)
+          e.input_delays_s.resize(input + 1, 0.0);
+        e.input_delays_s[input] = ValueOf(theta[0]);
+      }
       break;
     case EffectKind::kCurrent:
       e.current_north = theta[0];
@@ -49,9 +58,11 @@ void ApplySizes(EffectKind kind, const T* theta, EffectValues<T>& e) {
       break;
     case EffectKind::kActuatorLag:
       e.lag_time_constant_s = theta[0];
+      e.lag_inputs = input < 0 ? ~0u : 1u << input;
       break;
     case EffectKind::kInputBias:
       e.input_bias = theta[0];
+      e.bias_input = input;
       break;
     case EffectKind::kSensorBias:
       e.sensor_bias = theta[0];
@@ -64,6 +75,7 @@ void ApplySizes(EffectKind kind, const T* theta, EffectValues<T>& e) {
       break;
     case EffectKind::kSaturation:
       e.saturation_fraction = ValueOf(theta[0]);
+      e.saturation_inputs = input < 0 ? ~0u : 1u << input;
       break;
     case EffectKind::kSurgeForce:
       e.surge_acceleration = theta[0];
@@ -77,6 +89,8 @@ void ApplySizes(EffectKind kind, const T* theta, EffectValues<T>& e) {
 // The contract names of the sizes (contract section 3).
 std::vector<std::string> SizeNames(EffectKind kind);
 
-Effect EffectOf(EffectKind kind, const std::vector<double>& theta);
+// The effect of a search's sizes; a one-input search names its input from `input_names`.
+Effect EffectOf(const EffectSearch& search, const std::vector<double>& theta,
+                const std::vector<std::string>& input_names);
 
 }  // namespace usvid::diagnosis

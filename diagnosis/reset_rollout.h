@@ -42,7 +42,8 @@ struct EffectPlant {
     Plant<V>::ScaleParams(p_nom.data(), effects, p_eff.data());
     std::array<double, V::kInputs> peak{};
     for (int i = 0; i < V::kInputs; ++i) peak[i] = d.peak_command[i];
-    limits = SaturationLimits<V::kInputs>(effects.saturation_fraction, peak);
+    limits =
+        SaturationLimits<V::kInputs>(effects.saturation_fraction, peak, effects.saturation_inputs);
   }
   PlantStepper<V, T> Stepper() const { return {p_eff.data(), e, limits, Integrator::kRk4, {}}; }
 };

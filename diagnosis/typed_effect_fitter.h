@@ -40,7 +40,12 @@ class TypedEffectFitter : public EffectFitter {
       theta.clear();
       for (const std::string& name : SizeNames(kind)) theta.push_back(effect->at(name));
     }
-    const EffectSearch search = SearchFor(kind, data, V::kYawInput);
+    int input = -1;
+    if (effect && !effect->inputs.empty()) {
+      const std::vector<std::string> names = InputNames();
+      input = static_cast<int>(std::ranges::find(names, effect->inputs[0]) - names.begin());
+    }
+    const EffectSearch search = SearchFor(kind, data, V::kYawInput, input);
     EffectFit unused;
     return theta.size() == 1
                ? SolveSegments<1>(data, part, ToParams(params), search, theta, false, unused)
@@ -60,7 +65,7 @@ class TypedEffectFitter : public EffectFitter {
     const Params p = ToParams(params);
     auto cost = [&](const std::vector<double>& theta) {
       EffectValues<double> e = data.base;
-      ApplySizes(search.kind, theta.data(), e);
+      ApplySizes(search.kind, search.input, theta.data(), e);
       Eigen::VectorXd r(ResidualCount(data, train));
       ResetRollout<V, double>(data, train, p, e, r.data());
       return r.squaredNorm() / std::max<Eigen::Index>(1, r.size());
@@ -74,12 +79,16 @@ class TypedEffectFitter : public EffectFitter {
     const Eigen::VectorXd r = search.size() == 1
                                   ? SolveSegments<1>(data, train, p, search, theta, free, fit)
                                   : SolveSegments<2>(data, train, p, search, theta, free, fit);
-    fit.effect = EffectOf(search.kind, theta);
+    fit.effect = EffectOf(search, theta, InputNames());
     fit.train_cost = r.squaredNorm() / std::max<Eigen::Index>(1, r.size());
     return fit;
   }
 
  private:
+  static std::vector<std::string> InputNames() {
+    return {V::kInputNames.begin(), V::kInputNames.end()};
+  }
+
   static Params ToParams(const std::vector<double>& v) {
     if (static_cast<int>(v.size()) != V::kParams) std::abort();
     Params p;
@@ -144,7 +153,7 @@ class TypedEffectFitter : public EffectFitter {
     std::vector<std::array<double, S>> x0;
     {
       EffectValues<double> e = data.base;
-      ApplySizes(search.kind, theta.data(), e);
+      ApplySizes(search.kind, search.input, theta.data(), e);
       ResetRollout<V, double>(data, part, p, e, residual.data(), &x0);
     }
     ceres::Problem problem;
@@ -161,8 +170,9 @@ class TypedEffectFitter : public EffectFitter {
     for (int i = 0; i < S; ++i)
       if (data.state_channel[i] < 0) held.push_back(i);
     for (size_t s = 0; s < part.starts.size(); ++s) {
-      problem.AddResidualBlock(SegmentCost<V, K>::Create(data, part, s, p, search.kind), nullptr,
-                               theta.data(), x0[s].data());
+      problem.AddResidualBlock(
+          SegmentCost<V, K>::Create(data, part, s, p, search.kind, search.input), nullptr,
+          theta.data(), x0[s].data());
       if (held.size() == static_cast<size_t>(S)) {
         problem.SetParameterBlockConstant(x0[s].data());
       } else if (!held.empty()) {
@@ -194,7 +204,7 @@ class TypedEffectFitter : public EffectFitter {
       }
     }
     EffectValues<double> e = data.base;
-    ApplySizes(search.kind, theta.data(), e);
+    ApplySizes(search.kind, search.input, theta.data(), e);
     const EffectPlant<V, double> plant(data, p, e);
     for (size_t s = 0; s < part.starts.size(); ++s) {
       const Eigen::Index a = part.starts[s];

@@ -75,8 +75,31 @@ const std::array<EffectInfo, 10>& EffectCatalogue() { return kCatalogue; }
 
 const EffectInfo& InfoOf(EffectKind kind) { return kCatalogue[static_cast<size_t>(kind)]; }
 
-Effect ParseEffect(const std::string& spec, uint64_t seed) {
-  const std::string where = "--effect '" + spec + "': ";
+bool OnInputs(EffectKind kind) {
+  return kind == EffectKind::kInputDelay || kind == EffectKind::kActuatorLag ||
+         kind == EffectKind::kInputBias || kind == EffectKind::kSaturation;
+}
+
+std::string EffectLabel(const Effect& effect) {
+  std::string label(effect.name());
+  for (size_t i = 0; i < effect.inputs.size(); ++i) label += (i ? "+" : "@") + effect.inputs[i];
+  return label;
+}
+
+Effect ParseEffect(const std::string& full_spec, uint64_t seed) {
+  const std::string where = "--effect '" + full_spec + "': ";
+  std::string spec = full_spec;
+  std::vector<std::string> inputs;
+  if (const auto at = spec.find('@'); at != std::string::npos) {
+    const std::string list = spec.substr(at + 1);
+    spec = spec.substr(0, at);
+    for (size_t a = 0; a <= list.size();) {
+      const size_t b = std::min(list.find('+', a), list.size());
+      if (b == a) throw InputError(where + "an empty input name after '@' (NAME=VALUE@IN1+IN2)");
+      inputs.push_back(list.substr(a, b - a));
+      a = b + 1;
+    }
+  }
   const auto eq = spec.find('=');
   const std::string name = spec.substr(0, eq);
   const EffectInfo* info = nullptr;
@@ -98,7 +121,11 @@ Effect ParseEffect(const std::string& spec, uint64_t seed) {
   if (const std::string rule = Violation(info->kind, value); !rule.empty())
     throw InputError(where + rule);
 
-  Effect effect{info->kind, {}};
+  if (!inputs.empty() && !OnInputs(info->kind))
+    throw InputError(where + name +
+                     " acts on the whole vessel, not on inputs (only input_delay, actuator_lag, "
+                     "input_bias and saturation take @INPUT)");
+  Effect effect{info->kind, {}, inputs};
   if (info->kind == EffectKind::kCurrent) {
     double direction = 0.0;
     if (!direction_text.empty()) {
@@ -120,14 +147,17 @@ std::vector<Effect> ParseEffects(const std::vector<std::string>& specs, uint64_t
   for (const std::string& spec : specs) {
     Effect e = ParseEffect(spec, seed);
     for (const Effect& other : effects)
-      if (other.kind == e.kind) throw InputError("--effect '" + spec + "': given twice");
+      if (other.kind == e.kind && other.inputs == e.inputs)
+        throw InputError("--effect '" + spec + "': given twice");
     effects.push_back(std::move(e));
   }
   return effects;
 }
 
 nlohmann::json EffectToJson(const Effect& effect) {
-  return {{"effect", effect.name()}, {"parameters", effect.parameters}};
+  nlohmann::json j = {{"effect", effect.name()}, {"parameters", effect.parameters}};
+  if (!effect.inputs.empty()) j["inputs"] = effect.inputs;
+  return j;
 }
 
 Effect EffectFromJson(const nlohmann::json& value) {
@@ -149,6 +179,15 @@ Effect EffectFromJson(const nlohmann::json& value) {
     for (const std::string& n : needed)
       if (!effect.parameters.contains(n))
         throw InputError("effect " + name + ": no parameter '" + n + "'");
+    if (value.contains("inputs")) {
+      const nlohmann::json& in = value.at("inputs");
+      bool names = in.is_array() && !in.empty();
+      for (const auto& i : in) names = names && i.is_string() && !i.get<std::string>().empty();
+      if (!names) throw InputError("effect " + name + ": \"inputs\" is a list of input names");
+      if (!OnInputs(e.kind))
+        throw InputError("effect " + name + ": acts on the whole vessel, it takes no \"inputs\"");
+      effect.inputs = in.get<std::vector<std::string>>();
+    }
     return effect;
   }
   throw InputError("unknown effect '" + name + "' (known: " + KnownNames() + ")");
@@ -171,7 +210,7 @@ std::vector<Effect> EffectsOfFile(const std::string& path) {
 
 std::vector<Effect> MergeEffects(std::vector<Effect> base, const std::vector<Effect>& overrides) {
   for (const Effect& o : overrides) {
-    std::erase_if(base, [&o](const Effect& b) { return b.kind == o.kind; });
+    std::erase_if(base, [&o](const Effect& b) { return b.kind == o.kind && b.inputs == o.inputs; });
     base.push_back(o);
   }
   return base;

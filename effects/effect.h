@@ -12,6 +12,9 @@
 //   surge_force   a constant surge force the model lacks, as an acceleration [m/s^2] on the
 //                 surge (or speed) state: a propulsion mismatch, a towing force
 //   resistance    the surge resistance parameters times `scale` (the rest of the damping not)
+// input_delay, actuator_lag, input_bias and saturation may act on some inputs only
+// (Effect::inputs, by channel name; `--effect input_delay=1.0@tau_n`): a delay or lag on one
+// actuator, a bias on another input than the yaw input, one actuator that saturates.
 // ParseEffect throws InputError naming the --effect item and the rule it breaks.
 #pragma once
 
@@ -51,14 +54,22 @@ const EffectInfo& InfoOf(EffectKind kind);
 struct Effect {
   EffectKind kind;
   std::map<std::string, double> parameters;  // names of contract section 3
+  // The input channels it acts on; empty: the kind's default (every input; the yaw input for
+  // input_bias). Only for the kinds that OnInputs allows.
+  std::vector<std::string> inputs = {};
 
   std::string_view name() const { return InfoOf(kind).name; }
   double at(const std::string& parameter) const { return parameters.at(parameter); }
 };
 
+// Whether an effect of this kind can act on some inputs only.
+bool OnInputs(EffectKind kind);
+// The name, with the inputs of an effect on some inputs only: "input_delay@tau_n".
+std::string EffectLabel(const Effect& effect);
+
 // "NAME=VALUE" with the main parameter; `current=SPEED` takes a direction drawn from `seed`
 // (uniform over the compass), `current=SPEED:DIRECTION_DEG` the direction the water flows to,
-// clockwise from north.
+// clockwise from north; "NAME=VALUE@IN1+IN2" the input channels it acts on (OnInputs kinds).
 Effect ParseEffect(const std::string& spec, uint64_t seed);
 std::vector<Effect> ParseEffects(const std::vector<std::string>& specs, uint64_t seed);
 

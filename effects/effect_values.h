@@ -5,7 +5,9 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "effects/effect.h"
@@ -25,14 +27,25 @@ struct EffectValues {
   T resistance_scale = T(1);         // surge resistance parameters (ParamGroup::kResistance)
   double saturation_fraction = 0.0;  // 0: no clipping
   T surge_acceleration = T(0);       // added to the surge (or speed) state's derivative
-  // Extra delay per input, on top of delay_s (empty: none); for per-input delay estimates.
+  // Extra delay per input, on top of delay_s (empty: none; shorter than the inputs: none for
+  // the rest): input_delay on some inputs only.
   std::vector<double> input_delays_s;
+  // Which inputs (bit i: input i) the actuator lag and the saturation act on: all by default.
+  uint32_t lag_inputs = ~0u;
+  uint32_t saturation_inputs = ~0u;
+  int bias_input = -1;  // the input input_bias is added to; -1: the vessel's yaw input
 };
 
-// The values of a list of effects (each kind at most once).
-EffectValues<double> ValuesOf(const std::vector<Effect>& effects);
-// `effect` set in `values` (replacing that kind's value).
-void SetEffect(const Effect& effect, EffectValues<double>& values);
+// The values of a list of effects (each kind at most once per set of inputs). `input_names`
+// are the vessel's inputs, which an effect's `inputs` name; an effect on an input that is not
+// among them is an InputError naming both.
+EffectValues<double> ValuesOf(const std::vector<Effect>& effects,
+                              const std::vector<std::string>& input_names = {});
+// `effect` set in `values` (replacing that kind's value; on some inputs, those inputs' values).
+void SetEffect(const Effect& effect, EffectValues<double>& values,
+               const std::vector<std::string>& input_names = {});
+// The bit mask of `inputs` among `input_names` (all bits when `inputs` is empty).
+uint32_t InputMask(const Effect& effect, const std::vector<std::string>& input_names);
 
 // Values of scalar type T (constants: no derivative parts).
 template <typename T>
@@ -50,17 +63,23 @@ EffectValues<T> CastValues(const EffectValues<double>& e) {
   out.saturation_fraction = e.saturation_fraction;
   out.surge_acceleration = T(e.surge_acceleration);
   out.input_delays_s = e.input_delays_s;
+  out.lag_inputs = e.lag_inputs;
+  out.saturation_inputs = e.saturation_inputs;
+  out.bias_input = e.bias_input;
   return out;
 }
 
-// +-limit per input for `saturation`: fraction x the peak |command| of each input channel
-// (infinite when there is no saturation or the channel never moves).
+// +-limit per input for `saturation`: fraction x the peak |command| of each input channel that
+// saturates (bit i of `inputs`; infinite when there is no saturation, the input does not
+// saturate or the channel never moves).
 template <int N>
-std::array<double, N> SaturationLimits(double fraction, const std::array<double, N>& peak) {
+std::array<double, N> SaturationLimits(double fraction, const std::array<double, N>& peak,
+                                       uint32_t inputs = ~0u) {
   std::array<double, N> limit;
   for (int i = 0; i < N; ++i)
-    limit[i] = fraction > 0.0 && peak[i] > 0.0 ? fraction * peak[i]
-                                               : std::numeric_limits<double>::infinity();
+    limit[i] = fraction > 0.0 && peak[i] > 0.0 && ((inputs >> i) & 1u)
+                   ? fraction * peak[i]
+                   : std::numeric_limits<double>::infinity();
   return limit;
 }
 

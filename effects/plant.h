@@ -4,6 +4,7 @@
 //   u_s = clamp(u_c, -limit, +limit)                        (saturation)
 //   u_a = x_lag,  x_lag' = (u_s - x_lag) / time_constant     (actuator_lag; else u_a = u_s)
 //   u_a[yaw] += input_bias                                   (input_bias)
+// each on the inputs it acts on (EffectValues: lag_inputs, saturation_inputs, bias_input).
 //   x' = V::Derivative(x, u_a, p_eff, {current})             (current)
 // where p_eff is p with inertia, damping and resistance parameters scaled (inertia, damping,
 // resistance). The measured
@@ -66,7 +67,7 @@ struct Plant {
     std::array<T, V::kInputs> u_applied;
     const bool lagged = ValueOf(e.lag_time_constant_s) > 0.0;
     for (int i = 0; i < V::kInputs; ++i) {
-      if (lagged) {
+      if (lagged && ((e.lag_inputs >> i) & 1u)) {
         u_applied[i] = lag[i];
         dlag[i] = (u_sat[i] - lag[i]) / e.lag_time_constant_s;
       } else {
@@ -74,7 +75,8 @@ struct Plant {
         dlag[i] = T(0);
       }
     }
-    u_applied[V::kYawInput] += e.input_bias;
+    u_applied[e.bias_input >= 0 && e.bias_input < V::kInputs ? e.bias_input : V::kYawInput] +=
+        e.input_bias;
     const Environment<T> env{e.current_north, e.current_east};
     V::template Derivative<T>(x, u_applied.data(), p_eff, env, dx);
     if constexpr (kSurgeState >= 0) dx[kSurgeState] += e.surge_acceleration;

@@ -109,7 +109,9 @@ ClosedLoopReplay ReplayVesselModel(const nlohmann::json& model, Maneuver& maneuv
   RunOptions options;
   options.rate_hz = rate_hz;
   const SimulationResult r =
-      vessel.simulator->RunManeuver(maneuver, vessel.params, ValuesOf(vessel.effects), options);
+      vessel.simulator->RunManeuver(maneuver, vessel.params,
+                                    ValuesOf(vessel.effects, vessel.simulator->Info().inputs),
+                                    options);
   ClosedLoopReplay out;
   out.run = r.data;
   out.diverged = r.diverged;

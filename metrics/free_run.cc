@@ -66,7 +66,8 @@ FreeRun FreeRunVessel(const nlohmann::json& model, const Dataset& data, double m
   RunOptions options;
   options.dt = max_step;
   const SimulationResult result =
-      vessel.simulator->RunInputs(data, vessel.params, ValuesOf(vessel.effects), options);
+      vessel.simulator->RunInputs(data, vessel.params, ValuesOf(vessel.effects, info.inputs),
+                                  options);
   FreeRun run;
   run.simulated = Dataset(data.t());
   const Eigen::Index rows = result.data.rows();

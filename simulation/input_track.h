@@ -52,7 +52,7 @@ class InputTrack {
     const double* cmd = At(t - delay, c);
     for (int i = 0; i < inputs_; ++i) u[i] = T(cmd[i]);
     if (extra.empty()) return;
-    for (int i = 0; i < inputs_; ++i)
+    for (int i = 0; i < inputs_ && i < static_cast<int>(extra.size()); ++i)
       if (extra[i] != 0.0) u[i] = T(At(t - delay - extra[i])[i]);
   }
 
@@ -63,7 +63,7 @@ class InputTrack {
   void DelayedMean(double t, double h, double delay, const std::vector<double>& extra, T* u,
                    Cursor& c) const {
     for (int i = 0; i < inputs_; ++i) {
-      const double shift = delay + (extra.empty() ? 0.0 : extra[i]);
+      const double shift = delay + (i < static_cast<int>(extra.size()) ? extra[i] : 0.0);
       double a = t - shift;
       const double end = a + h;
       double sum = 0.0;

@@ -31,7 +31,8 @@ class TypedVesselSimulator : public VesselSimulator {
       free.saturation_fraction = 0.0;
       const ClosedLoopRun probe = RunClosedLoop<V>(maneuver, p, free, limits, kinematic, options);
       limits = SaturationLimits<V::kInputs>(effects.saturation_fraction,
-                                            ToArray<V::kInputs>(probe.commands.PeakAbs()));
+                                            ToArray<V::kInputs>(probe.commands.PeakAbs()),
+                                            effects.saturation_inputs);
     }
     const ClosedLoopRun run = RunClosedLoop<V>(maneuver, p, effects, limits, kinematic, options);
     SimulationResult result;
@@ -56,7 +57,8 @@ class TypedVesselSimulator : public VesselSimulator {
     std::array<double, V::kInputs> limits = NoLimits();
     if (effects.saturation_fraction > 0.0)
       limits = SaturationLimits<V::kInputs>(effects.saturation_fraction,
-                                            ToArray<V::kInputs>(track.PeakAbs()));
+                                            ToArray<V::kInputs>(track.PeakAbs()),
+                                            effects.saturation_inputs);
     OpenLoopSetup setup;
     setup.inputs = &track;
     setup.times.assign(data.t().data(), data.t().data() + data.rows());

@@ -101,6 +101,41 @@ TEST_P(HiddenEffectTest, NamesTheEffectAndItsSize) {
   }
 }
 
+// An effect on one input alone (issue 21): a delay, or a lag, of the yaw moment only. The cause
+// is that effect on tau_n, sized within 10 %, and it beats the same effect on every input
+// (which delays the surge force too, and the data say it is not).
+class OneInputEffectTest : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+
+TEST_P(OneInputEffectTest, NamesTheEffectItsInputAndSize) {
+  const auto& [effect, size] = GetParam();
+  const fs::path dir = FreshTempDir();
+  const std::string data = (dir / "data.csv").string();
+  const auto sim = RunUsvid(
+      "simulate --vessel odin3dof --maneuver random-steps --duration 900 --noise 0.005 --seed 11 "
+      "--effect " +
+      effect + "=" + std::to_string(size) + "@tau_n --out " + data);
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto r =
+      RunUsvid("diagnose --vessel odin3dof --data " + data + " --out " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json d = ReadJsonFile((dir / "out" / "diagnosis.json").string());
+  ASSERT_EQ(d.at("cause"), effect) << d.at("candidates").dump(1);
+  const nlohmann::json& c = d.at("candidates").at(0);
+  EXPECT_EQ(c.at("inputs"), nlohmann::json({"tau_n"}));
+  EXPECT_NEAR(c.at("parameters").begin()->get<double>(), size, 0.1 * size);
+  EXPECT_GE(d.at("gain").at("heldout_error_reduction").get<double>(), 0.5);
+  EXPECT_EQ(d.at("extended").at("effect").at("inputs"), nlohmann::json({"tau_n"}));
+}
+
+INSTANTIATE_TEST_SUITE_P(YawMomentAlone, OneInputEffectTest,
+                         ::testing::Values(std::make_tuple("input_delay", 1.0),
+                                           std::make_tuple("actuator_lag", 1.5)),
+                         [](const auto& info) {
+                           std::string name = std::get<0>(info.param);
+                           std::erase(name, '_');
+                           return name;
+                         });
+
 INSTANTIATE_TEST_SUITE_P(
     Catalogue, HiddenEffectTest,
     ::testing::Combine(::testing::Values("none", "input_delay", "current", "actuator_lag",

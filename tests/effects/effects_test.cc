@@ -49,7 +49,8 @@ class EffectsTest : public ::testing::Test {
     if (params.empty()) params = sim.Info().default_params;
     RunOptions opt;
     opt.dt = 0.01;
-    const SimulationResult r = sim.RunInputs(in, params, ValuesOf(ParseEffects(effects, 5)), opt);
+    const SimulationResult r =
+        sim.RunInputs(in, params, ValuesOf(ParseEffects(effects, 5), sim.Info().inputs), opt);
     EXPECT_FALSE(r.diverged);
     return r.data;
   }
@@ -160,6 +161,77 @@ TEST_F(EffectsTest, CurrentDirectionIsSeeded) {
   EXPECT_EQ(a.parameters, b.parameters);
   EXPECT_NE(a.parameters, c.parameters);
   EXPECT_NEAR(std::hypot(c.at("current_north"), c.at("current_east")), 0.5, 1e-12);
+}
+
+// Effects on one input (issue 21): each equals the same change made by hand to that input's
+// column alone. odin3dof's steps: tau_x steps once, tau_n every 10 s, 20 Hz.
+TEST_F(EffectsTest, OneInputDelayShiftsThatInputAlone) {
+  Dataset in = OdinSteps();
+  const Dataset late = Run("odin3dof", in, {"input_delay=0.5@tau_n"});
+  Eigen::VectorXd tn = in["tau_n"];
+  for (Eigen::Index k = tn.size() - 1; k >= 10; --k) tn(k) = tn(k - 10);  // 0.5 s = 10 rows
+  in.Set("tau_n", tn);
+  const Dataset by_hand = Run("odin3dof", in);
+  for (const char* c : {"u", "v", "r", "psi"}) EXPECT_LT(MaxDiff(late[c], by_hand[c]), 1e-9) << c;
+}
+
+TEST_F(EffectsTest, OneInputLagBiasAndSaturationActOnThatInputAlone) {
+  Dataset in = OdinSteps();
+  // With tau_x and tau_y held, a lag on tau_n alone is the lag on every input; with tau_n held,
+  // it is no lag at all.
+  Dataset held_x = in;
+  held_x.Set("tau_x", Eigen::VectorXd::Constant(in.rows(), 16000.0));
+  EXPECT_LT(MaxDiff(Run("odin3dof", held_x, {"actuator_lag=1.5@tau_n"})["r"],
+                    Run("odin3dof", held_x, {"actuator_lag=1.5"})["r"]),
+            1e-9);
+  Dataset held_n = in;
+  held_n.Set("tau_n", Eigen::VectorXd::Constant(in.rows(), 3000.0));
+  EXPECT_LT(MaxDiff(Run("odin3dof", held_n, {"actuator_lag=1.5@tau_n"})["u"],
+                    Run("odin3dof", held_n)["u"]),
+            1e-9);
+  EXPECT_GT(
+      MaxDiff(Run("odin3dof", held_n, {"actuator_lag=1.5"})["u"], Run("odin3dof", held_n)["u"]),
+      0.01);
+  // A bias on tau_x: the tau_x column plus the bias.
+  Dataset plus = in;
+  plus.Set("tau_x", (in["tau_x"].array() + 500.0).matrix());
+  const Dataset biased = Run("odin3dof", in, {"input_bias=500@tau_x"});
+  for (const char* c : {"u", "v", "r"})
+    EXPECT_LT(MaxDiff(biased[c], Run("odin3dof", plus)[c]), 1e-9);
+  // Saturation of tau_x alone at 0.8 of its peak (24 kN): tau_x clipped at 19.2 kN, tau_n not.
+  Dataset clipped = in;
+  clipped.Set("tau_x", in["tau_x"].cwiseMin(0.8 * 24000.0));
+  const Dataset saturated = Run("odin3dof", in, {"saturation=0.8@tau_x"});
+  for (const char* c : {"u", "v", "r"})
+    EXPECT_LT(MaxDiff(saturated[c], Run("odin3dof", clipped)[c]), 1e-9) << c;
+}
+
+// The inputs go through the JSON of a truth or model file, and a name the vessel lacks, or an
+// effect on the whole vessel given inputs, is refused naming both.
+TEST_F(EffectsTest, OneInputEffectsRoundTripAndBadInputsAreRefused) {
+  const Effect e = ParseEffect("input_delay=0.7@tau_n", 1);
+  EXPECT_EQ(e.inputs, std::vector<std::string>{"tau_n"});
+  EXPECT_EQ(EffectLabel(e), "input_delay@tau_n");
+  const nlohmann::json j = EffectToJson(e);
+  EXPECT_EQ(j.at("inputs"), nlohmann::json({"tau_n"}));
+  EXPECT_EQ(EffectFromJson(j).inputs, e.inputs);
+  EXPECT_EQ(ParseEffect("saturation=0.5@tau_x+tau_n", 1).inputs.size(), 2u);
+  const std::vector<std::string> inputs = FindVessel("odin3dof").Info().inputs;
+  try {
+    ValuesOf({ParseEffect("input_delay=1@rudder", 1)}, inputs);
+    ADD_FAILURE() << "an unknown input was accepted";
+  } catch (const InputError& err) {
+    EXPECT_THAT(err.what(), ::testing::HasSubstr("'rudder' is not an input of the vessel"));
+    EXPECT_THAT(err.what(), ::testing::HasSubstr("tau_x, tau_y, tau_n"));
+  }
+  EXPECT_THROW(ParseEffect("current=0.5@tau_n", 1), InputError);
+  EXPECT_THROW(ParseEffect("input_delay=0.5@", 1), InputError);
+  EXPECT_THROW(
+      EffectFromJson(
+          {{"effect", "damping"}, {"parameters", {{"scale", 2.0}}}, {"inputs", {"tau_n"}}}),
+      InputError);
+  // The same kind on other inputs is not "given twice".
+  EXPECT_EQ(ParseEffects({"input_delay=0.5@tau_n", "input_delay=0.2"}, 1).size(), 2u);
 }
 
 // Bad effect specs name the item and the rule.

@@ -71,7 +71,9 @@ TEST_F(Kvlcc2MarinTest, MeasuredZigzagOvershoots) {
 // and its first overshoot is 2.5 deg low both ways (stated error: 2 to 3 deg low). The
 // diagnosis of zig-zag 20/-20 says why: the surge resistance is 0.57 of the model's
 // (explaining about three quarters of the error); with it the first overshoots come within
-// 1 deg of the measured ones.
+// 1 deg of the measured ones. On the model so extended, two small further causes pass: the
+// propeller turning 3.6 rpm faster than logged (input_bias on rev alone) and a gyro-like
+// yaw-rate offset of 1.7e-4 rad/s (docs/real-data.md).
 TEST_F(Kvlcc2MarinTest, NominalFirstOvershootAndTheDiagnosisOfWhy) {
   const double nominal_port = SimulatedFirstOvershoot("zigzag:-20/20");
   const double nominal_starboard = SimulatedFirstOvershoot("zigzag:20/20");
@@ -86,8 +88,9 @@ TEST_F(Kvlcc2MarinTest, NominalFirstOvershootAndTheDiagnosisOfWhy) {
   const double scale = d.at("candidates").at(0).at("parameters").at("scale").get<double>();
   EXPECT_NEAR(scale, 0.57, 0.03);
   EXPECT_GT(d.at("candidates").at(0).at("explained").get<double>(), 0.65);
-  EXPECT_NEAR(d.at("gain").at("heldout_error_reduction").get<double>(), 0.49, 0.05);
-  EXPECT_EQ(d.at("causes").size(), 1u);
+  EXPECT_NEAR(d.at("gain").at("heldout_error_reduction").get<double>(), 0.58, 0.05);
+  EXPECT_EQ(d.at("causes"), nlohmann::json({"resistance", "input_bias", "sensor_bias"}));
+  EXPECT_EQ(d.at("further_causes").at(0).at("inputs"), nlohmann::json({"rev"}));
   EXPECT_TRUE(d.at("unexplained_residual").get<bool>());  // 26 % is left: see docs
 
   const std::string effect = "--effect resistance=" + std::to_string(scale);
@@ -116,7 +119,7 @@ TEST_F(Kvlcc2MarinTest, MethodsOnTheHeldOutManeuvers) {
   };
   const Pin pins[] = {
       {"nominal", "zigzag -20/20", 82.9, 51.7},      {"nominal", "turning 35", 81.4, 94.0},
-      {"diagnose", "zigzag -20/20", 82.8, 40.0},     {"diagnose", "turning 35", 79.7, 97.0},
+      {"diagnose", "zigzag -20/20", 87.3, 40.9},     {"diagnose", "turning 35", 80.3, 92.2},
       {"refit", "zigzag -20/20", 86.5, 45.2},        {"refit", "turning 35", 85.1, 97.6},
       {"fossen-ceres", "zigzag -20/20", 87.6, 63.9}, {"fossen-ceres", "turning 35", 68.7, 78.3},
       {"sindy", "zigzag -20/20", 49.9, 42.8},        {"sindy", "turning 35", 43.9, 67.7},
