@@ -127,6 +127,32 @@ TEST_P(OneInputEffectTest, NamesTheEffectItsInputAndSize) {
   EXPECT_EQ(d.at("extended").at("effect").at("inputs"), nlohmann::json({"tau_n"}));
 }
 
+// The high-speed vessel: a 0.5 s delay of the nozzle alone, on top of the jets' own 0.2 s
+// transport delay, with the throttle on time (the bucket, held open, is not tried).
+TEST(OneInputEffectTestOdinHs, NozzleDelayAlone) {
+  const fs::path dir = FreshTempDir();
+  const std::string data = (dir / "data.csv").string();
+  const auto sim = RunUsvid(
+      "simulate --vessel odin-hs --maneuver random-steps --duration 600 --noise 0.005 --seed 3 "
+      "--effect input_delay=0.5@nozzle --out " +
+      data);
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto r =
+      RunUsvid("diagnose --vessel odin-hs --data " + data + " --out " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json d = ReadJsonFile((dir / "out" / "diagnosis.json").string());
+  ASSERT_EQ(d.at("cause"), "input_delay") << d.at("candidates").dump(1);
+  const nlohmann::json& c = d.at("candidates").at(0);
+  EXPECT_EQ(c.at("inputs"), nlohmann::json({"nozzle"}));
+  EXPECT_NEAR(c.at("parameters").at("delay_s").get<double>(), 0.5, 0.05);
+  EXPECT_GE(d.at("gain").at("heldout_error_reduction").get<double>(), 0.5);
+  for (const auto& candidate : d.at("candidates")) {
+    if (candidate.contains("inputs")) {
+      EXPECT_NE(candidate.at("inputs").at(0), "bucket");
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(YawMomentAlone, OneInputEffectTest,
                          ::testing::Values(std::make_tuple("input_delay", 1.0),
                                            std::make_tuple("actuator_lag", 1.5)),
