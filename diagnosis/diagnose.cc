@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/expression.h"
 #include "diagnosis/residual_discovery.h"
 #include "simulation/vessel_simulator.h"
 
@@ -105,10 +106,11 @@ std::vector<EffectSearch> Searches(const MeasuredData& d, const EffectFitter& fi
 // part against the reference error; ranked best first, look-alikes listed. k counts the
 // candidate's sizes; which input a one-input effect acts on is a choice among the candidates,
 // as the effect is.
-std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fitter,
-                                   const std::vector<double>& params, double reference_error,
-                                   double noise_floor, double effective_samples) {
-  const std::vector<EffectSearch> searches = Searches(d, fitter);
+std::vector<Candidate> FitCandidates(const MeasuredData& d, const EffectFitter& fitter,
+                                     const std::vector<double>& params,
+                                     const std::vector<EffectSearch>& searches,
+                                     double reference_error, double noise_floor,
+                                     double effective_samples) {
   std::vector<Candidate> candidates(searches.size());
   const double excess = reference_error - noise_floor;
 #pragma omp parallel for schedule(dynamic)
@@ -126,6 +128,11 @@ std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fi
     c.explained = excess > 0 ? (reference_error - c.heldout_error) / excess : 0.0;
     c.seconds = Seconds(t0);
   }
+  return candidates;
+}
+
+// The candidates ranked best first, look-alikes listed.
+std::vector<Candidate> Rank(std::vector<Candidate> candidates, double reference_error) {
   // Ranked by score; where two candidates of as many sizes fit the held-out part alike (within
   // 1e-6 of the reference error: a bias on an input that enters one equation linearly is a
   // force on that equation), the whole-vessel effect goes first, the simpler account.
@@ -148,6 +155,29 @@ std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fi
   return candidates;
 }
 
+std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fitter,
+                                   const std::vector<double>& params, double reference_error,
+                                   double noise_floor, double effective_samples) {
+  return Rank(FitCandidates(d, fitter, params, Searches(d, fitter), reference_error, noise_floor,
+                            effective_samples),
+              reference_error);
+}
+
+// Each term the residual search proposes, as a missing_term search of its coefficient: the
+// proposal's sum split into its terms (core/expression_terms.h), each starting at the
+// coefficient the sparse regression gave it.
+std::vector<EffectSearch> TermSearches(const std::vector<DiscoveredTerms>& discovered,
+                                       const VesselSimulator& sim) {
+  std::vector<EffectSearch> out;
+  for (const DiscoveredTerms& t : discovered)
+    for (const auto& [term, coefficient] : Expression::Parse(t.expression).Terms()) {
+      if (term == "1") continue;  // a constant: the catalogue's biases and forces
+      Effect e{EffectKind::kMissingTerm, {{"coefficient", coefficient}}, {}, t.state, term};
+      out.push_back(SearchForTerm(e, sim.Info().states, sim.Info().inputs));
+    }
+  return out;
+}
+
 }  // namespace
 
 Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
@@ -157,7 +187,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   const VesselSimulator& sim = FindVessel(vessel);
   const EffectFitter& fitter = FindEffectFitter(vessel);
   MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
-  d.base = ValuesOf(options.base_effects, sim.Info().inputs);
+  d.base = ValuesOf(options.base_effects, sim.Info().inputs, sim.Info().states);
 
   Diagnosis out;
   out.vessel = vessel;
@@ -189,6 +219,20 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   out.effective_samples = static_cast<double>(SampledCount(d, d.heldout)) / out.correlation_time;
   out.candidates =
       RankEffects(d, fitter, params, out.nominal_error, out.noise_floor, out.effective_samples);
+  const bool visible = out.nominal_error > (1.0 + options.min_excess) * out.noise_floor;
+  // Beyond the catalogue: the residual is well above the noise and no effect explains most of
+  // it. The residual search proposes terms, and each competes as a candidate, fitted through
+  // the simulator and scored on the held-out part like any effect.
+  if (options.discover && visible && out.candidates.front().explained < options.min_explained) {
+    if (log) *log << "diagnose: the catalogue leaves much of the residual; searching terms\n";
+    out.discovered = DiscoverMissingTerms(data, sim, fitter, params, d);
+    std::vector<Candidate> all = std::move(out.candidates);
+    for (Candidate& c : FitCandidates(d, fitter, params, TermSearches(out.discovered, sim),
+                                      out.nominal_error, out.noise_floor, out.effective_samples))
+      all.push_back(std::move(c));
+    for (Candidate& c : all) c.alike.clear();
+    out.candidates = Rank(std::move(all), out.nominal_error);
+  }
   if (log)
     for (const Candidate& c : out.candidates)
       *log << "  " << EffectLabel(c.fit.effect) << ": held-out E " << c.heldout_error
@@ -197,7 +241,6 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
 
   const Candidate& best = out.candidates.front();
   const bool found = Passes(best, out.nominal_error, options);
-  const bool visible = out.nominal_error > (1.0 + options.min_excess) * out.noise_floor;
 
   // 3. Extend and measure; name further causes on the extended model while much is left.
   MeasuredData extended = d;
@@ -206,7 +249,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   if (found) {
     out.cause = std::string(best.fit.effect.name());
     out.cause_effect = best.fit.effect;
-    SetEffect(best.fit.effect, extended.base, sim.Info().inputs);
+    SetEffect(best.fit.effect, extended.base, sim.Info().inputs, sim.Info().states);
     error = best.heldout_error;
     explained = best.explained;
   }
@@ -222,7 +265,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
       *log << "diagnose: on the extended model, " << EffectLabel(c.fit.effect) << " (LR "
            << c.likelihood_ratio << ")\n";
     out.further_causes.push_back(f);
-    SetEffect(c.fit.effect, extended.base, sim.Info().inputs);
+    SetEffect(c.fit.effect, extended.base, sim.Info().inputs, sim.Info().states);
     error = c.heldout_error;
     explained = excess > 0 ? (out.nominal_error - error) / excess : 1.0;
   }
@@ -243,13 +286,8 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   out.series.nominal = ModelSeries(d, d.heldout, nominal_held);
   out.series.extended = ModelSeries(d, d.heldout, extended_held);
 
-  // 4. Beyond the catalogue: the residual is well above the noise and the best effect leaves
-  // much of it.
+  // What is left: the residual is well above the noise and the causes named leave much of it.
   out.unexplained = visible && (!found || explained < options.min_explained);
-  if (options.discover && out.unexplained) {
-    if (log) *log << "diagnose: the catalogue leaves much of the residual; searching terms\n";
-    out.discovered = DiscoverMissingTerms(data, sim, fitter, params, d);
-  }
   out.seconds = Seconds(start);
   return out;
 }

@@ -56,6 +56,16 @@ std::vector<Effect> ExtendedEffects(const Diagnosis& d) {
   return all;
 }
 
+// Where an effect acts, beside its sizes: the inputs of an effect on some inputs only, the state
+// and term of a missing term (contract: "inputs", "state", "term").
+void AddWhere(const Effect& e, nlohmann::json& j) {
+  if (!e.inputs.empty()) j["inputs"] = e.inputs;
+  if (e.kind == EffectKind::kMissingTerm) {
+    j["state"] = e.state;
+    j["term"] = e.term;
+  }
+}
+
 }  // namespace
 
 nlohmann::json DiagnosisToJson(const Diagnosis& d) {
@@ -98,7 +108,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
                                 {"train_error", Number(c.fit.train_cost)},
                                 {"optimiser", c.fit.message},
                                 {"seconds", Number(c.seconds)}};
-    if (!c.fit.effect.inputs.empty()) candidate["inputs"] = c.fit.effect.inputs;
+    AddWhere(c.fit.effect, candidate);
     candidates.push_back(std::move(candidate));
   }
   j["candidates"] = candidates;
@@ -113,7 +123,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
                             {"heldout_error_before", Number(f.error_before)},
                             {"heldout_error_after", Number(f.error_after)},
                             {"indistinguishable_from", f.alike}};
-    if (!f.effect.inputs.empty()) cause["inputs"] = f.effect.inputs;
+    AddWhere(f.effect, cause);
     further.push_back(std::move(cause));
   }
   j["causes"] = causes;

@@ -5,7 +5,7 @@
 namespace usvid::diagnosis {
 
 EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input, int input) {
-  EffectSearch s{kind, OnInputs(kind) ? input : -1, true, {}, {}, {}, {}};
+  EffectSearch s{kind, OnInputs(kind) ? input : -1, true, {}, {}, {}, {}, {}};
   auto add = [&s](std::string name, double start, double lower, double upper) {
     s.names.push_back(std::move(name));
     s.start.push_back(start);
@@ -52,7 +52,21 @@ EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input,
     case EffectKind::kResistance:
       add("scale", 1.0, 0.2, 5.0);
       break;
+    case EffectKind::kMissingTerm:
+      break;  // SearchForTerm
   }
+  return s;
+}
+
+EffectSearch SearchForTerm(const Effect& effect, const std::vector<std::string>& state_names,
+                           const std::vector<std::string>& input_names) {
+  EffectSearch s{EffectKind::kMissingTerm, -1, true, {}, {}, {}, {}, {}};
+  s.term = ResolveTerm(effect, state_names, input_names);
+  const double start = effect.at("coefficient"), reach = 10.0 * std::abs(start) + 1e-6;
+  s.names = {"coefficient"};
+  s.start = {start};
+  s.lower = {-reach};
+  s.upper = {reach};
   return s;
 }
 
@@ -67,6 +81,10 @@ Effect EffectOf(const EffectSearch& search, const std::vector<double>& theta,
   const std::vector<std::string> names = SizeNames(search.kind);
   for (size_t i = 0; i < names.size(); ++i) e.parameters[names[i]] = theta.at(i);
   if (search.input >= 0) e.inputs = {input_names.at(search.input)};
+  if (search.kind == EffectKind::kMissingTerm) {
+    e.state = search.term.state_name;
+    e.term = search.term.text;
+  }
   return e;
 }
 

@@ -32,17 +32,24 @@ struct EffectSearch {
   bool smooth = true;  // Ceres (true) or NLopt (false)
   std::vector<std::string> names;
   std::vector<double> start, lower, upper;
+  ExtraTerm<double> term;  // missing_term: the term, resolved against the vessel
   int size() const { return static_cast<int>(names.size()); }
 };
+
+// A missing term (kind missing_term, state and term set) as a search of its coefficient, from
+// `effect`'s coefficient (the residual search's), within +-(10 |start| + 1e-6).
+EffectSearch SearchForTerm(const Effect& effect, const std::vector<std::string>& state_names,
+                           const std::vector<std::string>& input_names);
 
 // `input` >= 0: the effect on that input alone (OnInputs kinds only).
 EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input, int input = -1);
 
-// The sizes theta (SearchFor(kind).names order) into effect values, on `input` alone when it is
-// >= 0; others stay as they are.
+// The sizes theta (the search's names order) into effect values, on the search's input alone
+// when it has one; others stay as they are.
 template <typename T>
-void ApplySizes(EffectKind kind, int input, const T* theta, EffectValues<T>& e) {
-  switch (kind) {
+void ApplySizes(const EffectSearch& search, const T* theta, EffectValues<T>& e) {
+  const int input = search.input;
+  switch (search.kind) {
     case EffectKind::kInputDelay:
       if (input < 0) {
         e.delay_s = ValueOf(theta[0]);
@@ -83,6 +90,11 @@ void ApplySizes(EffectKind kind, int input, const T* theta, EffectValues<T>& e) 
     case EffectKind::kResistance:
       e.resistance_scale = theta[0];
       break;
+    case EffectKind::kMissingTerm: {
+      const ExtraTerm<double>& t = search.term;
+      e.extra_terms.push_back({t.state, t.term, t.slots, theta[0], t.state_name, t.text});
+      break;
+    }
   }
 }
 

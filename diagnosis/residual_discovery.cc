@@ -53,11 +53,14 @@ std::vector<DiscoveredTerms> DiscoverMissingTerms(const Dataset& data, const Ves
   for (size_t j = 0; j < dynamic.size(); ++j) p.Set(dynamic[j] + "_dot", residual[j]);
   std::vector<std::string> inputs = info.inputs;
   if (measured.heading_channel >= 0) {
+    // Named by their expressions, so that a proposed term is an expression in channel names
+    // (a missing_term candidate, docs/diagnose.md).
     const std::string heading = measured.channels[measured.heading_channel];
-    p.Set("cos_" + heading, p[heading].array().cos().matrix());
-    p.Set("sin_" + heading, p[heading].array().sin().matrix());
-    inputs.push_back("cos_" + heading);
-    inputs.push_back("sin_" + heading);
+    const std::string cos_name = "cos(" + heading + ")", sin_name = "sin(" + heading + ")";
+    p.Set(cos_name, p[heading].array().cos().matrix());
+    p.Set(sin_name, p[heading].array().sin().matrix());
+    inputs.push_back(cos_name);
+    inputs.push_back(sin_name);
   }
 
   // Train on the first part, judge on the held-out part (the same split as the effects).

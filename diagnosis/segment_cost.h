@@ -19,8 +19,7 @@ struct SegmentCost {
   const Part* part;
   size_t segment;
   std::array<double, V::kParams> params;
-  EffectKind kind;
-  int input;  // EffectSearch::input
+  const EffectSearch* search;  // outlives the problem
 
   int Residuals() const {
     const auto [a, b] = SegmentRows(*part, segment);
@@ -30,16 +29,16 @@ struct SegmentCost {
   template <typename T>
   bool operator()(const T* theta, const T* x0, T* residual) const {
     EffectValues<T> e = CastValues<T>(data->base);
-    ApplySizes(kind, input, theta, e);
+    ApplySizes(*search, theta, e);
     const EffectPlant<V, T> plant(*data, params, e);
     SegmentRollout<V, T>(*data, *part, segment, plant, x0, residual);
     return true;
   }
 
   static ceres::CostFunction* Create(const MeasuredData& data, const Part& part, size_t segment,
-                                     const std::array<double, V::kParams>& params, EffectKind kind,
-                                     int input) {
-    auto* functor = new SegmentCost{&data, &part, segment, params, kind, input};
+                                     const std::array<double, V::kParams>& params,
+                                     const EffectSearch& search) {
+    auto* functor = new SegmentCost{&data, &part, segment, params, &search};
     const int residuals = functor->Residuals();
     return new ceres::AutoDiffCostFunction<SegmentCost, ceres::DYNAMIC, K, V::kStates>(functor,
                                                                                        residuals);

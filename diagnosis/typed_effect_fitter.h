@@ -45,7 +45,9 @@ class TypedEffectFitter : public EffectFitter {
       const std::vector<std::string> names = InputNames();
       input = static_cast<int>(std::ranges::find(names, effect->inputs[0]) - names.begin());
     }
-    const EffectSearch search = SearchFor(kind, data, V::kYawInput, input);
+    const EffectSearch search = kind == EffectKind::kMissingTerm
+                                    ? SearchForTerm(*effect, StateNames(), InputNames())
+                                    : SearchFor(kind, data, V::kYawInput, input);
     EffectFit unused;
     return theta.size() == 1
                ? SolveSegments<1>(data, part, ToParams(params), search, theta, false, unused)
@@ -65,7 +67,7 @@ class TypedEffectFitter : public EffectFitter {
     const Params p = ToParams(params);
     auto cost = [&](const std::vector<double>& theta) {
       EffectValues<double> e = data.base;
-      ApplySizes(search.kind, search.input, theta.data(), e);
+      ApplySizes(search, theta.data(), e);
       Eigen::VectorXd r(ResidualCount(data, train));
       ResetRollout<V, double>(data, train, p, e, r.data());
       return r.squaredNorm() / std::max<Eigen::Index>(1, r.size());
@@ -87,6 +89,9 @@ class TypedEffectFitter : public EffectFitter {
  private:
   static std::vector<std::string> InputNames() {
     return {V::kInputNames.begin(), V::kInputNames.end()};
+  }
+  static std::vector<std::string> StateNames() {
+    return {V::kStateNames.begin(), V::kStateNames.end()};
   }
 
   static Params ToParams(const std::vector<double>& v) {
@@ -123,6 +128,9 @@ class TypedEffectFitter : public EffectFitter {
         for (double a : {0.001, 0.003, 0.01, 0.03, 0.1})
           for (double sign : {-1.0, 1.0}) grid.push_back({sign * a});
         break;
+      case EffectKind::kMissingTerm:
+        for (double f : {0.0, 0.5, 2.0}) grid.push_back({f * search.start[0]});
+        break;
       case EffectKind::kInputDelay:
       case EffectKind::kSaturation:
         break;
@@ -153,7 +161,7 @@ class TypedEffectFitter : public EffectFitter {
     std::vector<std::array<double, S>> x0;
     {
       EffectValues<double> e = data.base;
-      ApplySizes(search.kind, search.input, theta.data(), e);
+      ApplySizes(search, theta.data(), e);
       ResetRollout<V, double>(data, part, p, e, residual.data(), &x0);
     }
     ceres::Problem problem;
@@ -170,9 +178,8 @@ class TypedEffectFitter : public EffectFitter {
     for (int i = 0; i < S; ++i)
       if (data.state_channel[i] < 0) held.push_back(i);
     for (size_t s = 0; s < part.starts.size(); ++s) {
-      problem.AddResidualBlock(
-          SegmentCost<V, K>::Create(data, part, s, p, search.kind, search.input), nullptr,
-          theta.data(), x0[s].data());
+      problem.AddResidualBlock(SegmentCost<V, K>::Create(data, part, s, p, search), nullptr,
+                               theta.data(), x0[s].data());
       if (held.size() == static_cast<size_t>(S)) {
         problem.SetParameterBlockConstant(x0[s].data());
       } else if (!held.empty()) {
@@ -204,7 +211,7 @@ class TypedEffectFitter : public EffectFitter {
       }
     }
     EffectValues<double> e = data.base;
-    ApplySizes(search.kind, search.input, theta.data(), e);
+    ApplySizes(search, theta.data(), e);
     const EffectPlant<V, double> plant(data, p, e);
     for (size_t s = 0; s < part.starts.size(); ++s) {
       const Eigen::Index a = part.starts[s];

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "core/error.h"
+#include "core/expression.h"
 #include "core/json_file.h"
 #include "core/parse_number.h"
 
@@ -33,10 +34,20 @@ constexpr std::array<EffectInfo, 10> kCatalogue = {{
      "surge resistance off by a factor (the rest of the damping as modelled)"},
 }};
 
+constexpr EffectInfo kMissingTermInfo = {
+    EffectKind::kMissingTerm, "missing_term", "coefficient",
+    "a term coefficient x TERM missing from one state's derivative (beyond the catalogue)"};
+
 std::string KnownNames() {
   std::string names;
   for (const EffectInfo& e : kCatalogue) names += (names.empty() ? "" : ", ") + std::string(e.name);
-  return names;
+  return names + ", " + std::string(kMissingTermInfo.name);
+}
+
+// A missing term's text: it must parse as an expression (core/expression.h).
+void CheckTerm(const std::string& term, const std::string& where) {
+  if (term.empty()) throw InputError(where + "missing_term: an empty term");
+  (void)Expression::Parse(term, where + "missing_term '" + term + "'");
 }
 
 // Checks the main value against the effect's rule; returns the rule broken, or "".
@@ -59,6 +70,8 @@ std::string Violation(EffectKind kind, double value) {
       return value > 0.0 && value <= 1.0 ? "" : "fraction must be in (0, 1]";
     case EffectKind::kSurgeForce:
       return std::abs(value) <= 5.0 ? "" : "acceleration must be in [-5, 5] m/s^2";
+    case EffectKind::kMissingTerm:
+      return std::isfinite(value) ? "" : "coefficient must be finite";
   }
   return "";
 }
@@ -73,7 +86,10 @@ double ParseValue(const std::string& text, const std::string& where) {
 
 const std::array<EffectInfo, 10>& EffectCatalogue() { return kCatalogue; }
 
-const EffectInfo& InfoOf(EffectKind kind) { return kCatalogue[static_cast<size_t>(kind)]; }
+const EffectInfo& InfoOf(EffectKind kind) {
+  return kind == EffectKind::kMissingTerm ? kMissingTermInfo
+                                          : kCatalogue[static_cast<size_t>(kind)];
+}
 
 bool OnInputs(EffectKind kind) {
   return kind == EffectKind::kInputDelay || kind == EffectKind::kActuatorLag ||
@@ -82,6 +98,8 @@ bool OnInputs(EffectKind kind) {
 
 std::string EffectLabel(const Effect& effect) {
   std::string label(effect.name());
+  if (effect.kind == EffectKind::kMissingTerm)
+    return label + " " + effect.state + ": " + effect.term;
   for (size_t i = 0; i < effect.inputs.size(); ++i) label += (i ? "+" : "@") + effect.inputs[i];
   return label;
 }
@@ -105,11 +123,23 @@ Effect ParseEffect(const std::string& full_spec, uint64_t seed) {
   const EffectInfo* info = nullptr;
   for (const EffectInfo& e : kCatalogue)
     if (e.name == name) info = &e;
+  if (name == kMissingTermInfo.name) info = &kMissingTermInfo;
   if (info == nullptr)
     throw InputError(where + "unknown effect '" + name + "' (known: " + KnownNames() + ")");
   if (eq == std::string::npos) throw InputError(where + "expected NAME=VALUE");
   std::string value_text = spec.substr(eq + 1);
-  std::string direction_text;
+  std::string direction_text, state, term;
+  if (info->kind == EffectKind::kMissingTerm) {
+    const auto first = value_text.find(':');
+    const auto second = first == std::string::npos ? first : value_text.find(':', first + 1);
+    if (second == std::string::npos)
+      throw InputError(where + "expected missing_term=COEFFICIENT:STATE:TERM");
+    state = value_text.substr(first + 1, second - first - 1);
+    term = value_text.substr(second + 1);
+    value_text = value_text.substr(0, first);
+    if (state.empty()) throw InputError(where + "missing_term: an empty state name");
+    CheckTerm(term, where);
+  }
   if (info->kind == EffectKind::kCurrent) {
     const auto colon = value_text.find(':');
     if (colon != std::string::npos) {
@@ -125,7 +155,7 @@ Effect ParseEffect(const std::string& full_spec, uint64_t seed) {
     throw InputError(where + name +
                      " acts on the whole vessel, not on inputs (only input_delay, actuator_lag, "
                      "input_bias and saturation take @INPUT)");
-  Effect effect{info->kind, {}, inputs};
+  Effect effect{info->kind, {}, inputs, state, term};
   if (info->kind == EffectKind::kCurrent) {
     double direction = 0.0;
     if (!direction_text.empty()) {
@@ -147,16 +177,23 @@ std::vector<Effect> ParseEffects(const std::vector<std::string>& specs, uint64_t
   for (const std::string& spec : specs) {
     Effect e = ParseEffect(spec, seed);
     for (const Effect& other : effects)
-      if (other.kind == e.kind && other.inputs == e.inputs)
-        throw InputError("--effect '" + spec + "': given twice");
+      if (SameEffect(other, e)) throw InputError("--effect '" + spec + "': given twice");
     effects.push_back(std::move(e));
   }
   return effects;
 }
 
+bool SameEffect(const Effect& a, const Effect& b) {
+  return a.kind == b.kind && a.inputs == b.inputs && a.state == b.state && a.term == b.term;
+}
+
 nlohmann::json EffectToJson(const Effect& effect) {
   nlohmann::json j = {{"effect", effect.name()}, {"parameters", effect.parameters}};
   if (!effect.inputs.empty()) j["inputs"] = effect.inputs;
+  if (effect.kind == EffectKind::kMissingTerm) {
+    j["state"] = effect.state;
+    j["term"] = effect.term;
+  }
   return j;
 }
 
@@ -165,7 +202,9 @@ Effect EffectFromJson(const nlohmann::json& value) {
       !value.contains("parameters") || !value.at("parameters").is_object())
     throw InputError("an effect is {\"effect\": NAME, \"parameters\": {NAME: NUMBER, ...}}");
   const std::string name = value.at("effect").get<std::string>();
-  for (const EffectInfo& e : kCatalogue) {
+  std::vector<EffectInfo> known(kCatalogue.begin(), kCatalogue.end());
+  known.push_back(kMissingTermInfo);
+  for (const EffectInfo& e : known) {
     if (e.name != name) continue;
     Effect effect{e.kind, {}};
     for (const auto& [key, v] : value.at("parameters").items()) {
@@ -187,6 +226,15 @@ Effect EffectFromJson(const nlohmann::json& value) {
       if (!OnInputs(e.kind))
         throw InputError("effect " + name + ": acts on the whole vessel, it takes no \"inputs\"");
       effect.inputs = in.get<std::vector<std::string>>();
+    }
+    if (e.kind == EffectKind::kMissingTerm) {
+      for (const char* key : {"state", "term"})
+        if (!value.contains(key) || !value.at(key).is_string() ||
+            value.at(key).get<std::string>().empty())
+          throw InputError("effect missing_term: \"" + std::string(key) + "\" is not a name");
+      effect.state = value.at("state").get<std::string>();
+      effect.term = value.at("term").get<std::string>();
+      CheckTerm(effect.term, "effect ");
     }
     return effect;
   }
@@ -210,7 +258,7 @@ std::vector<Effect> EffectsOfFile(const std::string& path) {
 
 std::vector<Effect> MergeEffects(std::vector<Effect> base, const std::vector<Effect>& overrides) {
   for (const Effect& o : overrides) {
-    std::erase_if(base, [&o](const Effect& b) { return b.kind == o.kind && b.inputs == o.inputs; });
+    std::erase_if(base, [&o](const Effect& b) { return SameEffect(b, o); });
     base.push_back(o);
   }
   return base;

@@ -15,6 +15,9 @@
 // input_delay, actuator_lag, input_bias and saturation may act on some inputs only
 // (Effect::inputs, by channel name; `--effect input_delay=1.0@tau_n`): a delay or lag on one
 // actuator, a bias on another input than the yaw input, one actuator that saturates.
+// Beyond the catalogue, missing_term: a term `coefficient * TERM` (an expression in the
+// vessel's state and input names, docs/diagnose.md) missing from one state's derivative; the
+// diagnosis proposes and fits it, `--effect missing_term=COEFFICIENT:STATE:TERM` hides one.
 // ParseEffect throws InputError naming the --effect item and the rule it breaks.
 #pragma once
 
@@ -38,7 +41,8 @@ enum class EffectKind {
   kDamping,
   kSaturation,
   kSurgeForce,
-  kResistance
+  kResistance,
+  kMissingTerm  // not in the catalogue: proposed by the diagnosis's residual search
 };
 
 struct EffectInfo {
@@ -48,6 +52,7 @@ struct EffectInfo {
   std::string_view meaning;
 };
 
+// The catalogue: what the diagnosis fits blindly (missing_term is not among them).
 const std::array<EffectInfo, 10>& EffectCatalogue();
 const EffectInfo& InfoOf(EffectKind kind);
 
@@ -57,6 +62,8 @@ struct Effect {
   // The input channels it acts on; empty: the kind's default (every input; the yaw input for
   // input_bias). Only for the kinds that OnInputs allows.
   std::vector<std::string> inputs = {};
+  // missing_term: the state whose derivative gains coefficient * term, and the term.
+  std::string state = {}, term = {};
 
   std::string_view name() const { return InfoOf(kind).name; }
   double at(const std::string& parameter) const { return parameters.at(parameter); }
@@ -64,8 +71,12 @@ struct Effect {
 
 // Whether an effect of this kind can act on some inputs only.
 bool OnInputs(EffectKind kind);
-// The name, with the inputs of an effect on some inputs only: "input_delay@tau_n".
+// The name, with the inputs of an effect on some inputs only ("input_delay@tau_n") or the
+// state and term of a missing term ("missing_term r: abs(v)*v").
 std::string EffectLabel(const Effect& effect);
+
+// The same effect in a list: the kind, and the inputs or the state and term it acts on.
+bool SameEffect(const Effect& a, const Effect& b);
 
 // "NAME=VALUE" with the main parameter; `current=SPEED` takes a direction drawn from `seed`
 // (uniform over the compass), `current=SPEED:DIRECTION_DEG` the direction the water flows to,

@@ -1,5 +1,6 @@
 #include "effects/effect_values.h"
 
+#include <algorithm>
 #include <bit>
 
 #include "core/error.h"
@@ -24,8 +25,50 @@ uint32_t InputMask(const Effect& e, const std::vector<std::string>& input_names)
   return mask;
 }
 
+ExtraTerm<double> ResolveTerm(const Effect& e, const std::vector<std::string>& state_names,
+                              const std::vector<std::string>& input_names) {
+  auto index = [](const std::vector<std::string>& names, const std::string& name) {
+    return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  auto known = [&] {
+    std::string list;
+    for (const auto* names : {&state_names, &input_names})
+      for (const std::string& n : *names) list += (list.empty() ? "" : ", ") + n;
+    return list.empty() ? std::string("none given") : list;
+  };
+  ExtraTerm<double> t;
+  t.state = index(state_names, e.state);
+  if (t.state == static_cast<int>(state_names.size()))
+    throw InputError("effect missing_term: '" + e.state +
+                     "' is not a state of the vessel (states and inputs: " + known() + ")");
+  t.term = std::make_shared<const Expression>(Expression::Parse(e.term, "missing_term"));
+  for (const std::string& name : t.term->Variables()) {
+    const int s = index(state_names, name), i = index(input_names, name);
+    if (s < static_cast<int>(state_names.size()))
+      t.slots.push_back(s);
+    else if (i < static_cast<int>(input_names.size()))
+      t.slots.push_back(static_cast<int>(state_names.size()) + i);
+    else
+      throw InputError("effect missing_term: the term '" + e.term + "' uses '" + name +
+                       "', not a state or input of the vessel (" + known() + ")");
+  }
+  t.coefficient = e.at("coefficient");
+  t.state_name = e.state;
+  t.text = e.term;
+  return t;
+}
+
 void SetEffect(const Effect& e, EffectValues<double>& v,
-               const std::vector<std::string>& input_names) {
+               const std::vector<std::string>& input_names,
+               const std::vector<std::string>& state_names) {
+  if (e.kind == EffectKind::kMissingTerm) {
+    ExtraTerm<double> t = ResolveTerm(e, state_names, input_names);
+    std::erase_if(v.extra_terms, [&](const ExtraTerm<double>& o) {
+      return o.state_name == t.state_name && o.text == t.text;
+    });
+    v.extra_terms.push_back(std::move(t));
+    return;
+  }
   const uint32_t mask = InputMask(e, input_names);
   switch (e.kind) {
     case EffectKind::kInputDelay:
@@ -74,13 +117,16 @@ void SetEffect(const Effect& e, EffectValues<double>& v,
     case EffectKind::kResistance:
       v.resistance_scale = e.at("scale");
       break;
+    case EffectKind::kMissingTerm:
+      break;  // above
   }
 }
 
 EffectValues<double> ValuesOf(const std::vector<Effect>& effects,
-                              const std::vector<std::string>& input_names) {
+                              const std::vector<std::string>& input_names,
+                              const std::vector<std::string>& state_names) {
   EffectValues<double> v;
-  for (const Effect& e : effects) SetEffect(e, v, input_names);
+  for (const Effect& e : effects) SetEffect(e, v, input_names, state_names);
   return v;
 }
 

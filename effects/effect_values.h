@@ -7,12 +7,29 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/expression.h"
 #include "effects/effect.h"
 
 namespace usvid {
+
+// A missing term resolved against a vessel: d(state)/dt += coefficient * term(x, u).
+template <typename T>
+struct ExtraTerm {
+  int state = 0;                           // index into the vessel's states
+  std::shared_ptr<const Expression> term;  // in the vessel's channel names
+  std::vector<int> slots;  // per term variable: a state index, or kStates + an input index
+  T coefficient = T(0);
+  std::string state_name, text;  // as the effect names them (to replace a term given twice)
+};
+
+// `effect` (a missing_term) resolved against the vessel's state and input names; InputError
+// naming a channel that is neither.
+ExtraTerm<double> ResolveTerm(const Effect& effect, const std::vector<std::string>& state_names,
+                              const std::vector<std::string>& input_names);
 
 template <typename T>
 struct EffectValues {
@@ -34,16 +51,20 @@ struct EffectValues {
   uint32_t lag_inputs = ~0u;
   uint32_t saturation_inputs = ~0u;
   int bias_input = -1;  // the input input_bias is added to; -1: the vessel's yaw input
+  std::vector<ExtraTerm<T>> extra_terms;  // missing_term effects
 };
 
 // The values of a list of effects (each kind at most once per set of inputs). `input_names`
-// are the vessel's inputs, which an effect's `inputs` name; an effect on an input that is not
-// among them is an InputError naming both.
+// and `state_names` are the vessel's, which an effect's `inputs` and a missing term name; a
+// name not among them is an InputError naming both.
 EffectValues<double> ValuesOf(const std::vector<Effect>& effects,
-                              const std::vector<std::string>& input_names = {});
-// `effect` set in `values` (replacing that kind's value; on some inputs, those inputs' values).
+                              const std::vector<std::string>& input_names = {},
+                              const std::vector<std::string>& state_names = {});
+// `effect` set in `values` (replacing that kind's value; on some inputs, those inputs' values;
+// a missing term, the same state and term).
 void SetEffect(const Effect& effect, EffectValues<double>& values,
-               const std::vector<std::string>& input_names = {});
+               const std::vector<std::string>& input_names = {},
+               const std::vector<std::string>& state_names = {});
 // The bit mask of `inputs` among `input_names` (all bits when `inputs` is empty).
 uint32_t InputMask(const Effect& effect, const std::vector<std::string>& input_names);
 
@@ -66,6 +87,8 @@ EffectValues<T> CastValues(const EffectValues<double>& e) {
   out.lag_inputs = e.lag_inputs;
   out.saturation_inputs = e.saturation_inputs;
   out.bias_input = e.bias_input;
+  for (const ExtraTerm<double>& t : e.extra_terms)
+    out.extra_terms.push_back({t.state, t.term, t.slots, T(t.coefficient), t.state_name, t.text});
   return out;
 }
 

@@ -9,7 +9,8 @@
 // where p_eff is p with inertia, damping and resistance parameters scaled (inertia, damping,
 // resistance). The measured
 // rate channel carries sensor_bias (MeasuredRate); input_delay shifts u_c in time (caller);
-// surge_force adds its acceleration to the surge state's derivative (u, else U, else the msd's v).
+// surge_force adds its acceleration to the surge state's derivative (u, else U, else the msd's v),
+// and each missing term coefficient * term(x, u_a) to its state's derivative.
 #pragma once
 
 #include <array>
@@ -80,6 +81,13 @@ struct Plant {
     const Environment<T> env{e.current_north, e.current_east};
     V::template Derivative<T>(x, u_applied.data(), p_eff, env, dx);
     if constexpr (kSurgeState >= 0) dx[kSurgeState] += e.surge_acceleration;
+    for (const ExtraTerm<T>& term : e.extra_terms) {
+      std::array<T, V::kStates + V::kInputs> values;
+      for (size_t i = 0; i < term.slots.size(); ++i)
+        values[i] =
+            term.slots[i] < V::kStates ? x[term.slots[i]] : u_applied[term.slots[i] - V::kStates];
+      dx[term.state] += term.coefficient * term.term->template EvaluateT<T>(values.data());
+    }
   }
 
   // The state a plant starts in: the vessel state, and the lag memory at the first command.

@@ -1,4 +1,4 @@
-// libFuzzer target: the equation parser of model.json (methods/expression.h). Any text either
+// libFuzzer target: the equation parser of model.json (core/expression.h). Any text either
 // parses (and then evaluates without crashing on any variable values) or is refused with
 // InputError naming the column.
 #include <cstdint>
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

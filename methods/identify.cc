@@ -10,7 +10,7 @@
 #include "core/error.h"
 #include "core/parse_number.h"
 #include "methods/eb_lr/eb_lr.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/fossen_ceres/jet_force_model.h"

@@ -110,7 +110,8 @@ ClosedLoopReplay ReplayVesselModel(const nlohmann::json& model, Maneuver& maneuv
   options.rate_hz = rate_hz;
   const SimulationResult r =
       vessel.simulator->RunManeuver(maneuver, vessel.params,
-                                    ValuesOf(vessel.effects, vessel.simulator->Info().inputs),
+                                    ValuesOf(vessel.effects, vessel.simulator->Info().inputs,
+                                             vessel.simulator->Info().states),
                                     options);
   ClosedLoopReplay out;
   out.run = r.data;

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "methods/expression.h"
+#include "core/expression.h"
 
 namespace usvid {
 

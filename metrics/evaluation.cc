@@ -5,7 +5,7 @@
 #include <map>
 
 #include "core/derived_channels.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "metrics/fit_metrics.h"
 #include "preprocessing/pipeline.h"
 #include "preprocessing/waterjet_forces.h"

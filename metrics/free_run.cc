@@ -66,7 +66,7 @@ FreeRun FreeRunVessel(const nlohmann::json& model, const Dataset& data, double m
   RunOptions options;
   options.dt = max_step;
   const SimulationResult result =
-      vessel.simulator->RunInputs(data, vessel.params, ValuesOf(vessel.effects, info.inputs),
+      vessel.simulator->RunInputs(data, vessel.params, ValuesOf(vessel.effects, info.inputs, info.states),
                                   options);
   FreeRun run;
   run.simulated = Dataset(data.t());

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 
-#include "methods/expression.h"
+#include "core/expression.h"
 
 namespace usvid {
 namespace {

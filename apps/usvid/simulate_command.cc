@@ -57,7 +57,7 @@ void RunSimulate(const SimulateOptions& o) {
   const std::vector<Effect> effects =
       MergeEffects(o.params.empty() ? std::vector<Effect>{} : EffectsOfFile(o.params),
                    ParseEffects(o.effects, o.seed));
-  const EffectValues<double> values = ValuesOf(effects, info.inputs);
+  const EffectValues<double> values = ValuesOf(effects, info.inputs, info.states);
   std::vector<double> params = info.default_params;
   if (!o.params.empty()) params = info.ParamsFromFile(o.params);
   RunOptions run;

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "methods/expression.h"
+#include "core/expression.h"
 
 namespace usvid::gp {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "methods/gp/search.h"
 
 namespace usvid::gp {

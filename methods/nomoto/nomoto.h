@@ -39,7 +39,7 @@ struct NomotoFit {
 NomotoFit FitNomoto(const PreparedData& prepared, const std::string& rate,
                     const std::string& yaw_input, double segment_s = 30.0);
 
-// {rate: "(K*(input - delta0) - rate)/T"} with the fitted numbers, in methods/expression.h's
+// {rate: "(K*(input - delta0) - rate)/T"} with the fitted numbers, in core/expression.h's
 // syntax.
 nlohmann::json NomotoEquations(const NomotoFit& fit, const std::string& rate,
                                const std::string& yaw_input);

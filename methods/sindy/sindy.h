@@ -17,7 +17,7 @@
 // column); held-out errors are in the derivative's units squared.
 //
 // The equations are in the contract's syntax ("0.5 + 0.01*u - 0.049*abs(u)*u + 0.0002*tau_x",
-// coefficients written to round-trip exactly); they parse with methods/expression.h and evaluate
+// coefficients written to round-trip exactly); they parse with core/expression.h and evaluate
 // to PredictWithSindy (to rounding: the parser multiplies c*v*r as (c*v)*r).
 //
 // Throws InputError for a missing or non-finite channel, fewer rows than folds x 10, folds < 2,

@@ -7,7 +7,7 @@
 
 #include "core/csv_dataset.h"
 #include "core/json_file.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "methods/regime_features.h"
 #include "tests/apps/run_usvid.h"
 

@@ -66,7 +66,6 @@ TEST(DiagnoseTest, ProposesTheMissingTermBeyondTheCatalogue) {
   truth[7] = 3000.0;  // Nv
   const Dataset data = Simulate("odin3dof", "random-steps", 300, truth, {}, 4);
   const Diagnosis d = Diagnose(data, "odin3dof", p, {});
-  EXPECT_TRUE(d.unexplained);
   ASSERT_FALSE(d.discovered.empty());
   const DiscoveredTerms& r = d.discovered.front();
   EXPECT_EQ(r.state, "r");
@@ -74,6 +73,14 @@ TEST(DiagnoseTest, ProposesTheMissingTermBeyondTheCatalogue) {
   const auto star = r.expression.find("*v");
   ASSERT_NE(star, std::string::npos) << r.expression;
   EXPECT_NEAR(std::stod(r.expression.substr(0, star)), -0.0821, 0.0821 * 0.1) << r.expression;
+  // The proposal competes as a candidate, fitted through the simulator, and it is the cause:
+  // the extended model carries the term, and nothing is left unexplained.
+  ASSERT_EQ(d.cause, "missing_term");
+  EXPECT_EQ(d.cause_effect->state, "r");
+  EXPECT_EQ(d.cause_effect->term, "v");
+  EXPECT_NEAR(d.cause_effect->at("coefficient"), -0.0821, 0.0821 * 0.1);
+  EXPECT_GE(d.heldout_error_reduction, 0.5);
+  EXPECT_FALSE(d.unexplained);
 }
 
 }  // namespace

@@ -80,7 +80,8 @@ TEST(ResetRolloutTest, SegmentJetDerivativeMatchesCentralDifferences) {
   const Dataset data = CleanRun({}, "multisine");
   const VesselSimulator& sim = FindVessel("odin3dof");
   const MeasuredData d = PrepareMeasuredData(data, sim, sim.Info().default_params, {});
-  SegmentCost<Odin3Dof, 1> cost{&d, &d.train, 1, Defaults(), EffectKind::kInertia, -1};
+  const EffectSearch search = SearchFor(EffectKind::kInertia, d, Odin3Dof::kYawInput);
+  SegmentCost<Odin3Dof, 1> cost{&d, &d.train, 1, Defaults(), &search};
   std::array<double, 6> x0;
   for (int i = 0; i < 6; ++i) x0[i] = d.fallback_states(d.train.starts[1], i);
   const int n = cost.Residuals();

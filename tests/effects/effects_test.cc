@@ -49,8 +49,8 @@ class EffectsTest : public ::testing::Test {
     if (params.empty()) params = sim.Info().default_params;
     RunOptions opt;
     opt.dt = 0.01;
-    const SimulationResult r =
-        sim.RunInputs(in, params, ValuesOf(ParseEffects(effects, 5), sim.Info().inputs), opt);
+    const SimulationResult r = sim.RunInputs(
+        in, params, ValuesOf(ParseEffects(effects, 5), sim.Info().inputs, sim.Info().states), opt);
     EXPECT_FALSE(r.diverged);
     return r.data;
   }
@@ -232,6 +232,28 @@ TEST_F(EffectsTest, OneInputEffectsRoundTripAndBadInputsAreRefused) {
       InputError);
   // The same kind on other inputs is not "given twice".
   EXPECT_EQ(ParseEffects({"input_delay=0.5@tau_n", "input_delay=0.2"}, 1).size(), 2u);
+}
+
+// missing_term: coefficient * term added to one state's derivative. On the msd, v' gains
+// -0.1 x: the same as a spring stiffer by m * 0.1 = 1 N/m (k 2 -> 3).
+TEST_F(EffectsTest, MissingTermAddsToThatStatesDerivative) {
+  const Dataset in = MsdSteps();
+  const Dataset with_term = Run("msd", in, {"missing_term=-0.1:v:x"});
+  const Dataset stiffer = Run("msd", in, {}, {10.0, 1.0, 3.0});
+  EXPECT_LT(MaxDiff(with_term["x"], stiffer["x"]), 1e-9);
+  EXPECT_GT(MaxDiff(with_term["x"], Run("msd", in)["x"]), 0.1);
+  const Effect e = ParseEffect("missing_term=0.05:r:abs(v)*v", 1);
+  const nlohmann::json j = EffectToJson(e);
+  EXPECT_EQ(j.at("state"), "r");
+  EXPECT_EQ(j.at("term"), "abs(v)*v");
+  EXPECT_EQ(EffectFromJson(j).term, "abs(v)*v");
+  const VesselInfo& odin = FindVessel("odin3dof").Info();
+  EXPECT_THROW(ValuesOf({ParseEffect("missing_term=0.1:r:U*v", 1)}, odin.inputs, odin.states),
+               InputError);  // U is not a state of odin3dof
+  EXPECT_THROW(ValuesOf({ParseEffect("missing_term=0.1:w:v", 1)}, odin.inputs, odin.states),
+               InputError);
+  EXPECT_THROW(ParseEffect("missing_term=0.1:r:abs(v", 1), InputError);
+  EXPECT_THROW(ParseEffect("missing_term=0.1:r", 1), InputError);
 }
 
 // Bad effect specs name the item and the rule.

@@ -25,7 +25,7 @@
 
 #include "core/error.h"
 #include "maneuvers/maneuver_factory.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "preprocessing/pipeline.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
@@ -137,7 +137,7 @@ TEST_F(EbLrTest, SteadyWindowsMatchTheGridsSteps) {
   for (size_t w = 0; w < windows.size(); ++w) EXPECT_GE(owner[w], 0) << windows[w].dump();
 }
 
-// The equations parse with methods/expression.h and evaluate to the fitted model's derivative
+// The equations parse with core/expression.h and evaluate to the fitted model's derivative
 // (tau - sigma(x)) / m(x), which is the simulator's own right-hand side to within 0.5 % RMS.
 TEST_F(EbLrTest, EquationsParseAndEvaluateToTheModel) {
   const Dataset& clean = Eb2DofGrid().data;

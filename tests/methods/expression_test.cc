@@ -1,6 +1,6 @@
 // The equations of model.json (contract section 5): parsing with located errors, evaluation per
 // sample, per dataset and on Jets, printing that round-trips, and the term structure.
-#include "methods/expression.h"
+#include "core/expression.h"
 
 #include <ceres/jet.h>
 #include <gmock/gmock.h>

@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <map>
 
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/gp/search.h"
 #include "methods/identify.h"

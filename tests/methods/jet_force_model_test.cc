@@ -10,7 +10,7 @@
 
 #include <random>
 
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "metrics/evaluation.h"
 #include "preprocessing/waterjet_forces.h"

@@ -14,7 +14,7 @@
 
 #include "core/dataset.h"
 #include "core/error.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "preprocessing/pipeline.h"
 
 namespace usvid {

@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "methods/gp/model_selection.h"
 #include "simulators/odin_hs.h"
 

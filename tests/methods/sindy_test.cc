@@ -13,7 +13,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "metrics/evaluation.h"
 #include "preprocessing/pipeline.h"
 #include "simulators/msd.h"

@@ -16,7 +16,7 @@
 
 #include "core/error.h"
 #include "maneuvers/maneuver_factory.h"
-#include "methods/expression.h"
+#include "core/expression.h"
 #include "methods/identify.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"

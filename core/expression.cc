@@ -1,4 +1,4 @@
-#include "methods/expression.h"
+#include "core/expression.h"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +9,8 @@
 
 #include "core/dataset.h"
 #include "core/error.h"
+#include "core/expression_terms.h"
 #include "core/parse_number.h"
-#include "methods/expression_terms.h"
 
 namespace usvid {
 namespace {

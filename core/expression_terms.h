@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "methods/expression.h"
+#include "core/expression.h"
 
 namespace usvid {
 

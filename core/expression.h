@@ -98,7 +98,7 @@ class Expression {
   std::string ToString() const;
 
   // The expression expanded into a sum of products, as (term, coefficient) sorted by term; see
-  // methods/expression_terms.h for the normal form.
+  // core/expression_terms.h for the normal form.
   std::vector<std::pair<std::string, double>> Terms() const;
 
   static constexpr int kInlineStack = 32;

@@ -1,4 +1,4 @@
-#include "methods/expression_terms.h"
+#include "core/expression_terms.h"
 
 #include <algorithm>
 #include <cmath>
