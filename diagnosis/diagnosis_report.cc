@@ -21,6 +21,7 @@ std::string Sizes(const Effect& e) {
   for (const auto& [name, value] : e.parameters)
     out += (out.empty() ? "" : ", ") + name + " = " + Fixed(value, 4);
   for (size_t i = 0; i < e.inputs.size(); ++i) out += (i ? "+" : ", on ") + e.inputs[i];
+  if (e.kind == EffectKind::kMissingTerm) out += " x " + e.term + " in " + e.state + "'";
   return out;
 }
 
@@ -34,8 +35,9 @@ std::string FitCells(const FitPercent& fit, const std::vector<std::string>& chan
 }
 
 std::string HeldoutFigure(const Diagnosis& d) {
-  std::string causes = d.cause;  // every cause the extended model has
-  for (const FurtherCause& f : d.further_causes) causes += " + " + std::string(f.effect.name());
+  // Every cause the extended model has.
+  std::string causes = d.cause_effect ? EffectLabel(*d.cause_effect) : d.cause;
+  for (const FurtherCause& f : d.further_causes) causes += " + " + EffectLabel(f.effect);
   FigureGrid grid;
   grid.SetTitle("held-out part: measured, nominal and extended (" + causes +
                 "), each segment from its estimated initial state")
@@ -65,15 +67,16 @@ void WriteDiagnosisReport(const Diagnosis& d, const std::string& dir) {
        "<body>\n";
   h << "<h1>usvid diagnose: " << svg::Escape(d.vessel) << " on " << svg::Escape(d.source)
     << "</h1>\n";
-  h << "<p><b>Cause: " << svg::Escape(d.cause) << "</b>";
+  h << "<p><b>Cause: " << svg::Escape(d.cause_effect ? EffectLabel(*d.cause_effect) : d.cause)
+    << "</b>";
   if (d.cause_effect) h << " (" << svg::Escape(Sizes(*d.cause_effect)) << ")";
   for (const FurtherCause& f : d.further_causes)
-    h << "; then, on the model extended so far, <b>" << svg::Escape(f.effect.name()) << "</b> ("
-      << svg::Escape(Sizes(f.effect)) << ", LR " << Fixed(f.likelihood_ratio, 1) << ")";
+    h << "; then, on the model extended so far, <b>" << svg::Escape(EffectLabel(f.effect))
+      << "</b> (" << svg::Escape(Sizes(f.effect)) << ", LR " << Fixed(f.likelihood_ratio, 1) << ")";
   if (!d.base_effects.empty()) {
     h << "; the nominal model already had";
     for (const Effect& e : d.base_effects)
-      h << " " << svg::Escape(e.name()) << " (" << svg::Escape(Sizes(e)) << ")";
+      h << " " << svg::Escape(EffectLabel(e)) << " (" << svg::Escape(Sizes(e)) << ")";
   }
   h << ". Held-out error reduction " << Fixed(100.0 * d.heldout_error_reduction, 1)
     << " %. Trained on the first " << Fixed(d.train_s, 0) << " s, scored on the last "
@@ -93,11 +96,12 @@ void WriteDiagnosisReport(const Diagnosis& d, const std::string& dir) {
   for (const std::string& c : d.channels) h << "<th>" << svg::Escape(c) << " %</th>";
   h << "<th>held-out E</th><th>explained</th><th>score (AIC)</th></tr>\n";
   for (const Candidate& c : d.candidates) {
-    const bool cause = c.fit.effect.name() == d.cause;
-    h << "<tr" << (cause ? " class=\"cause\"" : "") << "><td>" << c.fit.effect.name() << "</td><td>"
-      << svg::Escape(Sizes(c.fit.effect)) << "</td>" << FitCells(c.heldout_fit_percent, d.channels)
-      << "<td>" << std::setprecision(4) << c.heldout_error << "</td><td>"
-      << Fixed(100.0 * c.explained, 1) << " %</td><td>" << Fixed(c.score, 1) << "</td></tr>\n";
+    const bool cause = d.cause_effect && SameEffect(c.fit.effect, *d.cause_effect);
+    h << "<tr" << (cause ? " class=\"cause\"" : "") << "><td>"
+      << svg::Escape(EffectLabel(c.fit.effect)) << "</td><td>" << svg::Escape(Sizes(c.fit.effect))
+      << "</td>" << FitCells(c.heldout_fit_percent, d.channels) << "<td>" << std::setprecision(4)
+      << c.heldout_error << "</td><td>" << Fixed(100.0 * c.explained, 1) << " %</td><td>"
+      << Fixed(c.score, 1) << "</td></tr>\n";
   }
   h << "</table>\n";
 
