@@ -156,11 +156,13 @@ std::vector<Candidate> Rank(std::vector<Candidate> candidates, double reference_
 }
 
 std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fitter,
-                                   const std::vector<double>& params, double reference_error,
-                                   double noise_floor, double effective_samples) {
-  return Rank(FitCandidates(d, fitter, params, Searches(d, fitter), reference_error, noise_floor,
-                            effective_samples),
-              reference_error);
+                                   const std::vector<double>& params,
+                                   const std::vector<EffectSearch>& searches,
+                                   double reference_error, double noise_floor,
+                                   double effective_samples) {
+  return Rank(
+      FitCandidates(d, fitter, params, searches, reference_error, noise_floor, effective_samples),
+      reference_error);
 }
 
 // Each term the residual search proposes, as a missing_term search of its coefficient: the
@@ -209,16 +211,18 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   out.residuals = AnalyseResiduals(d, nominal_all, sim.Info().inputs, d.fallback_states);
   for (const ChannelResidual& r : out.residuals)
     out.nominal_free_run_fit_percent[r.channel] = r.free_run_fit_percent;
+  // The same candidates in every round: the extended model has the same inputs.
+  const std::vector<EffectSearch> searches = Searches(d, fitter);
   if (log)
     *log << "diagnose: " << vessel << ", " << d.rows() << " rows, train " << out.train_s
-         << " s, held out " << out.heldout_s << " s; fitting " << Searches(d, fitter).size()
+         << " s, held out " << out.heldout_s << " s; fitting " << searches.size()
          << " candidate effects\n";
 
   // 2. Name.
   out.correlation_time = CorrelationTime(d, d.heldout, nominal_held);
   out.effective_samples = static_cast<double>(SampledCount(d, d.heldout)) / out.correlation_time;
-  out.candidates =
-      RankEffects(d, fitter, params, out.nominal_error, out.noise_floor, out.effective_samples);
+  out.candidates = RankEffects(d, fitter, params, searches, out.nominal_error, out.noise_floor,
+                               out.effective_samples);
   const bool visible = out.nominal_error > (1.0 + options.min_excess) * out.noise_floor;
   // Beyond the catalogue: the residual is well above the noise and no effect explains most of
   // it. The residual search proposes terms, and each competes as a candidate, fitted through
@@ -256,8 +260,8 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   const double excess = out.nominal_error - out.noise_floor;
   for (int round = 1; found && round < options.max_causes && explained < options.further_explained;
        ++round) {
-    const std::vector<Candidate> next =
-        RankEffects(extended, fitter, params, error, out.noise_floor, out.effective_samples);
+    const std::vector<Candidate> next = RankEffects(extended, fitter, params, searches, error,
+                                                    out.noise_floor, out.effective_samples);
     const Candidate& c = next.front();
     if (!Passes(c, error, options)) break;
     FurtherCause f{c.fit.effect, c.alike, c.likelihood_ratio, c.explained, error, c.heldout_error};

@@ -82,8 +82,8 @@ Effect EffectOf(const EffectSearch& search, const std::vector<double>& theta,
   for (size_t i = 0; i < names.size(); ++i) e.parameters[names[i]] = theta.at(i);
   if (search.input >= 0) e.inputs = {input_names.at(search.input)};
   if (search.kind == EffectKind::kMissingTerm) {
-    e.state = search.term.state_name;
-    e.term = search.term.text;
+    e.state = search.term->state_name;
+    e.term = search.term->text;
   }
   return e;
 }

@@ -32,7 +32,7 @@ struct EffectSearch {
   bool smooth = true;  // Ceres (true) or NLopt (false)
   std::vector<std::string> names;
   std::vector<double> start, lower, upper;
-  ExtraTerm<double> term;  // missing_term: the term, resolved against the vessel
+  std::shared_ptr<const ResolvedTerm> term;  // missing_term: resolved against the vessel
   int size() const { return static_cast<int>(names.size()); }
 };
 
@@ -90,11 +90,9 @@ void ApplySizes(const EffectSearch& search, const T* theta, EffectValues<T>& e) 
     case EffectKind::kResistance:
       e.resistance_scale = theta[0];
       break;
-    case EffectKind::kMissingTerm: {
-      const ExtraTerm<double>& t = search.term;
-      e.extra_terms.push_back({t.state, t.term, t.slots, theta[0], t.state_name, t.text});
+    case EffectKind::kMissingTerm:
+      e.extra_terms.push_back({search.term, theta[0]});
       break;
-    }
   }
 }
 

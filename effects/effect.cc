@@ -38,6 +38,13 @@ constexpr EffectInfo kMissingTermInfo = {
     EffectKind::kMissingTerm, "missing_term", "coefficient",
     "a term coefficient x TERM missing from one state's derivative (beyond the catalogue)"};
 
+// The effect called `name`, in the catalogue or missing_term; nullptr for none.
+const EffectInfo* FindInfo(const std::string& name) {
+  for (const EffectInfo& e : kCatalogue)
+    if (e.name == name) return &e;
+  return name == kMissingTermInfo.name ? &kMissingTermInfo : nullptr;
+}
+
 std::string KnownNames() {
   std::string names;
   for (const EffectInfo& e : kCatalogue) names += (names.empty() ? "" : ", ") + std::string(e.name);
@@ -120,10 +127,7 @@ Effect ParseEffect(const std::string& full_spec, uint64_t seed) {
   }
   const auto eq = spec.find('=');
   const std::string name = spec.substr(0, eq);
-  const EffectInfo* info = nullptr;
-  for (const EffectInfo& e : kCatalogue)
-    if (e.name == name) info = &e;
-  if (name == kMissingTermInfo.name) info = &kMissingTermInfo;
+  const EffectInfo* info = FindInfo(name);
   if (info == nullptr)
     throw InputError(where + "unknown effect '" + name + "' (known: " + KnownNames() + ")");
   if (eq == std::string::npos) throw InputError(where + "expected NAME=VALUE");
@@ -202,43 +206,41 @@ Effect EffectFromJson(const nlohmann::json& value) {
       !value.contains("parameters") || !value.at("parameters").is_object())
     throw InputError("an effect is {\"effect\": NAME, \"parameters\": {NAME: NUMBER, ...}}");
   const std::string name = value.at("effect").get<std::string>();
-  std::vector<EffectInfo> known(kCatalogue.begin(), kCatalogue.end());
-  known.push_back(kMissingTermInfo);
-  for (const EffectInfo& e : known) {
-    if (e.name != name) continue;
-    Effect effect{e.kind, {}};
-    for (const auto& [key, v] : value.at("parameters").items()) {
-      if (!v.is_number() || !std::isfinite(v.get<double>()))
-        throw InputError("effect " + name + ": parameter '" + key + "' is not a finite number");
-      effect.parameters[key] = v.get<double>();
-    }
-    const std::vector<std::string> needed =
-        e.kind == EffectKind::kCurrent ? std::vector<std::string>{"current_north", "current_east"}
-                                       : std::vector<std::string>{std::string(e.main_parameter)};
-    for (const std::string& n : needed)
-      if (!effect.parameters.contains(n))
-        throw InputError("effect " + name + ": no parameter '" + n + "'");
-    if (value.contains("inputs")) {
-      const nlohmann::json& in = value.at("inputs");
-      bool names = in.is_array() && !in.empty();
-      for (const auto& i : in) names = names && i.is_string() && !i.get<std::string>().empty();
-      if (!names) throw InputError("effect " + name + ": \"inputs\" is a list of input names");
-      if (!OnInputs(e.kind))
-        throw InputError("effect " + name + ": acts on the whole vessel, it takes no \"inputs\"");
-      effect.inputs = in.get<std::vector<std::string>>();
-    }
-    if (e.kind == EffectKind::kMissingTerm) {
-      for (const char* key : {"state", "term"})
-        if (!value.contains(key) || !value.at(key).is_string() ||
-            value.at(key).get<std::string>().empty())
-          throw InputError("effect missing_term: \"" + std::string(key) + "\" is not a name");
-      effect.state = value.at("state").get<std::string>();
-      effect.term = value.at("term").get<std::string>();
-      CheckTerm(effect.term, "effect ");
-    }
-    return effect;
+  const EffectInfo* info = FindInfo(name);
+  if (info == nullptr)
+    throw InputError("unknown effect '" + name + "' (known: " + KnownNames() + ")");
+  const EffectInfo& e = *info;
+  Effect effect{e.kind, {}};
+  for (const auto& [key, v] : value.at("parameters").items()) {
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      throw InputError("effect " + name + ": parameter '" + key + "' is not a finite number");
+    effect.parameters[key] = v.get<double>();
   }
-  throw InputError("unknown effect '" + name + "' (known: " + KnownNames() + ")");
+  const std::vector<std::string> needed =
+      e.kind == EffectKind::kCurrent ? std::vector<std::string>{"current_north", "current_east"}
+                                     : std::vector<std::string>{std::string(e.main_parameter)};
+  for (const std::string& n : needed)
+    if (!effect.parameters.contains(n))
+      throw InputError("effect " + name + ": no parameter '" + n + "'");
+  if (value.contains("inputs")) {
+    const nlohmann::json& in = value.at("inputs");
+    bool names = in.is_array() && !in.empty();
+    for (const auto& i : in) names = names && i.is_string() && !i.get<std::string>().empty();
+    if (!names) throw InputError("effect " + name + ": \"inputs\" is a list of input names");
+    if (!OnInputs(e.kind))
+      throw InputError("effect " + name + ": acts on the whole vessel, it takes no \"inputs\"");
+    effect.inputs = in.get<std::vector<std::string>>();
+  }
+  if (e.kind == EffectKind::kMissingTerm) {
+    for (const char* key : {"state", "term"})
+      if (!value.contains(key) || !value.at(key).is_string() ||
+          value.at(key).get<std::string>().empty())
+        throw InputError("effect missing_term: \"" + std::string(key) + "\" is not a name");
+    effect.state = value.at("state").get<std::string>();
+    effect.term = value.at("term").get<std::string>();
+    CheckTerm(effect.term, "effect ");
+  }
+  return effect;
 }
 
 std::vector<Effect> EffectsOfFile(const std::string& path) {

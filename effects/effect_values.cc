@@ -25,8 +25,9 @@ uint32_t InputMask(const Effect& e, const std::vector<std::string>& input_names)
   return mask;
 }
 
-ExtraTerm<double> ResolveTerm(const Effect& e, const std::vector<std::string>& state_names,
-                              const std::vector<std::string>& input_names) {
+std::shared_ptr<const ResolvedTerm> ResolveTerm(const Effect& e,
+                                                const std::vector<std::string>& state_names,
+                                                const std::vector<std::string>& input_names) {
   auto index = [](const std::vector<std::string>& names, const std::string& name) {
     return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
   };
@@ -36,25 +37,24 @@ ExtraTerm<double> ResolveTerm(const Effect& e, const std::vector<std::string>& s
       for (const std::string& n : *names) list += (list.empty() ? "" : ", ") + n;
     return list.empty() ? std::string("none given") : list;
   };
-  ExtraTerm<double> t;
-  t.state = index(state_names, e.state);
-  if (t.state == static_cast<int>(state_names.size()))
+  auto t = std::make_shared<ResolvedTerm>();
+  t->state = index(state_names, e.state);
+  if (t->state == static_cast<int>(state_names.size()))
     throw InputError("effect missing_term: '" + e.state +
                      "' is not a state of the vessel (states and inputs: " + known() + ")");
-  t.term = std::make_shared<const Expression>(Expression::Parse(e.term, "missing_term"));
-  for (const std::string& name : t.term->Variables()) {
+  t->term = Expression::Parse(e.term, "missing_term");
+  for (const std::string& name : t->term.Variables()) {
     const int s = index(state_names, name), i = index(input_names, name);
     if (s < static_cast<int>(state_names.size()))
-      t.slots.push_back(s);
+      t->slots.push_back(s);
     else if (i < static_cast<int>(input_names.size()))
-      t.slots.push_back(static_cast<int>(state_names.size()) + i);
+      t->slots.push_back(static_cast<int>(state_names.size()) + i);
     else
       throw InputError("effect missing_term: the term '" + e.term + "' uses '" + name +
                        "', not a state or input of the vessel (" + known() + ")");
   }
-  t.coefficient = e.at("coefficient");
-  t.state_name = e.state;
-  t.text = e.term;
+  t->state_name = e.state;
+  t->text = e.term;
   return t;
 }
 
@@ -62,9 +62,9 @@ void SetEffect(const Effect& e, EffectValues<double>& v,
                const std::vector<std::string>& input_names,
                const std::vector<std::string>& state_names) {
   if (e.kind == EffectKind::kMissingTerm) {
-    ExtraTerm<double> t = ResolveTerm(e, state_names, input_names);
+    ExtraTerm<double> t{ResolveTerm(e, state_names, input_names), e.at("coefficient")};
     std::erase_if(v.extra_terms, [&](const ExtraTerm<double>& o) {
-      return o.state_name == t.state_name && o.text == t.text;
+      return o.resolved->state_name == e.state && o.resolved->text == e.term;
     });
     v.extra_terms.push_back(std::move(t));
     return;

@@ -16,20 +16,27 @@
 
 namespace usvid {
 
-// A missing term resolved against a vessel: d(state)/dt += coefficient * term(x, u).
+// A missing term resolved against a vessel: which state's derivative gains it, and where its
+// variables are in the plant's states and inputs.
+struct ResolvedTerm {
+  int state = 0;                 // index into the vessel's states
+  Expression term;               // in the vessel's channel names
+  std::vector<int> slots;        // per term variable: a state index, or kStates + an input index
+  std::string state_name, text;  // as the effect names them (a term given twice replaces)
+};
+
+// d(state)/dt += coefficient * term(x, u); the resolved part is shared by every scalar type.
 template <typename T>
 struct ExtraTerm {
-  int state = 0;                           // index into the vessel's states
-  std::shared_ptr<const Expression> term;  // in the vessel's channel names
-  std::vector<int> slots;  // per term variable: a state index, or kStates + an input index
+  std::shared_ptr<const ResolvedTerm> resolved;
   T coefficient = T(0);
-  std::string state_name, text;  // as the effect names them (to replace a term given twice)
 };
 
 // `effect` (a missing_term) resolved against the vessel's state and input names; InputError
 // naming a channel that is neither.
-ExtraTerm<double> ResolveTerm(const Effect& effect, const std::vector<std::string>& state_names,
-                              const std::vector<std::string>& input_names);
+std::shared_ptr<const ResolvedTerm> ResolveTerm(const Effect& effect,
+                                                const std::vector<std::string>& state_names,
+                                                const std::vector<std::string>& input_names);
 
 template <typename T>
 struct EffectValues {
@@ -88,7 +95,7 @@ EffectValues<T> CastValues(const EffectValues<double>& e) {
   out.saturation_inputs = e.saturation_inputs;
   out.bias_input = e.bias_input;
   for (const ExtraTerm<double>& t : e.extra_terms)
-    out.extra_terms.push_back({t.state, t.term, t.slots, T(t.coefficient), t.state_name, t.text});
+    out.extra_terms.push_back({t.resolved, T(t.coefficient)});
   return out;
 }
 

@@ -81,12 +81,12 @@ struct Plant {
     const Environment<T> env{e.current_north, e.current_east};
     V::template Derivative<T>(x, u_applied.data(), p_eff, env, dx);
     if constexpr (kSurgeState >= 0) dx[kSurgeState] += e.surge_acceleration;
-    for (const ExtraTerm<T>& term : e.extra_terms) {
+    for (const ExtraTerm<T>& extra : e.extra_terms) {
+      const ResolvedTerm& t = *extra.resolved;
       std::array<T, V::kStates + V::kInputs> values;
-      for (size_t i = 0; i < term.slots.size(); ++i)
-        values[i] =
-            term.slots[i] < V::kStates ? x[term.slots[i]] : u_applied[term.slots[i] - V::kStates];
-      dx[term.state] += term.coefficient * term.term->template EvaluateT<T>(values.data());
+      for (size_t i = 0; i < t.slots.size(); ++i)
+        values[i] = t.slots[i] < V::kStates ? x[t.slots[i]] : u_applied[t.slots[i] - V::kStates];
+      dx[t.state] += extra.coefficient * t.term.template EvaluateT<T>(values.data());
     }
   }
 

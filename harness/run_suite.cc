@@ -172,6 +172,11 @@ std::string TestManeuverSpec(const Suite& suite, const std::string& test) {
   return "";
 }
 
+// The closed_loop of a row whose test was not replayed, saying why.
+nlohmann::json NotReplayed(const Suite& suite, const std::string& test, const std::string& why) {
+  return {{"maneuver", TestManeuverSpec(suite, test)}, {"status", "not replayed: " + why}};
+}
+
 // One cell: the job's fit, scored on every test maneuver. Never throws: a failure is a row.
 std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                                const std::map<std::string, Dataset>& train_sets,
@@ -206,8 +211,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
     row.inputs = InputsOf(model);
     if (!failure.empty()) {
       row.status = failure;
-      row.closed_loop = {{"maneuver", TestManeuverSpec(suite, test)},
-                         {"status", "not replayed: the fit failed, there is no model"}};
+      row.closed_loop = NotReplayed(suite, test, "the fit failed, there is no model");
       rows.push_back(row);
       continue;
     }
@@ -249,8 +253,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       row.closed_loop = ClosedLoopScore(model, job.vessel, TestManeuverSpec(suite, test), held);
     } catch (const std::exception& e) {
       row.status = std::string("failed: ") + e.what();
-      row.closed_loop = {{"maneuver", TestManeuverSpec(suite, test)},
-                         {"status", "not replayed: the model's evaluation failed"}};
+      row.closed_loop = NotReplayed(suite, test, "the model's evaluation failed");
     }
     rows.push_back(row);
   }

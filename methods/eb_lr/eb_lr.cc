@@ -131,9 +131,9 @@ std::vector<Span> TransientRuns(Eigen::Index n, const std::vector<Span>& windows
 }
 
 // sigma from the steady windows, each corrected by what it still accelerates under the mass.
-// With the thrust's loss, k is one more column, the window's mean of tau U: at a held command
+// With the thrust's loss, k is one more column, the window's mean of q U: at a held command
 // the windows of a step grid reach several speeds (straight and in turns of each yaw step), so
-// the steady states separate k tau U from sigma(U, r). The transients cannot: near a steady
+// the steady states separate k q U from sigma(U, r). The transients cannot: near a steady
 // state the loss scales the force as (1 - k U) / m_U(U), which a mass slope nearly matches.
 void FitSigma(const Signals& s, int i, const std::vector<Span>& windows, Equation& eq) {
   const Basis& basis = *eq.sigma_basis;
@@ -170,7 +170,7 @@ void FitSigma(const Signals& s, int i, const std::vector<Span>& windows, Equatio
 }
 
 // M from the transient pieces: sum_j c_j int mu_j dx = int (tau - sigma) dt, sigma with the
-// thrust's loss k tau U.
+// thrust's loss k q U.
 void FitMass(const Signals& s, int i, const std::vector<Span>& pieces, Equation& eq) {
   const Basis& basis = *eq.mass_basis;
   const auto cols = static_cast<Eigen::Index>(basis.size());
