@@ -1,4 +1,4 @@
-// usvid simulate --vessel V --maneuver M [--effect NAME=VALUE ...] [--noise S] [--seed N]
+// usvid simulate --vessel V --maneuver M [--effect NAME=VALUE[@INPUT] ...] [--noise S] [--seed N]
 //                [--rates imu=50,gps=5,jet=10] --out F.csv          (writes F.truth.json too)
 // usvid simulate --vessel V --inputs IN.csv [--dt H] --out F.csv
 
@@ -152,7 +152,8 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--effect", o->effects,
                   "NAME=VALUE, repeatable: input_delay, current (SPEED[:DIR_DEG]), actuator_lag, "
                   "input_bias, sensor_bias, inertia, damping, saturation, surge_force (m/s^2), "
-                  "resistance");
+                  "resistance; NAME=VALUE@INPUT for input_delay, actuator_lag, input_bias or "
+                  "saturation on one input; missing_term=COEFFICIENT:STATE:TERM");
   cmd->add_option("--noise", o->noise,
                   "Gaussian noise on every measured channel, as a fraction of its standard "
                   "deviation (0.01 = 1 %)");
