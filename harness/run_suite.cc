@@ -44,9 +44,10 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
   int known = 0;
   row.terms = 0;
   if (!model.contains("equations")) {
-    // A vessel model: its complexity is what was fitted (refit's parameters, diagnose's effects).
+    // A vessel model: its complexity is what was fitted (refit's parameters, and diagnose's
+    // effects or hybrid's missing terms).
     if (model.contains("refit")) row.terms = static_cast<int>(model["refit"]["free"].size());
-    if (model.contains("effects")) row.terms = static_cast<int>(model["effects"].size());
+    if (model.contains("effects")) row.terms += static_cast<int>(model["effects"].size());
     return;
   }
   for (const auto& [state, eq] : model.at("equations").items()) {
@@ -121,6 +122,7 @@ IdentifyRequest RequestFor(const FitJob& job) {
   set("horizon_s", r.horizon_s);
   set("constant_iterations", r.constant_iterations);
   set("restarts", r.restarts);
+  set("max_terms", r.hybrid_terms);
   r.fit_mode = o.value("fit", r.fit_mode);
   r.segment_s = o.value("segment_s", r.segment_s);
   r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)

@@ -51,6 +51,7 @@ const std::map<std::string, OptionKind>& MethodOptions() {
       {"rate", OptionKind::kNumber},
       {"prior_sd", OptionKind::kNumber},
       {"refit_params", OptionKind::kNames},
+      {"max_terms", OptionKind::kCount},
       {"states", OptionKind::kNames},
       {"inputs", OptionKind::kNames},
       {"causes", OptionKind::kCount},
@@ -98,10 +99,10 @@ void CheckMethodOptions(const nlohmann::json& options, const std::string& where)
   }
 }
 
-const std::set<std::string> kMethods = {"gp",    "sindy",   "eb-lr",    "fossen-ceres",
-                                        "refit", "nominal", "diagnose", "nomoto"};
+const std::set<std::string> kMethods = {"gp",     "sindy",   "eb-lr",    "fossen-ceres", "refit",
+                                        "hybrid", "nominal", "diagnose", "nomoto"};
 constexpr const char* kKnownMethods =
-    "gp, sindy, eb-lr, fossen-ceres, refit, nominal, diagnose, nomoto";
+    "gp, sindy, eb-lr, fossen-ceres, refit, hybrid, nominal, diagnose, nomoto";
 
 std::vector<SuiteData> DataList(const nlohmann::json& v, const std::string& file,
                                 const std::string& where) {

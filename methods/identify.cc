@@ -17,6 +17,7 @@
 #include "methods/gp/gp_identify.h"
 #include "methods/gp/term_selection.h"
 #include "methods/nomoto/nomoto.h"
+#include "methods/hybrid/hybrid.h"
 #include "methods/refit/refit.h"
 #include "methods/regime_features.h"
 #include "methods/sindy/sindy.h"
@@ -131,47 +132,109 @@ nlohmann::json NominalModel(const Dataset& data, const IdentifyRequest& o) {
           {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", 0.0}}}};
 }
 
-// refit: the vessel's own coefficients (methods/refit/refit.h); a vessel model, no equations.
-nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
-  if (o.vessel.empty()) throw InputError("--method refit: needs --vessel");
-  const VesselInfo& info = FindVessel(o.vessel).Info();
+// The parameters of a vessel fit, and how it went (refit's and hybrid's model.json).
+nlohmann::json RefitParameters(const RefitResult& fit) {
+  nlohmann::json params = nlohmann::json::object();
+  for (size_t i = 0; i < fit.names.size(); ++i) params[fit.names[i]] = fit.params[i];
+  return params;
+}
+
+nlohmann::json RefitDetails(const RefitResult& fit, double prior_sd) {
+  nlohmann::json start = nlohmann::json::object(), ratio = nlohmann::json::object();
+  for (size_t i = 0; i < fit.names.size(); ++i) start[fit.names[i]] = fit.start[i];
+  for (const std::string& n : fit.free) {
+    const size_t i = std::find(fit.names.begin(), fit.names.end(), n) - fit.names.begin();
+    ratio[n] = fit.start[i] != 0.0 ? fit.params[i] / fit.start[i] : fit.params[i];
+  }
+  return {{"free", fit.free},
+          {"ratio_to_start", ratio},
+          {"start", start},
+          {"segment_s", fit.segment_s},
+          {"prior_sd", prior_sd},
+          {"segments", fit.segments},
+          {"termination", fit.termination},
+          {"converged", fit.converged},
+          {"initial_cost", fit.initial_cost},
+          {"final_cost", fit.final_cost},
+          {"iterations", fit.iterations}};
+}
+
+RefitOptions RefitOptionsFor(const IdentifyRequest& o) {
   RefitOptions ro;
   ro.free = o.refit_params;
   ro.segment_s = o.segment_s;
   ro.prior_sd = o.prior_sd;
   ro.threads = 1;  // deterministic, as for fossen-ceres
+  return ro;
+}
+
+// refit: the vessel's own coefficients (methods/refit/refit.h); a vessel model, no equations.
+nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
+  if (o.vessel.empty()) throw InputError("--method refit: needs --vessel");
+  const VesselInfo& info = FindVessel(o.vessel).Info();
   const RefitResult fit = RefitVessel(
-      o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, ro);
+      o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params,
+      RefitOptionsFor(o));
   Log(log, "refit of " + std::to_string(fit.free.size()) + " parameters on " +
                std::to_string(fit.segments) + " segments: " + fit.termination);
-  nlohmann::json params = nlohmann::json::object(), start = nlohmann::json::object();
-  for (size_t i = 0; i < fit.names.size(); ++i) {
-    params[fit.names[i]] = fit.params[i];
-    start[fit.names[i]] = fit.start[i];
-  }
-  nlohmann::json ratio = nlohmann::json::object();
-  for (const std::string& n : fit.free) {
-    const size_t i = std::find(fit.names.begin(), fit.names.end(), n) - fit.names.begin();
-    ratio[n] = fit.start[i] != 0.0 ? fit.params[i] / fit.start[i] : fit.params[i];
-  }
   return {{"method", "refit"},
           {"vessel", o.vessel},
           {"states", fit.channels},
           {"inputs", info.inputs},
-          {"parameters", params},
-          {"refit",
-           {{"free", fit.free},
-            {"ratio_to_start", ratio},
-            {"start", start},
-            {"segment_s", fit.segment_s},
-            {"prior_sd", o.prior_sd},
-            {"segments", fit.segments},
-            {"termination", fit.termination},
-            {"converged", fit.converged},
-            {"initial_cost", fit.initial_cost},
-            {"final_cost", fit.final_cost},
-            {"iterations", fit.iterations}}},
+          {"parameters", RefitParameters(fit)},
+          {"refit", RefitDetails(fit, o.prior_sd)},
           {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", fit.seconds}}}};
+}
+
+// hybrid: the vessel refitted with the missing terms its residual proposes and held-out
+// simulation keeps (methods/hybrid/hybrid.h); a vessel model whose effects are those terms.
+nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o,
+                                   const Logger& log) {
+  if (o.vessel.empty()) throw InputError("--method hybrid: needs --vessel");
+  const VesselInfo& info = FindVessel(o.vessel).Info();
+  hybrid::HybridOptions ho;
+  ho.refit = RefitOptionsFor(o);
+  ho.refit.threads = o.threads > 0 ? o.threads : 1;  // proposals in parallel, each one thread
+  ho.max_terms = o.hybrid_terms.value_or(ho.max_terms);
+  const hybrid::HybridResult h = hybrid::IdentifyHybrid(
+      o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, ho);
+  nlohmann::json proposals = nlohmann::json::array(), rounds = nlohmann::json::array();
+  for (const hybrid::TermProposal& p : h.proposals) {
+    nlohmann::json j = EffectToJson(p.term);
+    j["err"] = p.err;
+    proposals.push_back(j);
+  }
+  for (const hybrid::SelectionRound& r : h.rounds) {
+    nlohmann::json errors = nlohmann::json::object();
+    for (size_t j = 0; j < r.heldout_error.size(); ++j)
+      if (std::isfinite(r.heldout_error[j]))
+        errors[EffectLabel(h.proposals[j].term)] = r.heldout_error[j];
+    rounds.push_back({{"heldout_error", errors},
+                      {"likelihood_ratio", r.likelihood_ratio},
+                      {"chosen", r.chosen >= 0 ? EffectLabel(h.proposals[r.chosen].term)
+                                               : std::string("none")}});
+  }
+  nlohmann::json effects = nlohmann::json::array();
+  for (const Effect& e : h.fit.terms) effects.push_back(EffectToJson(e));
+  Log(log, "hybrid: " + std::to_string(h.fit.terms.size()) + " of " +
+               std::to_string(h.proposals.size()) + " proposed terms kept; held-out error " +
+               std::to_string(h.vessel_heldout_error) + " -> " + std::to_string(h.heldout_error));
+  return {{"method", "hybrid"},
+          {"vessel", o.vessel},
+          {"states", h.fit.channels},
+          {"inputs", info.inputs},
+          {"parameters", RefitParameters(h.fit)},
+          {"effects", effects},
+          {"refit", RefitDetails(h.fit, o.prior_sd)},
+          {"hybrid",
+           {{"heldout_fraction", ho.heldout},
+            {"proposals", proposals},
+            {"rounds", rounds},
+            {"vessel_heldout_error", h.vessel_heldout_error},
+            {"effective_samples", h.effective_samples},
+            {"critical_ratio", ho.critical_ratio},
+            {"heldout_error", h.heldout_error}}},
+          {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", h.seconds}}}};
 }
 
 // GP's options: the preset's, with what the request sets in their place; throws InputError
@@ -248,16 +311,17 @@ nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const
   AddSpeedAndCourse(data);
   AddForces(data, o.preprocess.forces);
   if (o.method != "gp" && o.method != "sindy" && o.method != "eb-lr" &&
-      o.method != "fossen-ceres" && o.method != "refit" && o.method != "nominal" &&
-      o.method != "nomoto")
-    throw InputError(
-        "--method '" + o.method +
-        "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit, nominal, nomoto)");
+      o.method != "fossen-ceres" && o.method != "refit" && o.method != "hybrid" &&
+      o.method != "nominal" && o.method != "nomoto")
+    throw InputError("--method '" + o.method +
+                     "': unknown method (known: gp, sindy, eb-lr, fossen-ceres, refit, hybrid, "
+                     "nominal, nomoto)");
   if (o.method != "gp" && o.method != "sindy" && o.features != "auto")
     throw InputError("--features: only gp and sindy take regime features");
   if (o.fit_mode != "simulation" && o.fit_mode != "equation")
     throw InputError("--fit '" + o.fit_mode + "': unknown (known: simulation, equation)");
   if (o.method == "refit") return IdentifyRefit(data, o, log);
+  if (o.method == "hybrid") return IdentifyHybridModel(data, o, log);
   if (o.method == "nominal") return NominalModel(data, o);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> states = o.states, variables = o.states, inputs = o.inputs;

@@ -16,7 +16,7 @@
 namespace usvid {
 
 struct IdentifyRequest {
-  std::string method;  // gp, sindy, eb-lr, fossen-ceres, refit
+  std::string method;  // gp, sindy, eb-lr, fossen-ceres, refit, hybrid, nominal, nomoto
   std::string vessel;  // states and inputs from it (when not given)
   std::vector<std::string> states, inputs;
   std::string data_name;  // for model.json's train.data
@@ -47,6 +47,8 @@ struct IdentifyRequest {
   std::vector<std::string> refit_params;
   double prior_sd = 0.5;
   std::vector<double> start_params;  // empty: the vessel's defaults
+  // hybrid (methods/hybrid/hybrid.h); also the refit options above
+  std::optional<int> hybrid_terms;
 };
 
 // Throws InputError for an unknown method or a combination it cannot fit. `log` receives

@@ -43,6 +43,7 @@ VesselInfo InfoFor(std::vector<InputRole> roles, const Actuation& extra) {
   if constexpr (requires { V::kDerivesSpeedAndCourse; }) info.derived = {"U", "chi"};
   if constexpr (requires { V::kTransportDelay; }) info.transport_delay_s = V::kTransportDelay;
   if constexpr (requires { V::kLength; }) info.length_m = V::kLength;
+  if constexpr (requires { V::kSpeedScaledForces; }) info.speed_scaled_forces = true;
 
   Actuation& a = info.actuation;
   a = extra;

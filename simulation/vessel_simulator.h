@@ -29,6 +29,10 @@ struct VesselInfo {
   Actuation actuation;
   double transport_delay_s = 0.0;
   double length_m = 0.0;  // hull length where the model has one (Froude number, time scale L/U)
+  // The model writes its hydrodynamic forces as 1/2 rho L d U^2 times coefficients of the
+  // nondimensional v' = v/U, r' = r L/U and the inputs (MMG): what it lacks is of that form too
+  // (the hybrid method's proposals, methods/hybrid/term_proposals.h).
+  bool speed_scaled_forces = false;
 
   int StateIndex(const std::string& name) const;  // -1 when absent
   // Parameters by name over the defaults; throws InputError on an unknown name.

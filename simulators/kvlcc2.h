@@ -75,6 +75,7 @@ struct Kvlcc2 {
   // them lets the fit trade one against another (docs/real-data.md).
   static constexpr std::array<std::string_view, 5> kRefitParams = {"R_0", "Y_v", "Y_r", "N_v",
                                                                    "N_r"};
+  static constexpr bool kSpeedScaledForces = true;  // MMG: forces 1/2 rho L d U^2 X'(v', r')
   static constexpr double kRunInS = 7200.0;  // [s] from rest to steady speed (closed_loop.h)
   static constexpr double kEps = 1e-6;       // [m/s] keeps U and J_P finite at rest
 

@@ -58,12 +58,15 @@ void AddIdentifyCommand(CLI::App& app) {
                   "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge), "
                   "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data), fossen-ceres "
                   "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map), "
-                  "refit (the --vessel's own coefficients, Ceres multiple shooting), nominal (the "
+                  "refit (the --vessel's own coefficients, Ceres multiple shooting), hybrid (refit "
+                  "plus the missing terms its residual proposes and held-out simulation keeps), "
+                  "nominal (the "
                   "--vessel as it is, a baseline), nomoto (first-order Nomoto heading model, "
                   "T r' + r = K (delta - delta0))")
       ->required()
       ->check(
-          CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit", "nominal", "nomoto"}));
+          CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit", "hybrid", "nominal",
+                         "nomoto"}));
   cmd->add_option("--data", o->data, "Training data CSV")->required();
   cmd->add_option("--vessel", o->request.vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');
@@ -111,19 +114,22 @@ void AddIdentifyCommand(CLI::App& app) {
                   "simulation error (simulation, default), or by equation error alone")
       ->check(CLI::IsMember({"simulation", "equation"}));
   cmd->add_option("--segment", o->request.segment_s,
-                  "fossen-ceres, refit, nomoto: shooting segment length [s] (default: "
+                  "fossen-ceres, refit, hybrid, nomoto: shooting segment length [s] (default: "
                   "fossen-ceres 10 s, nomoto 30 s, refit 1.5 hull lengths of travel, at least "
                   "10 s)");
   cmd->add_option("--refit-params", o->request.refit_params,
-                  "refit: the parameters to fit (default: the vessel's damping group, for "
+                  "refit, hybrid: the parameters to fit (default: the vessel's damping group, for "
                   "kvlcc2 its 17 hull coefficients)")
       ->delimiter(',');
   cmd->add_option("--prior-sd", o->request.prior_sd,
-                  "refit: prior standard deviation of each free parameter, relative to its "
+                  "refit, hybrid: prior standard deviation of each free parameter, relative to its "
                   "start")
       ->capture_default_str();
+  cmd->add_option("--max-terms", o->request.hybrid_terms,
+                  "hybrid: most missing terms to add to the vessel (default 3)")
+      ->check(CLI::Range(0, 6));
   cmd->add_option("--params", o->params,
-                  "refit, nominal: starting parameters (JSON of name: value, or a model's "
+                  "refit, hybrid, nominal: starting parameters (JSON of name: value, or a model's "
                   "\"parameters\"); default the vessel's");
   cmd->add_flag("--robust", o->request.robust, "fossen-ceres: Huber loss");
   cmd->add_option("--out", o->out, "model.json to write")->required();

@@ -9,19 +9,49 @@
 #include "simulators/odin_hs.h"
 
 namespace usvid {
+namespace {
+
+// f.template operator()<V>() for the vessel type V named `vessel`: the vessels whose states
+// are all measured (odin-hs's actuator states are not).
+template <typename F>
+auto WithVesselType(const std::string& vessel, const std::string& what, F&& f) {
+  if (vessel == "kvlcc2") return f.template operator()<Kvlcc2>();
+  if (vessel == "odin3dof") return f.template operator()<Odin3Dof>();
+  if (vessel == "eb2dof") return f.template operator()<Eb2Dof>();
+  if (vessel == "msd") return f.template operator()<Msd>();
+  throw InputError(what + ": not available for vessel " + vessel +
+                   " (its actuator states are not measured)");
+}
+
+const VesselInfo& InfoWithParams(const std::string& vessel, size_t params, const char* what) {
+  const VesselInfo& info = FindVessel(vessel).Info();
+  if (params != info.params.size())
+    throw InputError(std::string(what) + ": " + std::to_string(params) + " values for vessel " +
+                     vessel + "'s " + std::to_string(info.params.size()) + " parameters");
+  return info;
+}
+
+}  // namespace
 
 RefitResult RefitVessel(const std::string& vessel, const Dataset& data,
                         const std::vector<double>& start, const RefitOptions& options) {
-  const VesselInfo& info = FindVessel(vessel).Info();
-  if (start.size() != info.params.size())
-    throw InputError("refit: " + std::to_string(start.size()) + " starting values for vessel " +
-                     vessel + "'s " + std::to_string(info.params.size()) + " parameters");
-  if (vessel == "kvlcc2") return refit::RefitTyped<Kvlcc2>(info, data, start, options);
-  if (vessel == "odin3dof") return refit::RefitTyped<Odin3Dof>(info, data, start, options);
-  if (vessel == "eb2dof") return refit::RefitTyped<Eb2Dof>(info, data, start, options);
-  if (vessel == "msd") return refit::RefitTyped<Msd>(info, data, start, options);
-  throw InputError("--method refit: not available for vessel " + vessel +
-                   " (its actuator states are not measured)");
+  const VesselInfo& info = InfoWithParams(vessel, start.size(), "refit");
+  return WithVesselType(vessel, "--method refit", [&]<Vessel V>() {
+    return refit::RefitTyped<V>(info, data, start, options);
+  });
+}
+
+double MeanSquaredError(const RefitResult& fit) {
+  return fit.residuals > 0 ? 2.0 * fit.final_cost / fit.residuals : 0.0;
+}
+
+std::map<std::string, Eigen::VectorXd> DerivativeResidual(const std::string& vessel,
+                                                          const Dataset& prepared,
+                                                          const std::vector<double>& params) {
+  const VesselInfo& info = InfoWithParams(vessel, params.size(), "derivative residual");
+  return WithVesselType(vessel, "the derivative residual", [&]<Vessel V>() {
+    return refit::DerivativeResidualTyped<V>(info, prepared, params);
+  });
 }
 
 }  // namespace usvid

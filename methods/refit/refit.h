@@ -9,12 +9,19 @@
 // standard deviation prior_sd around the start (a coefficient the data cannot see stays at its
 // published value instead of wandering). The model JSON it gives names the vessel and its
 // parameters; `usvid evaluate` free-runs it with the vessel itself.
+//
+// Missing terms (effects/effect.h, `missing_term`) may be fitted with the parameters: each adds
+// coefficient * term(x, u) to its state's derivative, the coefficient free (no prior) from its
+// given value; at most kMaxRefitTerms. The hybrid method (methods/hybrid) finds them.
 #pragma once
 
+#include <Eigen/Core>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "core/dataset.h"
+#include "effects/effect.h"
 
 namespace usvid {
 
@@ -25,24 +32,48 @@ struct RefitOptions {
   double prior_sd = 0.5;   // relative to the starting value
   int max_iterations = 100;
   int threads = 1;
+  std::vector<Effect> terms;  // missing_term effects, their coefficients fitted
+  // Only each segment's initial state is fitted, the parameters and terms held: the record's
+  // multiple-shooting error under a given model (a held-out score).
+  bool hold_model = false;
 };
+
+constexpr int kMaxRefitTerms = 6;
 
 struct RefitResult {
   std::vector<std::string> names;         // every parameter of the vessel, in order
   std::vector<double> start, params, sd;  // sd: 0 where not free or not available
   std::vector<std::string> free, channels;
+  std::vector<Effect> terms;  // the options' terms with their fitted coefficients
   bool covariance_ok = false;
   std::string termination;
   bool converged = false;
   double initial_cost = 0.0, final_cost = 0.0;
-  int iterations = 0, segments = 0;
+  int iterations = 0, segments = 0, residuals = 0;
   double segment_s = 0.0;
   double seconds = 0.0;
+  // With hold_model: the integrated autocorrelation time of the residuals [samples], 1 + 2 sum
+  // rho_k over the lags before rho first drops below 0.05 (at most 400), averaged over the
+  // channels: the residuals carry about residuals / correlation_time independent ones.
+  double correlation_time = 1.0;
 };
 
 // Throws InputError for an unknown vessel or parameter, or data without the vessel's inputs or
 // dynamic states.
 RefitResult RefitVessel(const std::string& vessel, const Dataset& data,
                         const std::vector<double>& start, const RefitOptions& options);
+
+// The mean squared normalised residual of a fit: 2 final_cost / residuals (the prior's part is
+// included; 0 with the parameters held).
+double MeanSquaredError(const RefitResult& fit);
+
+// What the vessel with `params` leaves unexplained in each dynamic state's derivative:
+//   d_s = s_dot - f_s(x, u; params)
+// at every row of preprocessed data (smoothed states and inputs, derivatives "<s>_dot"; the
+// kinematic states from the data where present, else 0). Throws InputError for an unknown
+// vessel or a missing channel.
+std::map<std::string, Eigen::VectorXd> DerivativeResidual(const std::string& vessel,
+                                                          const Dataset& prepared,
+                                                          const std::vector<double>& params);
 
 }  // namespace usvid

@@ -38,7 +38,7 @@ constexpr std::array<int, DynamicStates<V>()> DynamicIndices() {
 
 // One segment: rows [first, last] of the data simulated from the free dynamic states x0 (the
 // kinematic ones from the data); residuals (simulated - measured) / sd of every dynamic state
-// at every sampled row after the first.
+// at every sampled row after the first. The missing terms' coefficients are kappa * term_scale.
 template <Vessel V>
 struct RefitSegment {
   static constexpr int C = DynamicStates<V>();
@@ -49,12 +49,14 @@ struct RefitSegment {
   std::array<double, V::kStates> first;  // the data's first row (kinematic states used)
   std::array<double, C> sd;
   std::array<double, V::kParams> scale;
+  std::vector<std::shared_ptr<const ResolvedTerm>> terms;  // at most kMaxRefitTerms
+  std::array<double, kMaxRefitTerms> term_scale;
   double max_step;
 
   int Residuals() const { return static_cast<int>((times.size() - 1) * C); }
 
   template <typename T>
-  bool operator()(const T* theta, const T* x0, T* res) const {
+  bool operator()(const T* theta, const T* x0, const T* kappa, T* res) const {
     constexpr int N = Plant<V>::kStates;
     constexpr auto dyn = DynamicIndices<V>();
     std::array<T, V::kParams> p;
@@ -71,8 +73,11 @@ struct RefitSegment {
     std::array<double, V::kInputs> limits;
     limits.fill(INFINITY);
     std::vector<T> out(times.size() * N);
+    EffectValues<T> effects;
+    for (size_t j = 0; j < terms.size(); ++j)
+      effects.extra_terms.push_back({terms[j], kappa[j] * term_scale[j]});
     const size_t rows =
-        RolloutOpenLoop<V, T>(setup, start.data(), p.data(), EffectValues<T>{}, limits, out.data());
+        RolloutOpenLoop<V, T>(setup, start.data(), p.data(), effects, limits, out.data());
     int k = 0;
     for (size_t row = 1; row < times.size(); ++row) {
       const size_t use = std::min(row, rows - 1);  // a diverged run keeps its last state
@@ -97,6 +102,27 @@ struct RefitPrior {
     return true;
   }
 };
+
+// The integrated autocorrelation time [samples] of `r` (rows of `channels` values), averaged over
+// the channels (RefitResult::correlation_time).
+inline double CorrelationTime(const std::vector<double>& r, int channels) {
+  const Eigen::Index n = static_cast<Eigen::Index>(r.size()) / channels;
+  double total = 0.0;
+  for (int c = 0; c < channels; ++c) {
+    Eigen::VectorXd e(n);
+    for (Eigen::Index k = 0; k < n; ++k) e(k) = r[static_cast<size_t>(k * channels + c)];
+    e.array() -= e.mean();
+    const double var = e.squaredNorm();
+    double tau = 1.0;
+    for (Eigen::Index lag = 1; lag < std::min<Eigen::Index>(n / 4, 400) && var > 0; ++lag) {
+      const double rho = e.head(n - lag).dot(e.tail(n - lag)) / var;
+      if (rho < 0.05) break;
+      tau += 2.0 * rho;
+    }
+    total += tau;
+  }
+  return channels > 0 ? total / channels : 1.0;
+}
 
 template <Vessel V>
 RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
@@ -159,6 +185,21 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     scale[i] = start[i] != 0.0 ? std::abs(start[i]) : 1.0;
     theta[i] = start[i] / scale[i];
   }
+  // Missing terms: coefficients kappa_j * term_scale_j, kappa from 1 (or 0 for a zero start).
+  if (o.terms.size() > static_cast<size_t>(kMaxRefitTerms))
+    throw InputError("refit: at most " + std::to_string(kMaxRefitTerms) + " missing terms, not " +
+                     std::to_string(o.terms.size()));
+  std::vector<std::shared_ptr<const ResolvedTerm>> terms;
+  std::array<double, kMaxRefitTerms> kappa{}, term_scale;
+  term_scale.fill(1.0);
+  for (size_t j = 0; j < o.terms.size(); ++j) {
+    if (o.terms[j].kind != EffectKind::kMissingTerm)
+      throw InputError("refit: effect " + EffectLabel(o.terms[j]) + " is not a missing term");
+    terms.push_back(ResolveTerm(o.terms[j], info.states, info.inputs));
+    const double c = o.terms[j].at("coefficient");
+    term_scale[j] = c != 0.0 ? std::abs(c) : 1.0;
+    kappa[j] = c / term_scale[j];
+  }
   const double dt = data.rows() > 1 ? data.duration() / static_cast<double>(data.rows() - 1) : 1.0;
   // Segments of segment_s seconds (the last may be shorter; at least two rows each).
   std::vector<std::pair<Eigen::Index, Eigen::Index>> bounds;
@@ -191,22 +232,32 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     for (int c = 0; c < C; ++c) x0[j][c] = seg->first[dyn[c]];
     seg->sd = sd;
     seg->scale = scale;
+    seg->terms = terms;
+    seg->term_scale = term_scale;
     const int residuals = seg->Residuals();
+    result.residuals += residuals;
     problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<RefitSegment<V>, ceres::DYNAMIC, V::kParams, C>(seg,
-                                                                                        residuals),
-        nullptr, theta.data(), x0[j].data());
+        new ceres::AutoDiffCostFunction<RefitSegment<V>, ceres::DYNAMIC, V::kParams, C,
+                                        kMaxRefitTerms>(seg, residuals),
+        nullptr, theta.data(), x0[j].data(), kappa.data());
   }
   problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RefitPrior<V>, V::kParams, V::kParams>(
                                new RefitPrior<V>{free, o.prior_sd}),
                            nullptr, theta.data());
   std::vector<int> held;
   for (int i = 0; i < V::kParams; ++i)
-    if (!free[i]) held.push_back(i);
+    if (!free[i] || o.hold_model) held.push_back(i);
   if (held.size() == static_cast<size_t>(V::kParams))
     problem.SetParameterBlockConstant(theta.data());
   else if (!held.empty())
     problem.SetManifold(theta.data(), new ceres::SubsetManifold(V::kParams, held));
+  std::vector<int> unused;
+  for (int j = o.hold_model ? 0 : static_cast<int>(terms.size()); j < kMaxRefitTerms; ++j)
+    unused.push_back(j);
+  if (unused.size() == static_cast<size_t>(kMaxRefitTerms))
+    problem.SetParameterBlockConstant(kappa.data());
+  else if (!unused.empty())
+    problem.SetManifold(kappa.data(), new ceres::SubsetManifold(kMaxRefitTerms, unused));
 
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
@@ -224,10 +275,55 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   result.final_cost = summary.final_cost;
   result.iterations = static_cast<int>(summary.iterations.size());
   result.segments = static_cast<int>(bounds.size());
+  if (o.hold_model) {
+    std::vector<double> r;
+    problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, &r, nullptr, nullptr);
+    r.resize(static_cast<size_t>(result.residuals));  // the segments' (the prior's are last)
+    result.correlation_time = CorrelationTime(r, C);
+  }
   result.params.resize(V::kParams);
   result.sd.assign(V::kParams, 0.0);
   for (int i = 0; i < V::kParams; ++i) result.params[i] = theta[i] * scale[i];
+  result.terms = o.terms;
+  for (size_t j = 0; j < terms.size(); ++j)
+    result.terms[j].parameters["coefficient"] = kappa[j] * term_scale[j];
   return result;
+}
+
+template <Vessel V>
+std::map<std::string, Eigen::VectorXd> DerivativeResidualTyped(const VesselInfo& info,
+                                                               const Dataset& data,
+                                                               const std::vector<double>& params) {
+  constexpr int C = DynamicStates<V>();
+  constexpr auto dyn = DynamicIndices<V>();
+  std::array<const Eigen::VectorXd*, V::kStates> x_col{};
+  std::array<const Eigen::VectorXd*, V::kInputs> u_col{};
+  std::array<const Eigen::VectorXd*, C> dot_col{};
+  auto need = [&](const std::string& name) {
+    if (!data.Has(name))
+      throw InputError(data.SourcePrefix() + "the residual of " + info.name + " needs column '" +
+                       name + "'");
+    return &data[name];
+  };
+  for (int i = 0; i < V::kStates; ++i) {
+    const std::string name(V::kStateNames[i]);
+    x_col[i] = IsPositionOrHeading(name) ? (data.Has(name) ? &data[name] : nullptr) : need(name);
+  }
+  for (int i = 0; i < V::kInputs; ++i) u_col[i] = need(std::string(V::kInputNames[i]));
+  for (int c = 0; c < C; ++c) dot_col[c] = need(std::string(V::kStateNames[dyn[c]]) + "_dot");
+  std::map<std::string, Eigen::VectorXd> out;
+  for (int c = 0; c < C; ++c) out[std::string(V::kStateNames[dyn[c]])].resize(data.rows());
+  std::array<double, V::kStates> x, dx;
+  std::array<double, V::kInputs> u;
+  for (Eigen::Index k = 0; k < data.rows(); ++k) {
+    for (int i = 0; i < V::kStates; ++i) x[i] = x_col[i] != nullptr ? (*x_col[i])(k) : 0.0;
+    for (int i = 0; i < V::kInputs; ++i) u[i] = (*u_col[i])(k);
+    V::template Derivative<double>(x.data(), u.data(), params.data(), Environment<double>{},
+                                   dx.data());
+    for (int c = 0; c < C; ++c)
+      out[std::string(V::kStateNames[dyn[c]])](k) = (*dot_col[c])(k) - dx[dyn[c]];
+  }
+  return out;
 }
 
 }  // namespace usvid::refit

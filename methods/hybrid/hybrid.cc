@@ -1,0 +1,149 @@
+#include "methods/hybrid/hybrid.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "preprocessing/pipeline.h"
+#include "simulation/segment_length.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid::hybrid {
+namespace {
+
+constexpr double kNoScore = std::numeric_limits<double>::infinity();
+
+// Rows [0, split) or [split, end) of `data`.
+Dataset Part(const Dataset& data, Eigen::Index split, bool first) {
+  std::vector<bool> keep(static_cast<size_t>(data.rows()));
+  for (Eigen::Index k = 0; k < data.rows(); ++k) keep[k] = (k < split) == first;
+  Dataset part = data;
+  part.KeepRows(keep);
+  return part;
+}
+
+// The held-out multiple-shooting score of the vessel with `fit`'s parameters and terms.
+RefitResult HeldoutScore(const std::string& vessel, const Dataset& heldout,
+                         const RefitResult& fit, const RefitOptions& refit) {
+  RefitOptions o = refit;
+  o.hold_model = true;
+  o.terms = fit.terms;
+  return RefitVessel(vessel, heldout, fit.params, o);
+}
+
+std::vector<std::string> DynamicStatesIn(const VesselInfo& info, const Dataset& data) {
+  std::vector<std::string> out;
+  for (const std::string& s : info.states)
+    if (!IsPositionOrHeading(s)) {
+      if (!data.Has(s))
+        throw InputError(data.SourcePrefix() + "--method hybrid on " + info.name +
+                         " needs state column '" + s + "'");
+      out.push_back(s);
+    }
+  return out;
+}
+
+}  // namespace
+
+HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
+                            const std::vector<double>& start, const HybridOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!(options.heldout > 0.0 && options.heldout < 1.0))
+    throw InputError("hybrid: the held-out fraction must be in (0, 1)");
+  if (options.per_state < 1) throw InputError("hybrid: at least one proposal per state");
+  if (options.max_terms < 0 || options.max_terms > kMaxRefitTerms)
+    throw InputError("hybrid: at most " + std::to_string(kMaxRefitTerms) + " terms");
+  if (!(options.critical_ratio >= 0.0))
+    throw InputError("hybrid: the critical likelihood ratio must be >= 0");
+  const VesselInfo& info = FindVessel(vessel).Info();
+  const std::vector<std::string> states = DynamicStatesIn(info, data);
+  RefitOptions refit = options.refit;
+  refit.terms.clear();
+  refit.hold_model = false;
+  if (refit.segment_s == 0.0) refit.segment_s = AutomaticSegmentSeconds(data, info);
+  const Eigen::Index split =
+      static_cast<Eigen::Index>(std::floor((1.0 - options.heldout) * static_cast<double>(data.rows())));
+  if (split < 16 || data.rows() - split < 16)
+    throw InputError(data.SourcePrefix() + "hybrid: too few rows to hold out a part (" +
+                     std::to_string(data.rows()) + ")");
+  const Dataset first = Part(data, split, true), heldout = Part(data, split, false);
+
+  HybridResult result;
+  const RefitResult vessel_fit = RefitVessel(vessel, first, start, refit);
+  const RefitResult vessel_score = HeldoutScore(vessel, heldout, vessel_fit, refit);
+  result.vessel_heldout_error = MeanSquaredError(vessel_score);
+  result.effective_samples = vessel_score.residuals / vessel_score.correlation_time;
+
+  // Proposals from the refitted vessel's derivative residual on the first part.
+  const PreparedData prepared = Preprocess(first, states, info.inputs, PreprocessOptions{});
+  // A speed-scaled model's hull and rudder forces are U^2 f(v', r', rudder angle); its
+  // propeller has a model of its own (thrust from the advance ratio), so the propeller's
+  // revolutions are not in the library.
+  const Actuation& a = info.actuation;
+  const bool scaled = info.speed_scaled_forces && a.speed_is_surge;
+  const std::vector<std::string> library_inputs =
+      !scaled ? info.inputs
+      : a.yaw_is_angle ? std::vector<std::string>{info.inputs[a.yaw_input]}
+                       : std::vector<std::string>{};
+  // From the residual of the vessel as given and of the refitted one: a refit that bends its
+  // coefficients towards a missing term hides it (odin3dof with r' += 0.05 |v| v: from the
+  // given vessel's residual |v| v explains 99.9 %; after the refit, no single term stands out).
+  for (const std::vector<double>* params : {&start, &vessel_fit.params})
+    for (TermProposal& p :
+         ProposeTerms(prepared.data, DerivativeResidual(vessel, prepared.data, *params),
+                      library_inputs, options.per_state,
+                      scaled ? info.states[a.speed_state] : std::string()))
+      if (std::none_of(result.proposals.begin(), result.proposals.end(),
+                       [&](const TermProposal& q) { return SameEffect(q.term, p.term); }))
+        result.proposals.push_back(std::move(p));
+
+  // Forward selection by held-out simulation.
+  std::vector<Effect> chosen;
+  double error = result.vessel_heldout_error;
+  const int n = static_cast<int>(result.proposals.size());
+  std::vector<bool> taken(static_cast<size_t>(n), false);
+  for (int round = 0; round < options.max_terms; ++round) {
+    SelectionRound r;
+    r.heldout_error.assign(static_cast<size_t>(n), kNoScore);
+    std::vector<RefitResult> fits(static_cast<size_t>(n));
+#pragma omp parallel for schedule(dynamic) num_threads(std::max(1, options.refit.threads))
+    for (int j = 0; j < n; ++j) {
+      if (taken[j]) continue;
+      try {
+        RefitOptions o = refit;
+        o.threads = 1;
+        o.terms = chosen;
+        o.terms.push_back(result.proposals[j].term);
+        fits[j] = RefitVessel(vessel, first, start, o);
+        const double e = MeanSquaredError(HeldoutScore(vessel, heldout, fits[j], o));
+        if (std::isfinite(e)) r.heldout_error[j] = e;
+      } catch (const std::exception&) {
+        // A proposal whose fit fails is not chosen (its error stays infinite).
+      }
+    }
+    int best = -1;
+    for (int j = 0; j < n; ++j)
+      if (std::isfinite(r.heldout_error[j]) && (best < 0 || r.heldout_error[j] < r.heldout_error[best]))
+        best = j;
+    if (best >= 0 && r.heldout_error[best] > 0.0)
+      r.likelihood_ratio = result.effective_samples * std::log(error / r.heldout_error[best]);
+    if (best >= 0 && r.likelihood_ratio > options.critical_ratio) {
+      r.chosen = best;
+      taken[best] = true;
+      chosen = fits[best].terms;  // the coefficients fitted so far start the next round
+      error = r.heldout_error[best];
+    }
+    result.rounds.push_back(r);
+    if (r.chosen < 0) break;
+  }
+  result.heldout_error = error;
+
+  RefitOptions final_options = refit;
+  final_options.terms = chosen;
+  result.fit = RefitVessel(vessel, data, start, final_options);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace usvid::hybrid
