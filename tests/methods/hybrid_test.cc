@@ -1,0 +1,120 @@
+// `hybrid` (methods/hybrid/hybrid.h): a registered vessel plus the terms its physics lacks.
+// Data from odin3dof with a cross-flow yaw term it does not have, r' += 0.05 |v| v: the hybrid
+// adds exactly that term, with its coefficient, and nothing else; from the vessel as it is, it
+// adds nothing. The proposals (FROLS) find the terms of a known residual, and a speed-scaled
+// vessel's library has the MMG form.
+#include "methods/hybrid/hybrid.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "effects/effect_values.h"
+#include "maneuvers/maneuver_factory.h"
+#include "methods/hybrid/term_proposals.h"
+#include "sensors/noise.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+namespace {
+
+Dataset Simulate(const std::vector<Effect>& effects, double seconds, uint64_t seed) {
+  const VesselSimulator& sim = FindVessel("odin3dof");
+  const VesselInfo& info = sim.Info();
+  auto m = MakeManeuver("random-steps", info.actuation, seconds, seed);
+  Dataset d = sim.RunManeuver(*m, info.default_params, ValuesOf(effects, info.inputs, info.states),
+                              RunOptions{})
+                  .data;
+  AddGaussianNoise(d, info.states, 0.005, seed);
+  return d;
+}
+
+const Effect kCrossFlowYaw{EffectKind::kMissingTerm, {{"coefficient", 0.05}}, {}, "r", "abs(v)*v"};
+
+TEST(HybridTest, AddsTheMissingCrossFlowYawTermAndOnlyThat) {
+  const Dataset data = Simulate({kCrossFlowYaw}, 900, 3);
+  hybrid::HybridOptions options;
+  options.refit.threads = 2;
+  const hybrid::HybridResult h =
+      hybrid::IdentifyHybrid("odin3dof", data, FindVessel("odin3dof").Info().default_params, options);
+  ASSERT_EQ(h.fit.terms.size(), 1u);
+  EXPECT_EQ(h.fit.terms[0].state, "r");
+  EXPECT_EQ(h.fit.terms[0].term, "abs(v)*v");
+  EXPECT_NEAR(h.fit.terms[0].at("coefficient"), 0.05, 0.005);
+  // With it, the held-out error falls to the noise (E about 1 in units of the noise variance).
+  EXPECT_LT(h.heldout_error, 0.01 * h.vessel_heldout_error);
+  EXPECT_LT(h.heldout_error, 1.5);
+  ASSERT_GE(h.rounds.size(), 2u);
+  EXPECT_GT(h.rounds[0].likelihood_ratio, options.critical_ratio);
+  EXPECT_EQ(h.rounds.back().chosen, -1);  // the next best term is not worth its coefficient
+}
+
+TEST(HybridTest, AddsNothingToTheVesselAsItIs) {
+  const Dataset data = Simulate({}, 600, 4);
+  hybrid::HybridOptions options;
+  options.refit.threads = 2;
+  const hybrid::HybridResult h =
+      hybrid::IdentifyHybrid("odin3dof", data, FindVessel("odin3dof").Info().default_params, options);
+  EXPECT_TRUE(h.fit.terms.empty());
+  ASSERT_EQ(h.rounds.size(), 1u);
+  EXPECT_LT(h.rounds[0].likelihood_ratio, options.critical_ratio);
+}
+
+TEST(HybridTest, RefusesWhatItCannotDo) {
+  const Dataset data = Simulate({}, 60, 5);
+  const std::vector<double>& start = FindVessel("odin3dof").Info().default_params;
+  hybrid::HybridOptions options;
+  options.heldout = 1.0;
+  EXPECT_THROW(hybrid::IdentifyHybrid("odin3dof", data, start, options), InputError);
+  options = {};
+  options.max_terms = kMaxRefitTerms + 1;
+  EXPECT_THROW(hybrid::IdentifyHybrid("odin3dof", data, start, options), InputError);
+  options = {};
+  EXPECT_THROW(hybrid::IdentifyHybrid("odin-hs", data,
+                                      FindVessel("odin-hs").Info().default_params, options),
+               InputError);
+}
+
+// A residual of r' that is 2 v r + 0.3 u exactly: FROLS proposes those two terms first, with
+// their coefficients. (u varies about a small mean: FROLS is greedy, and a column close to the
+// constant would be taken for it. The library is built from the residual's states, in their
+// order, and the inputs.)
+TEST(TermProposalsTest, FindsTheTermsOfAKnownResidual) {
+  const Eigen::Index n = 400;
+  Dataset d;
+  Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(n, 0.0, 39.9);
+  d.SetTime(t);
+  const Eigen::VectorXd u = (0.2 + (0.21 * t.array()).sin()).matrix();
+  const Eigen::VectorXd v = (0.5 * (0.37 * t.array()).cos()).matrix();
+  const Eigen::VectorXd r = (0.2 * (0.53 * t.array() + 1.0).sin()).matrix();
+  const Eigen::VectorXd delta = (0.1 * (0.11 * t.array()).sin()).matrix();
+  d.Set("u", u);
+  d.Set("v", v);
+  d.Set("r", r);
+  d.Set("delta", delta);
+  std::map<std::string, Eigen::VectorXd> residual;
+  residual["r"] = (2.0 * v.array() * r.array() + 0.3 * u.array()).matrix();
+  residual["u"] = Eigen::VectorXd::Zero(n);  // nothing missing: no proposal
+  residual["v"] = Eigen::VectorXd::Zero(n);
+  const auto p = hybrid::ProposeTerms(d, residual, {"delta"}, 2);
+  ASSERT_EQ(p.size(), 2u);
+  std::map<std::string, double> found;
+  for (const auto& q : p) {
+    EXPECT_EQ(q.term.state, "r");
+    found[q.term.term] = q.term.at("coefficient");
+  }
+  EXPECT_NEAR(found.at("r*v"), 2.0, 1e-9);
+  EXPECT_NEAR(found.at("u"), 0.3, 1e-9);
+  // Speed-scaled (MMG): no constant or lone variable, u*u*delta for the rudder.
+  residual["r"] = (0.01 * u.array() * u.array() * delta.array()).matrix();
+  const auto scaled = hybrid::ProposeTerms(d, residual, {"delta"}, 1, "u");
+  ASSERT_EQ(scaled.size(), 1u);
+  EXPECT_EQ(scaled[0].term.term, "u*u*delta");
+  EXPECT_NEAR(scaled[0].term.at("coefficient"), 0.01, 1e-12);
+}
+
+}  // namespace
+}  // namespace usvid
