@@ -7,31 +7,53 @@
 namespace usvid::hybrid {
 namespace {
 
-// Products of two signals and |x| x (the quadratic columns of BuildLibrary), and u*u*input for
-// each input.
+// U^2 f(z) with f of degree two: z the velocity states other than the speed u over u (v' = v/u,
+// r' ~ r/u) and the inputs; with U ~ u, the columns u^2 z_i z_j, u^2 |z_i| z_i, u^2 z_i and u^2,
+// each written with the powers of u cancelled ("v*r", "u*v*delta", "u*u*delta").
 RegressorLibrary SpeedScaledLibrary(const std::vector<NamedSignal>& signals,
                                     const std::vector<std::string>& inputs,
                                     const Eigen::VectorXd& u, const std::string& speed) {
-  LibraryOptions quadratic;
-  quadratic.constant = false;
-  const RegressorLibrary all = BuildLibrary(signals, {}, quadratic);
-  std::vector<Eigen::Index> keep;
-  for (Eigen::Index j = 0; j < all.columns.cols(); ++j)
-    if (std::none_of(signals.begin(), signals.end(),
-                     [&](const NamedSignal& s) { return s.name == all.names[j]; }))
-      keep.push_back(j);
-  RegressorLibrary out;
-  out.columns.resize(all.columns.rows(), static_cast<Eigen::Index>(keep.size()));
-  for (size_t i = 0; i < keep.size(); ++i) {
-    out.names.push_back(all.names[keep[i]]);
-    out.columns.col(static_cast<Eigen::Index>(i)) = all.columns.col(keep[i]);
-  }
+  struct Factor {
+    const NamedSignal* signal;
+    bool velocity;  // carries 1/u
+  };
+  std::vector<Factor> z;
   for (const NamedSignal& s : signals) {
-    if (std::find(inputs.begin(), inputs.end(), s.name) == inputs.end()) continue;
-    out.names.push_back(speed + "*" + speed + "*" + s.name);
-    out.columns.conservativeResize(Eigen::NoChange, out.columns.cols() + 1);
-    out.columns.col(out.columns.cols() - 1) = u.cwiseProduct(u).cwiseProduct(s.values);
+    if (s.name == speed) continue;
+    const bool input = std::find(inputs.begin(), inputs.end(), s.name) != inputs.end();
+    z.push_back({&s, !input});
   }
+  RegressorLibrary out;
+  std::vector<Eigen::VectorXd> columns;
+  // u^(2 - velocity factors) times the factors (abs: |z| z of the one factor given).
+  auto add = [&](const std::vector<const Factor*>& factors, bool abs) {
+    std::vector<std::string> names;
+    Eigen::VectorXd column = Eigen::VectorXd::Ones(u.size());
+    int power = 2;
+    for (const Factor* f : factors) {
+      const int times = abs ? 2 : 1;
+      power -= f->velocity ? times : 0;
+      column = column.cwiseProduct(abs ? f->signal->values.cwiseAbs().cwiseProduct(f->signal->values)
+                                       : f->signal->values);
+      names.push_back(abs ? "abs(" + f->signal->name + ")*" + f->signal->name : f->signal->name);
+    }
+    std::string name;
+    for (int k = 0; k < power; ++k) {
+      column = column.cwiseProduct(u);
+      name += (name.empty() ? "" : "*") + speed;
+    }
+    for (const std::string& n : names) name += (name.empty() ? "" : "*") + n;
+    out.names.push_back(name);
+    columns.push_back(std::move(column));
+  };
+  add({}, false);
+  for (const Factor& f : z) add({&f}, false);
+  for (size_t i = 0; i < z.size(); ++i) {
+    for (size_t k = i; k < z.size(); ++k) add({&z[i], &z[k]}, false);
+    add({&z[i]}, true);
+  }
+  out.columns.resize(u.size(), static_cast<Eigen::Index>(columns.size()));
+  for (size_t j = 0; j < columns.size(); ++j) out.columns.col(static_cast<Eigen::Index>(j)) = columns[j];
   return out;
 }
 

@@ -2,18 +2,17 @@
 // least squares (FROLS, Billings 2013, the structure detection of NARMAX models) on the
 // derivative residual d_s = s_dot - f_s(x, u; vessel) of each dynamic state s. The library is
 // the constant, each dynamic state and input, their products and |x| x (inputs enter products
-// too: a rudder force grows with u^2 delta); no heading or position, so that a term carries
-// over from one maneuver to another. Each step takes the column whose part orthogonal to those
+// too); no heading or position, so that a term carries over from one maneuver to another. Each step takes the column whose part orthogonal to those
 // chosen explains the most of d_s (its error reduction ratio, ERR); the coefficients are the
 // least-squares weights of the chosen columns together.
 //
 // A vessel whose forces scale with speed squared (VesselInfo::speed_scaled_forces, MMG) lacks
-// terms of that form: 1/2 rho L d U^2 f(v', r', inputs), with f to first order. With the surge
-// speed u for U, the library is then the products of two of u, v, r and the inputs given (the
-// rudder angle: the propeller has a model of its own), |x| x, and u*u*input for each input,
-// without the constant and the lone variables. On the KVLCC2 tests a
-// constant yaw moment fitted on a zig-zag (at 6.7 m/s) is three times too strong in a turning
-// circle, where the speed falls to 2.6 m/s; the same moment as u*u carries over (docs/hybrid.md).
+// terms of that form: 1/2 rho L d U^2 f(z), z the velocities over the speed (v' = v/U, r' ~ r/U)
+// and the inputs given (the rudder angle: the propeller has a model of its own), f of degree
+// two (with |z| z). With the surge speed u for U, the columns are u^2, u v, u r, u^2 delta, v^2,
+// v r, u v delta, u^2 delta^2, |v| v, ... On the KVLCC2 tests, a constant yaw moment fitted on
+// a zig-zag (at 6.7 m/s) is several times too strong in a turning circle, where the speed falls
+// to 2.6 m/s; the same moment as u*u carries over (docs/hybrid.md).
 #pragma once
 
 #include <map>

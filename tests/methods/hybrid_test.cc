@@ -108,7 +108,7 @@ TEST(TermProposalsTest, FindsTheTermsOfAKnownResidual) {
   }
   EXPECT_NEAR(found.at("r*v"), 2.0, 1e-9);
   EXPECT_NEAR(found.at("u"), 0.3, 1e-9);
-  // Speed-scaled (MMG): no constant or lone variable, u*u*delta for the rudder.
+  // Speed-scaled (MMG): U^2 f(v/u, r/u, delta), so a rudder term is u*u*delta.
   residual["r"] = (0.01 * u.array() * u.array() * delta.array()).matrix();
   const auto scaled = hybrid::ProposeTerms(d, residual, {"delta"}, 1, "u");
   ASSERT_EQ(scaled.size(), 1u);
