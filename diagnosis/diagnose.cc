@@ -171,9 +171,12 @@ std::vector<Candidate> RankEffects(const MeasuredData& d, const EffectFitter& fi
 std::vector<EffectSearch> TermSearches(const std::vector<DiscoveredTerms>& discovered,
                                        const VesselSimulator& sim) {
   std::vector<EffectSearch> out;
+  std::vector<std::pair<std::string, std::string>> seen;  // state, term
   for (const DiscoveredTerms& t : discovered)
     for (const auto& [term, coefficient] : Expression::Parse(t.expression).Terms()) {
       if (term == "1") continue;  // a constant: the catalogue's biases and forces
+      if (std::find(seen.begin(), seen.end(), std::pair(t.state, term)) != seen.end()) continue;
+      seen.emplace_back(t.state, term);
       Effect e{EffectKind::kMissingTerm, {{"coefficient", coefficient}}, {}, t.state, term};
       out.push_back(SearchForTerm(e, sim.Info().states, sim.Info().inputs));
     }

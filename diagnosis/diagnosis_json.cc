@@ -137,6 +137,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
   for (const DiscoveredTerms& t : d.discovered)
     discovered.push_back({{"state", t.state},
                           {"missing_derivative", t.expression},
+                          {"method", t.method},
                           {"heldout_r2", Number(t.heldout_r2)}});
   j["unexplained_residual"] = d.unexplained;
   j["discovered"] = discovered;

@@ -124,10 +124,11 @@ void WriteDiagnosisReport(const Diagnosis& d, const std::string& dir) {
   h << "</table>\n";
   if (!d.discovered.empty()) {
     h << "<h2>Beyond the catalogue: terms the nominal model lacks</h2>\n<table><tr><th>state"
-         "</th><th>missing part of its derivative</th><th>held-out R&sup2;</th></tr>\n";
+         "</th><th>missing part of its derivative</th><th>held-out R&sup2;</th><th>by</th></tr>\n";
     for (const DiscoveredTerms& t : d.discovered)
       h << "<tr><td>" << svg::Escape(t.state) << "</td><td><code>" << svg::Escape(t.expression)
-        << "</code></td><td>" << Fixed(t.heldout_r2, 3) << "</td></tr>\n";
+        << "</code></td><td>" << Fixed(t.heldout_r2, 3) << "</td><td>" << t.method
+        << "</td></tr>\n";
     h << "</table>\n";
   }
   h << "</body></html>\n";

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "methods/gp/gp_identify.h"
 #include "methods/sindy/sindy.h"
 #include "metrics/fit_metrics.h"
 #include "preprocessing/pipeline.h"
@@ -10,6 +11,27 @@ namespace usvid::diagnosis {
 namespace {
 
 constexpr double kMinHeldoutR2 = 0.3;
+
+// Explained share of the residual's mean square, not of its variance: the nominal model's
+// error is d_s itself, and a missing constant force is all mean.
+double ExplainedShare(const Eigen::VectorXd& d, const Eigen::VectorXd& prediction) {
+  return d.squaredNorm() > 0 ? 1.0 - (d - prediction).squaredNorm() / d.squaredNorm() : 0.0;
+}
+
+// GP-SR on the residual: a small seeded search per state, the best of each search kept (no
+// simulation: these are parts of derivatives, not models).
+gp::GpIdentification GpOnResidual(const PreparedData& train, const std::vector<std::string>& states,
+                                  const std::vector<std::string>& inputs) {
+  gp::GpIdentifyOptions g;
+  g.search.functions = gp::ParseOperators("+,-,*,abs");
+  g.search.population = 300;
+  g.search.generations = 20;
+  g.search.restarts = 0;
+  g.search.seed = 1;
+  g.validation_fraction = 0.0;
+  g.weight_fit = gp::WeightFit::kEquation;
+  return gp::IdentifyWithGp(train, states, states, inputs, g);
+}
 
 bool IsKinematic(const std::string& s) {
   return s == "north" || s == "east" || s == "psi" || s == "chi" || s == "x";
@@ -78,16 +100,18 @@ std::vector<DiscoveredTerms> DiscoverMissingTerms(const Dataset& data, const Ves
   const sindy::SindyIdentification id =
       sindy::IdentifyWithSindy(train_data, dynamic, dynamic, inputs, options);
 
+  const gp::GpIdentification gp_id = GpOnResidual(train_data, dynamic, inputs);
+
   std::vector<DiscoveredTerms> out;
   for (const std::string& s : dynamic) {
-    const Eigen::VectorXd prediction =
-        sindy::PredictWithSindy(id, s, held_data, dynamic, inputs, options.library);
-    // Explained share of the residual's mean square, not of its variance: the nominal model's
-    // error is d_s itself, and a missing constant force is all mean.
     const Eigen::VectorXd& d = held_data[s + "_dot"];
-    const double r2 =
-        d.squaredNorm() > 0 ? 1.0 - (d - prediction).squaredNorm() / d.squaredNorm() : 0.0;
-    if (r2 >= kMinHeldoutR2) out.push_back({s, id.equations[s].get<std::string>(), r2});
+    const double r2 = ExplainedShare(
+        d, sindy::PredictWithSindy(id, s, held_data, dynamic, inputs, options.library));
+    if (r2 >= kMinHeldoutR2) out.push_back({s, id.equations[s].get<std::string>(), r2, "sindy"});
+    const std::string expression = gp_id.equations[s].get<std::string>();
+    const Eigen::VectorXd prediction = Expression::Parse(expression).Evaluate(held_data);
+    const double gp_r2 = prediction.allFinite() ? ExplainedShare(d, prediction) : 0.0;
+    if (gp_r2 >= kMinHeldoutR2) out.push_back({s, expression, gp_r2, "gp"});
   }
   return out;
 }

@@ -180,6 +180,37 @@ TEST(OneInputEffectTestMissingTerm, CrossFlowYawTermIsTheCause) {
   EXPECT_GT(nlohmann::json::parse(ev.out).at("r").at("fit_percent").get<double>(), 95.0);
 }
 
+// A term outside SINDy's library (products and |x| x): r' += 0.1 |v| r. GP-SR on the residual
+// proposes it, and it is the cause. In these data v and r have opposite signs nearly always, so
+// |v| r and -v |r| are the same function; either is the term, with its coefficient within 10 %.
+TEST(OneInputEffectTestMissingTerm, GpProposesATermOutsideTheLibrary) {
+  const fs::path dir = FreshTempDir();
+  const std::string data = (dir / "data.csv").string();
+  const auto sim = RunUsvid(
+      "simulate --vessel odin3dof --maneuver random-steps --duration 900 --noise 0.005 --seed 5 "
+      "--effect 'missing_term=0.1:r:abs(v)*r' --out " +
+      data);
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const std::string out = (dir / "out").string();
+  const auto r = RunUsvid("diagnose --vessel odin3dof --threads 2 --data " + data + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json d = ReadJsonFile(out + "/diagnosis.json");
+  ASSERT_EQ(d.at("cause"), "missing_term") << d.at("candidates").dump(1);
+  const nlohmann::json& c = d.at("candidates").at(0);
+  EXPECT_EQ(c.at("state"), "r");
+  const double k = c.at("parameters").at("coefficient").get<double>();
+  if (c.at("term") == "abs(r)*v") {
+    EXPECT_NEAR(k, -0.1, 0.01);
+  } else {
+    EXPECT_EQ(c.at("term"), "abs(v)*r");
+    EXPECT_NEAR(k, 0.1, 0.01);
+  }
+  EXPECT_GE(d.at("gain").at("heldout_error_reduction").get<double>(), 0.5);
+  bool by_gp = false;
+  for (const auto& t : d.at("discovered")) by_gp = by_gp || t.at("method") == "gp";
+  EXPECT_TRUE(by_gp) << d.at("discovered").dump(1);
+}
+
 // The tanker (issue 21: hidden effects on more vessels than odin3dof). 900 s of zig-zag 20/20
 // at 0.5 % noise: nothing hidden, nothing named; a 3 s delay of the rudder is named with its
 // size (on the whole vessel or the rudder alone: the propeller's revolutions are held, so the
