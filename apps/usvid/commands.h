@@ -16,5 +16,6 @@ void AddIdentifyCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
 void AddCompareCommand(CLI::App& app);
 void AddDiagnoseCommand(CLI::App& app);
+void AddDesignCommand(CLI::App& app);
 
 }  // namespace usvid

@@ -36,6 +36,13 @@ struct RefitOptions {
   // Only each segment's initial state is fitted, the parameters and terms held: the record's
   // multiple-shooting error under a given model (a held-out score).
   bool hold_model = false;
+  // > 0: each channel's measurement noise is this fraction of its spread (the sensor model of
+  // `usvid simulate --noise`) instead of estimated from the data.
+  double noise_fraction = 0.0;
+  // No fit: the Fisher information of the free parameters at the start (a design study,
+  // design/). The segments' initial states are nuisances: their information is taken out (the
+  // Schur complement of JᵀJ, J the Jacobian of the normalised residuals, the prior's included).
+  bool information_only = false;
 };
 
 constexpr int kMaxRefitTerms = 6;
@@ -56,6 +63,9 @@ struct RefitResult {
   // rho_k over the lags before rho first drops below 0.05 (at most 400), averaged over the
   // channels: the residuals carry about residuals / correlation_time independent ones.
   double correlation_time = 1.0;
+  // With information_only: the Fisher information of the free parameters (in free's order), in
+  // units of their ratio to the start (1 / relative variance).
+  Eigen::MatrixXd information;
 };
 
 // Throws InputError for an unknown vessel or parameter, or data without the vessel's inputs or

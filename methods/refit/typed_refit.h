@@ -1,6 +1,7 @@
 // RefitVessel for one vessel type V (refit.h): the segment cost, the prior and the solve.
 #pragma once
 
+#include <Eigen/Sparse>
 #include <ceres/ceres.h>
 
 #include <algorithm>
@@ -124,6 +125,34 @@ inline double CorrelationTime(const std::vector<double>& r, int channels) {
   return channels > 0 ? total / channels : 1.0;
 }
 
+// The information of theta's free (tangent) coordinates with the initial states x0 (C each)
+// taken out: A = J^T J over [theta, x0_1, .., x0_S], then A_tt - sum_j A_tj A_jj^-1 A_jt.
+template <size_t C>
+Eigen::MatrixXd FreeInformation(ceres::Problem& problem, double* theta,
+                                std::vector<std::array<double, C>>& x0, int /*channels*/) {
+  ceres::Problem::EvaluateOptions eo;
+  eo.parameter_blocks.push_back(theta);
+  for (auto& x : x0) eo.parameter_blocks.push_back(x.data());
+  ceres::CRSMatrix crs;
+  problem.Evaluate(eo, nullptr, nullptr, nullptr, &crs);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int r = 0; r < crs.num_rows; ++r)
+    for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k)
+      triplets.emplace_back(r, crs.cols[k], crs.values[k]);
+  Eigen::SparseMatrix<double> j(crs.num_rows, crs.num_cols);
+  j.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::MatrixXd a = Eigen::MatrixXd(j.transpose() * j);
+  const Eigen::Index p = crs.num_cols - static_cast<Eigen::Index>(C * x0.size());
+  Eigen::MatrixXd info = a.topLeftCorner(p, p);
+  for (size_t s = 0; s < x0.size(); ++s) {
+    const Eigen::Index at = p + static_cast<Eigen::Index>(C * s);
+    const Eigen::MatrixXd ajj = a.block(at, at, C, C);
+    const Eigen::MatrixXd atj = a.block(0, at, p, C);
+    info -= atj * ajj.completeOrthogonalDecomposition().solve(atj.transpose());
+  }
+  return 0.5 * (info + info.transpose());
+}
+
 template <Vessel V>
 RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
                        const std::vector<double>& start, const RefitOptions& o) {
@@ -173,7 +202,9 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     const Eigen::Map<const Eigen::VectorXd> y(samples.data(),
                                               static_cast<Eigen::Index>(samples.size()));
     const double spread = y.size() > 1 ? std::sqrt((y.array() - y.mean()).square().mean()) : 1.0;
-    const double noise = y.size() >= 16 ? EstimateNoiseSd(y) : 0.0;
+    const double noise = o.noise_fraction > 0.0 ? o.noise_fraction * spread
+                         : y.size() >= 16       ? EstimateNoiseSd(y)
+                                                : 0.0;
     sd[c] = std::max({noise, 1e-3 * spread, 1e-12});
   }
   if (!(o.segment_s >= 0)) throw InputError("refit: --segment must be positive (0: automatic)");
@@ -259,6 +290,12 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   else if (!unused.empty())
     problem.SetManifold(kappa.data(), new ceres::SubsetManifold(kMaxRefitTerms, unused));
 
+  if (o.information_only) {
+    result.information = FreeInformation(problem, theta.data(), x0, C);
+    result.params = start;
+    result.sd.assign(V::kParams, 0.0);
+    return result;
+  }
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   so.max_num_iterations = o.max_iterations;
