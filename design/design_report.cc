@@ -38,7 +38,9 @@ nlohmann::json DesignJson(const DesignStudy& study) {
                         {"trace_inverse_information", m.trace_inverse},
                         {"condition_number", m.condition_number},
                         {"weakest_directions", weakest},
-                        {"seconds", m.seconds}};
+                        {"seconds", m.seconds},
+                        {"optimized", !m.optimized_from.empty()}};
+    if (!m.optimized_from.empty()) j["optimized_from"] = m.optimized_from;
     if (k < study.checks.size() && study.checks[k]) {
       const SpreadCheck& c = *study.checks[k];
       nlohmann::json observed = nlohmann::json::object(), ratio = nlohmann::json::object();

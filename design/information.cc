@@ -39,15 +39,27 @@ Dataset SimulateManeuver(const std::string& vessel, const std::string& spec, dou
   return sim.RunManeuver(*maneuver, sim.Info().default_params, {}, RunOptions{}).data;
 }
 
-ManeuverInformation InformationOf(const std::string& vessel, const std::string& method,
-                                  const std::string& maneuver, double seconds, double noise,
-                                  uint64_t seed) {
-  const auto t0 = std::chrono::steady_clock::now();
+NoiseModel ReferenceNoise(const Dataset& reference, const std::vector<std::string>& channels,
+                          double noise) {
   if (!(noise > 0.0) || !std::isfinite(noise))
     throw InputError("design: --noise must be positive (a fraction of each channel's spread)");
+  NoiseModel out;
+  for (const std::string& c : channels) {
+    if (!reference.Has(c)) continue;
+    const Eigen::VectorXd& y = reference[c];
+    const double spread = std::sqrt((y.array() - y.mean()).square().mean());
+    out[c] = noise * (spread > 0.0 ? spread : 1.0);
+  }
+  return out;
+}
+
+ManeuverInformation InformationOf(const std::string& vessel, const std::string& method,
+                                  const std::string& maneuver, double seconds,
+                                  const NoiseModel& noise, uint64_t seed) {
+  const auto t0 = std::chrono::steady_clock::now();
   RefitOptions o = MethodProblem(vessel, method);
   o.information_only = true;
-  o.noise_fraction = noise;
+  o.noise_sd = noise;
   const Dataset data = SimulateManeuver(vessel, maneuver, seconds, seed);
   const VesselInfo& info = FindVessel(vessel).Info();
   const RefitResult r = RefitVessel(vessel, data, info.default_params, o);

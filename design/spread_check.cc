@@ -11,8 +11,8 @@
 namespace usvid::design {
 
 SpreadCheck CheckSpread(const std::string& vessel, const std::string& method,
-                        const ManeuverInformation& predicted, double seconds, double noise,
-                        int runs, int threads) {
+                        const ManeuverInformation& predicted, double seconds,
+                        const NoiseModel& noise, int runs, int threads) {
   if (runs < 2) throw InputError("design: --check needs at least 2 runs, not " + std::to_string(runs));
   const VesselInfo& info = FindVessel(vessel).Info();
   const size_t n = predicted.names.size();
@@ -22,7 +22,15 @@ SpreadCheck CheckSpread(const std::string& vessel, const std::string& method,
     try {
       // The maneuver as designed (its seed 1), with noise drawn from the run's own seed.
       Dataset data = SimulateManeuver(vessel, predicted.maneuver, seconds, 1);
-      AddGaussianNoise(data, info.states, noise, static_cast<uint64_t>(k + 1));
+      // Each channel's noise as the design assumed it (an absolute sd), drawn from the run's seed.
+      uint64_t stream = 0;
+      for (const auto& [channel, sd] : noise) {
+        const Eigen::VectorXd& y = data[channel];
+        const double spread = std::sqrt((y.array() - y.mean()).square().mean());
+        if (spread > 0.0)
+          AddGaussianNoise(data, {channel}, sd / spread,
+                           static_cast<uint64_t>(k + 1) * 1000 + stream++);
+      }
       IdentifyRequest r;
       r.method = method;
       r.vessel = vessel;

@@ -22,7 +22,7 @@ struct SpreadCheck {
 // Runs with seeds 1..runs, fitted in parallel on `threads` (each fit single-threaded: the same
 // numbers at any thread count).
 SpreadCheck CheckSpread(const std::string& vessel, const std::string& method,
-                        const ManeuverInformation& predicted, double seconds, double noise,
-                        int runs, int threads);
+                        const ManeuverInformation& predicted, double seconds,
+                        const NoiseModel& noise, int runs, int threads);
 
 }  // namespace usvid::design

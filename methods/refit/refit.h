@@ -36,9 +36,9 @@ struct RefitOptions {
   // Only each segment's initial state is fitted, the parameters and terms held: the record's
   // multiple-shooting error under a given model (a held-out score).
   bool hold_model = false;
-  // > 0: each channel's measurement noise is this fraction of its spread (the sensor model of
-  // `usvid simulate --noise`) instead of estimated from the data.
-  double noise_fraction = 0.0;
+  // Each named channel's measurement noise sd, instead of estimated from the data (a design
+  // study's sensors).
+  std::map<std::string, double> noise_sd;
   // No fit: the Fisher information of the free parameters at the start (a design study,
   // design/). The segments' initial states are nuisances: their information is taken out (the
   // Schur complement of JᵀJ, J the Jacobian of the normalised residuals, the prior's included).

@@ -202,9 +202,10 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     const Eigen::Map<const Eigen::VectorXd> y(samples.data(),
                                               static_cast<Eigen::Index>(samples.size()));
     const double spread = y.size() > 1 ? std::sqrt((y.array() - y.mean()).square().mean()) : 1.0;
-    const double noise = o.noise_fraction > 0.0 ? o.noise_fraction * spread
-                         : y.size() >= 16       ? EstimateNoiseSd(y)
-                                                : 0.0;
+    const auto given = o.noise_sd.find(name);
+    const double noise = given != o.noise_sd.end() ? given->second
+                         : y.size() >= 16          ? EstimateNoiseSd(y)
+                                                   : 0.0;
     sd[c] = std::max({noise, 1e-3 * spread, 1e-12});
   }
   if (!(o.segment_s >= 0)) throw InputError("refit: --segment must be positive (0: automatic)");
