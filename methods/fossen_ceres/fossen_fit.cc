@@ -248,9 +248,19 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
   for (int i = 0; i < Model::kInputs; ++i) in[i] = std::string(Model::kInputNames[i]);
   std::array<double, 3> scale;
   for (int i = 0; i < 3; ++i) {
-    std::string normaliser = std::string(Odin3Dof::kStateNames[3 + i]) + "_dot";
-    if constexpr (!Model::kAccelerationResidual) normaliser = in[i];  // the forces themselves
-    scale[i] = Sd(d[normaliser]);
+    const std::string rate = std::string(Odin3Dof::kStateNames[3 + i]) + "_dot";
+    scale[i] = Sd(d[rate]);
+    if constexpr (!Model::kAccelerationResidual) {
+      // The forces themselves; a force that is never applied (the step grid holds tau_y at 0)
+      // has no spread, and its equation is then scaled by its inertial force, the starting mass
+      // times the spread of the acceleration. With the 1 N of a constant's Sd, that homogeneous
+      // equation outweighed the others 10^4 to 1, and its trivial solution (m11, m22, Yv, Yvv
+      // near 0) started the shooting fit where it could not recover (docs/design.md).
+      const Eigen::VectorXd& force = d[in[i]];
+      scale[i] = (force.array() - force.mean()).square().mean() > 0
+                     ? Sd(force)
+                     : Model::kStart[i] * scale[i];
+    }
   }
   ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
   // Samples go into residual blocks of kBatch (one block each when the loss is robust: Huber
