@@ -17,7 +17,7 @@ RefitOptions MethodProblem(const std::string& vessel, const std::string& method)
   if (method == "refit") return o;
   if (method == "fossen-ceres") {
     if (vessel != "odin3dof")
-      throw InputError("design: fossen-ceres is designed for on odin3dof (its model is that "
+      throw InputError("design: fossen-ceres is designed for odin3dof only (its model is that "
                        "vessel's), not " + vessel);
     o.free = FindVessel(vessel).Info().params;  // all 10
     o.prior_sd = 1e9;                            // none
@@ -69,6 +69,10 @@ ManeuverInformation InformationOf(const std::string& vessel, const std::string& 
   m.names = r.free;
   m.information = r.information;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(m.information);
+  if (m.names.empty() || !(eig.eigenvalues().maxCoeff() > 0.0))
+    throw InputError("design: " + maneuver + " on " + vessel +
+                     " carries no information about the parameters of " + method);
+  // Directions with no information at all keep a finite, huge sd (1e-300 of the largest).
   const Eigen::VectorXd lambda = eig.eigenvalues().cwiseMax(eig.eigenvalues().maxCoeff() * 1e-300);
   const Eigen::MatrixXd cov = eig.eigenvectors() * lambda.cwiseInverse().asDiagonal() *
                               eig.eigenvectors().transpose();

@@ -1,5 +1,6 @@
 #include "methods/hybrid/hybrid.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -75,7 +76,7 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   result.vessel_heldout_error = MeanSquaredError(vessel_score);
   result.effective_samples = vessel_score.residuals / vessel_score.correlation_time;
 
-  // Proposals from the refitted vessel's derivative residual on the first part.
+  // Proposals from the derivative residual on the first part.
   const PreparedData prepared = Preprocess(first, states, info.inputs, PreprocessOptions{});
   // A speed-scaled model's hull and rudder forces are U^2 f(v', r', rudder angle); its
   // propeller has a model of its own (thrust from the advance ratio), so the propeller's

@@ -3,8 +3,9 @@
 //  1. The training record is split: the first part fits, the last `heldout` part judges.
 //  2. The vessel is refitted on the first part (methods/refit: its own coefficients, multiple
 //     shooting, a prior around the published values).
-//  3. Proposals: forward orthogonal least squares on that model's derivative residual
-//     (term_proposals.h), per_state terms for each dynamic state.
+//  3. Proposals: forward orthogonal least squares (term_proposals.h), per_state terms for each
+//     dynamic state, on the derivative residual of the vessel as given and of the refitted one
+//     (a refit that bends its coefficients towards a missing term can hide it).
 //  4. Selection by simulation: each round, every remaining proposal is added to the terms
 //     chosen so far, the vessel and all the terms fitted together on the first part by
 //     multiple shooting, and the result scored on the held-out part (each segment's initial
