@@ -6,7 +6,6 @@
 #include "core/error.h"
 #include "methods/identify.h"
 #include "sensors/noise.h"
-#include "simulation/vessel_simulator.h"
 
 namespace usvid::design {
 
@@ -14,7 +13,6 @@ SpreadCheck CheckSpread(const std::string& vessel, const std::string& method,
                         const ManeuverInformation& predicted, double seconds,
                         const NoiseModel& noise, int runs, int threads) {
   if (runs < 2) throw InputError("design: --check needs at least 2 runs, not " + std::to_string(runs));
-  const VesselInfo& info = FindVessel(vessel).Info();
   const size_t n = predicted.names.size();
   std::vector<std::vector<double>> estimates(static_cast<size_t>(runs));
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(1, threads))
