@@ -169,7 +169,7 @@ TEST_F(MethodsCliTest, HybridAddsTheMissingTermToTheTanker) {
   EXPECT_GT(scores["hybrid"].at("r").at("fit_percent").get<double>(), 99.0);
   EXPECT_LT(scores["refit"].at("r").at("fit_percent").get<double>(), 95.0);
 
-  for (const std::string bad : {"--data " + train, "--vessel odin-hs --data " + train}) {
+  for (const std::string& bad : {"--data " + train, "--vessel odin-hs --data " + train}) {
     const std::string out = (dir_ / "bad.json").string();
     const auto r = RunUsvid("identify --method hybrid " + bad + " --out " + out);
     EXPECT_EQ(r.exit_code, 2) << bad;

@@ -237,7 +237,9 @@ TEST_P(HiddenEffectKvlcc2Test, NamesTheCauseAndItsSize) {
   }
   if (effect.starts_with("input_delay")) {
     ASSERT_EQ(d.at("cause"), "input_delay") << d.at("candidates").dump(1);
-    if (c.contains("inputs")) EXPECT_EQ(c.at("inputs"), nlohmann::json({"delta"}));
+    if (c.contains("inputs")) {
+      EXPECT_EQ(c.at("inputs"), nlohmann::json({"delta"}));
+    }
     EXPECT_NEAR(c.at("parameters").at("delay_s").get<double>(), 3.0, 0.3);
   } else {
     ASSERT_EQ(d.at("cause"), "missing_term") << d.at("candidates").dump(1);
