@@ -11,16 +11,17 @@
 namespace usvid {
 namespace {
 
-// f.template operator()<V>() for the vessel type V named `vessel`: the vessels whose states
-// are all measured (odin-hs's actuator states are not).
+// f.template operator()<V>() for the vessel type V named `vessel`. The data must hold every
+// dynamic state of the vessel: for odin-hs, the jets' rpm, nozzle angle and bucket position too
+// (a simulated record has them; a log without them is refused, naming the column).
 template <typename F>
 auto WithVesselType(const std::string& vessel, const std::string& what, F&& f) {
   if (vessel == "kvlcc2") return f.template operator()<Kvlcc2>();
   if (vessel == "odin3dof") return f.template operator()<Odin3Dof>();
+  if (vessel == "odin-hs") return f.template operator()<OdinHs>();
   if (vessel == "eb2dof") return f.template operator()<Eb2Dof>();
   if (vessel == "msd") return f.template operator()<Msd>();
-  throw InputError(what + ": not available for vessel " + vessel +
-                   " (its actuator states are not measured)");
+  throw InputError(what + ": not available for vessel " + vessel);
 }
 
 const VesselInfo& InfoWithParams(const std::string& vessel, size_t params, const char* what) {

@@ -74,7 +74,7 @@ TEST(RefitTest, RefusesWhatItCannotFit) {
   EXPECT_THROW(RefitVessel("odin3dof", data, info.default_params, options), InputError);
   options.free = {};
   EXPECT_THROW(RefitVessel("odin3dof", data, {1.0, 2.0}, options), InputError);
-  // odin-hs' actuator states (rpm, nozzle, bucket) are not measured: no refit.
+  // odin-hs needs its jets' states (rpm, nozzle, bucket) and inputs, which odin3dof data lack.
   EXPECT_THROW(RefitVessel("odin-hs", data, FindVessel("odin-hs").Info().default_params, options),
                InputError);
   Dataset no_sway = data;
