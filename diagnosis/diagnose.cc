@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/correlation_time.h"
 #include "core/expression.h"
 #include "diagnosis/residual_discovery.h"
 #include "simulation/vessel_simulator.h"
@@ -22,27 +23,11 @@ double NoiseFloor(const MeasuredData& d) {
   return sum / static_cast<double>(d.channels.size());
 }
 
-// The integrated autocorrelation time of the residuals [samples], 1 + 2 sum rho_k over the lags
-// before rho first drops below 0.05, averaged over the channels: N residuals carry about N / tau
-// independent ones.
+// The held-out residuals' correlation time (core/correlation_time.h).
 double CorrelationTime(const MeasuredData& d, const Part& part, const Eigen::VectorXd& residual) {
   const auto channels = static_cast<Eigen::Index>(d.channels.size());
-  const Eigen::Index n = part.end - part.begin;
-  double total = 0.0;
-  for (Eigen::Index c = 0; c < channels; ++c) {
-    Eigen::VectorXd e(n);
-    for (Eigen::Index k = 0; k < n; ++k) e(k) = residual(k * channels + c);
-    e.array() -= e.mean();
-    const double var = e.squaredNorm();
-    double tau = 1.0;
-    for (Eigen::Index lag = 1; lag < std::min<Eigen::Index>(n / 4, 400) && var > 0; ++lag) {
-      const double rho = e.head(n - lag).dot(e.tail(n - lag)) / var;
-      if (rho < 0.05) break;
-      tau += 2.0 * rho;
-    }
-    total += tau;
-  }
-  return total / static_cast<double>(channels);
+  return usvid::CorrelationTime(residual.head((part.end - part.begin) * channels),
+                                static_cast<int>(channels));
 }
 
 // The chi-square quantile at 0.999 for k = 1, 2 degrees of freedom.

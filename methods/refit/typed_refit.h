@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "core/correlation_time.h"
 #include "core/error.h"
 #include "methods/refit/refit.h"
 #include "preprocessing/smoothing_spline.h"
@@ -103,27 +104,6 @@ struct RefitPrior {
     return true;
   }
 };
-
-// The integrated autocorrelation time [samples] of `r` (rows of `channels` values), averaged over
-// the channels (RefitResult::correlation_time).
-inline double CorrelationTime(const std::vector<double>& r, int channels) {
-  const Eigen::Index n = static_cast<Eigen::Index>(r.size()) / channels;
-  double total = 0.0;
-  for (int c = 0; c < channels; ++c) {
-    Eigen::VectorXd e(n);
-    for (Eigen::Index k = 0; k < n; ++k) e(k) = r[static_cast<size_t>(k * channels + c)];
-    e.array() -= e.mean();
-    const double var = e.squaredNorm();
-    double tau = 1.0;
-    for (Eigen::Index lag = 1; lag < std::min<Eigen::Index>(n / 4, 400) && var > 0; ++lag) {
-      const double rho = e.head(n - lag).dot(e.tail(n - lag)) / var;
-      if (rho < 0.05) break;
-      tau += 2.0 * rho;
-    }
-    total += tau;
-  }
-  return channels > 0 ? total / channels : 1.0;
-}
 
 // The information of theta's free (tangent) coordinates with the initial states x0 (C each)
 // taken out: A = J^T J over [theta, x0_1, .., x0_S], then A_tt - sum_j A_tj A_jj^-1 A_jt.
@@ -317,7 +297,8 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     std::vector<double> r;
     problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, &r, nullptr, nullptr);
     r.resize(static_cast<size_t>(result.residuals));  // the segments' (the prior's are last)
-    result.correlation_time = CorrelationTime(r, C);
+    result.correlation_time = CorrelationTime(
+        Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())), C);
   }
   result.params.resize(V::kParams);
   result.sd.assign(V::kParams, 0.0);
