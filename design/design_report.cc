@@ -1,26 +1,38 @@
 #include "design/design_report.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "plot/heat_map.h"
 
 namespace usvid::design {
 
 size_t Best(const DesignStudy& study) {
-  size_t best = 0;
-  for (size_t i = 1; i < study.maneuvers.size(); ++i)
-    if (study.maneuvers[i].log_det > study.maneuvers[best].log_det) best = i;
-  return best;
+  std::optional<size_t> best;
+  for (size_t i = 0; i < study.maneuvers.size(); ++i)
+    if (study.maneuvers[i].unusable.empty() &&
+        (!best || study.maneuvers[i].log_det > study.maneuvers[*best].log_det))
+      best = i;
+  return best.value_or(0);
+}
+
+bool AnyUsable(const DesignStudy& study) {
+  return std::any_of(study.maneuvers.begin(), study.maneuvers.end(),
+                     [](const ManeuverInformation& m) { return m.unusable.empty(); });
 }
 
 nlohmann::json DesignJson(const DesignStudy& study) {
   nlohmann::json maneuvers = nlohmann::json::array();
   for (size_t k = 0; k < study.maneuvers.size(); ++k) {
     const ManeuverInformation& m = study.maneuvers[k];
-    nlohmann::json sd = nlohmann::json::object(), rel = nlohmann::json::object();
+    nlohmann::json sd = nlohmann::json::object(), rel = nlohmann::json::object(),
+                   bound = nlohmann::json::object();
     for (size_t i = 0; i < m.names.size(); ++i) {
       sd[m.names[i]] = m.sd[i];
       rel[m.names[i]] = m.relative_sd[i];
+      bound[m.names[i]] = m.shooting_sd[i];
     }
     nlohmann::json weakest = nlohmann::json::array();
     for (const WeakDirection& w : m.weakest) {
@@ -39,7 +51,11 @@ nlohmann::json DesignJson(const DesignStudy& study) {
                         {"condition_number", m.condition_number},
                         {"weakest_directions", weakest},
                         {"seconds", m.seconds},
-                        {"optimized", !m.optimized_from.empty()}};
+                        {"optimized", !m.optimized_from.empty()},
+                        {"usable", m.unusable.empty()}};
+    if (!m.unusable.empty()) j["unusable_because"] = m.unusable;
+    // A shooting fit's sd beside the method's own, where the method is not a shooting fit.
+    if (m.shooting_sd != m.sd) j["shooting_fit_sd"] = bound;
     if (!m.optimized_from.empty()) j["optimized_from"] = m.optimized_from;
     if (k < study.checks.size() && study.checks[k]) {
       const SpreadCheck& c = *study.checks[k];
@@ -60,8 +76,9 @@ nlohmann::json DesignJson(const DesignStudy& study) {
           {"method", study.method},
           {"noise", study.noise},
           {"duration_s", study.duration_s},
+          {"parameters_of_interest", study.focus},
           {"maneuvers", maneuvers},
-          {"best", study.maneuvers.empty() ? "" : study.maneuvers[Best(study)].maneuver}};
+          {"best", AnyUsable(study) ? study.maneuvers[Best(study)].maneuver : ""}};
 }
 
 void WriteDesignFigure(const DesignStudy& study, const std::string& path) {
@@ -70,10 +87,14 @@ void WriteDesignFigure(const DesignStudy& study, const std::string& path) {
   Eigen::MatrixXd values(static_cast<Eigen::Index>(names.size()),
                          static_cast<Eigen::Index>(study.maneuvers.size()));
   for (size_t k = 0; k < study.maneuvers.size(); ++k) {
-    columns.push_back(study.maneuvers[k].maneuver);
+    columns.push_back(study.maneuvers[k].maneuver +
+                      (study.maneuvers[k].unusable.empty() ? "" : " (unusable)"));
+    // A maneuver the method cannot fit has no sd to show: its cells read n/a.
     for (size_t i = 0; i < names.size(); ++i)
       values(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) =
-          std::log10(std::max(100.0 * study.maneuvers[k].relative_sd[i], 1e-3));
+          study.maneuvers[k].unusable.empty()
+              ? std::log10(std::max(100.0 * study.maneuvers[k].relative_sd[i], 1e-3))
+              : std::numeric_limits<double>::quiet_NaN();
   }
   HeatMap map(names, columns, values);
   map.SetTitle(study.vessel + ", " + study.method + ": predicted sd of each parameter (" +

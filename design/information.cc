@@ -1,33 +1,63 @@
 #include "design/information.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "core/error.h"
+#include "design/eb_lr_information.h"
+#include "design/method_problem.h"
 #include "maneuvers/maneuver_factory.h"
+#include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid::design {
+namespace {
 
-RefitOptions MethodProblem(const std::string& vessel, const std::string& method) {
-  FindVessel(vessel);  // throws for an unknown vessel
-  RefitOptions o;
-  if (method == "refit") return o;
-  if (method == "fossen-ceres") {
-    if (vessel != "odin3dof")
-      throw InputError("design: fossen-ceres is designed for odin3dof only (its model is that "
-                       "vessel's), not " + vessel);
-    o.free = FindVessel(vessel).Info().params;  // all 10
-    o.prior_sd = 1e9;                            // none
-    o.segment_s = 10.0;                          // fossen-ceres' shooting segments
-    return o;
+double Spread(const Eigen::VectorXd& y) {
+  return std::sqrt((y.array() - y.mean()).square().mean());
+}
+
+// The criteria of the covariance `cov` (relative units) of the parameters of interest.
+void SetCriteria(const Eigen::MatrixXd& cov, const std::vector<std::string>& names,
+                 ManeuverInformation& m) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov);
+  // Information along each direction, largest variance (least information) first.
+  const Eigen::VectorXd mu = eig.eigenvalues().cwiseMax(eig.eigenvalues().maxCoeff() * 1e-300);
+  m.log_det = -mu.array().log().sum();
+  m.trace_inverse = cov.trace();
+  m.condition_number = mu.maxCoeff() / mu.minCoeff();
+  m.weakest.clear();
+  const Eigen::Index n = mu.size();
+  for (Eigen::Index k = n - 1; k >= std::max<Eigen::Index>(0, n - 2); --k) {
+    WeakDirection w;
+    w.eigenvalue = 1.0 / mu(k);
+    for (size_t i = 0; i < names.size(); ++i)
+      w.parameters.emplace_back(names[i], eig.eigenvectors()(static_cast<Eigen::Index>(i), k));
+    std::sort(w.parameters.begin(), w.parameters.end(),
+              [](const auto& a, const auto& b) { return std::abs(a.second) > std::abs(b.second); });
+    m.weakest.push_back(std::move(w));
   }
-  if (method == "gp" || method == "sindy")
-    throw InputError("design: --method " + method +
-                     " has no parameters to design a maneuver for (use refit or fossen-ceres)");
-  throw InputError("design: --method '" + method + "' is not supported (known: refit, fossen-ceres)");
+}
+
+void CheckFocus(const DesignProblem& problem, const std::vector<std::string>& names) {
+  for (const std::string& p : problem.focus)
+    if (std::find(names.begin(), names.end(), p) == names.end()) {
+      std::string list;
+      for (const std::string& k : names) list += (list.empty() ? "" : ", ") + k;
+      throw InputError("design: --parameters: " + problem.method + " on " + problem.vessel +
+                       " has no free parameter '" + p + "' (free: " + list + ")");
+    }
+}
+
+}  // namespace
+
+void CheckProblem(const DesignProblem& problem) {
+  const MethodProblem method = MethodProblemOf(problem.vessel, problem.method);
+  // refit's free parameters are known once its problem is built (InformationOf checks them).
+  if (!method.names.empty()) CheckFocus(problem, method.names);
 }
 
 Dataset SimulateManeuver(const std::string& vessel, const std::string& spec, double seconds,
@@ -46,57 +76,79 @@ NoiseModel ReferenceNoise(const Dataset& reference, const std::vector<std::strin
   NoiseModel out;
   for (const std::string& c : channels) {
     if (!reference.Has(c)) continue;
-    const Eigen::VectorXd& y = reference[c];
-    const double spread = std::sqrt((y.array() - y.mean()).square().mean());
+    const double spread = Spread(reference[c]);
     out[c] = noise * (spread > 0.0 ? spread : 1.0);
   }
   return out;
 }
 
-ManeuverInformation InformationOf(const std::string& vessel, const std::string& method,
-                                  const std::string& maneuver, double seconds,
-                                  const NoiseModel& noise, uint64_t seed) {
+Dataset NoisyRun(const DesignProblem& problem, const std::string& maneuver, uint64_t noise_seed) {
+  Dataset data = SimulateManeuver(problem.vessel, maneuver, problem.seconds, 1);
+  uint64_t stream = 0;
+  for (const auto& [channel, sd] : problem.noise) {
+    if (!data.Has(channel)) continue;
+    const double spread = Spread(data[channel]);
+    if (spread > 0.0) AddGaussianNoise(data, {channel}, sd / spread, noise_seed * 1000 + stream++);
+  }
+  return data;
+}
+
+ManeuverInformation InformationOf(const DesignProblem& problem, const std::string& maneuver,
+                                  uint64_t seed) {
   const auto t0 = std::chrono::steady_clock::now();
-  RefitOptions o = MethodProblem(vessel, method);
+  const MethodProblem method = MethodProblemOf(problem.vessel, problem.method);
+  RefitOptions o = method.refit;
   o.information_only = true;
-  o.noise_sd = noise;
-  const Dataset data = SimulateManeuver(vessel, maneuver, seconds, seed);
-  const VesselInfo& info = FindVessel(vessel).Info();
-  const RefitResult r = RefitVessel(vessel, data, info.default_params, o);
+  o.noise_sd = problem.noise;
+  const Dataset data = SimulateManeuver(problem.vessel, maneuver, problem.seconds, seed);
+  const VesselInfo& info = FindVessel(problem.vessel).Info();
+  const RefitResult r = RefitVessel(problem.vessel, data, info.default_params, o);
 
   ManeuverInformation m;
   m.maneuver = maneuver;
-  m.names = r.free;
+  m.names = method.names.empty() ? r.free : method.names;
   m.information = r.information;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(m.information);
   if (m.names.empty() || !(eig.eigenvalues().maxCoeff() > 0.0))
-    throw InputError("design: " + maneuver + " on " + vessel +
-                     " carries no information about the parameters of " + method);
+    throw InputError("design: " + maneuver + " on " + problem.vessel +
+                     " carries no information about the parameters of " + problem.method);
   // Directions with no information at all keep a finite, huge sd (1e-300 of the largest).
   const Eigen::VectorXd lambda = eig.eigenvalues().cwiseMax(eig.eigenvalues().maxCoeff() * 1e-300);
-  const Eigen::MatrixXd cov = eig.eigenvectors() * lambda.cwiseInverse().asDiagonal() *
-                              eig.eigenvectors().transpose();
-  m.log_det = lambda.array().log().sum();
-  m.trace_inverse = cov.trace();
-  m.condition_number = lambda.maxCoeff() / lambda.minCoeff();
-  for (size_t i = 0; i < m.names.size(); ++i) {
-    const size_t p = std::find(info.params.begin(), info.params.end(), m.names[i]) -
+  const Eigen::MatrixXd bound = eig.eigenvectors() * lambda.cwiseInverse().asDiagonal() *
+                                eig.eigenvectors().transpose();
+  // The method's own covariance: the bound, but for eb-lr, which uses part of the record.
+  Eigen::MatrixXd cov = bound;
+  const Dataset noisy = NoisyRun(problem, maneuver, 1);
+  const Probe probe = ProbeFit(problem.vessel, problem.method, noisy);
+  m.unusable = probe.unusable;
+  if (problem.method == "eb-lr" && m.unusable.empty()) {
+    std::vector<std::pair<double, double>> windows;
+    for (const auto& w : probe.model.at("eb_lr").at("steady_windows"))
+      windows.emplace_back(w.at("start_s"), w.at("end_s"));
+    cov = EbLrCovariance(r.information, data, noisy, windows, problem.noise);
+    m.information = cov.inverse();
+  }
+  for (size_t i = 0; i < r.free.size(); ++i) {
+    const size_t p = std::find(info.params.begin(), info.params.end(), r.free[i]) -
                      info.params.begin();
     const double value = info.default_params[p];
-    const double rel = std::sqrt(cov(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)));
+    const auto ii = static_cast<Eigen::Index>(i);
+    const double scale = value != 0.0 ? std::abs(value) : 1.0;
     m.values.push_back(value);
-    m.relative_sd.push_back(rel);
-    m.sd.push_back(rel * (value != 0.0 ? std::abs(value) : 1.0));
+    m.relative_sd.push_back(std::sqrt(cov(ii, ii)));
+    m.sd.push_back(m.relative_sd.back() * scale);
+    m.shooting_sd.push_back(std::sqrt(bound(ii, ii)) * scale);
   }
-  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(2, lambda.size()); ++k) {
-    WeakDirection w;
-    w.eigenvalue = eig.eigenvalues()(k);
-    for (size_t i = 0; i < m.names.size(); ++i)
-      w.parameters.emplace_back(m.names[i], eig.eigenvectors()(static_cast<Eigen::Index>(i), k));
-    std::sort(w.parameters.begin(), w.parameters.end(),
-              [](const auto& a, const auto& b) { return std::abs(a.second) > std::abs(b.second); });
-    m.weakest.push_back(std::move(w));
-  }
+  CheckFocus(problem, m.names);
+  std::vector<Eigen::Index> focus;
+  std::vector<std::string> focus_names;
+  for (size_t i = 0; i < m.names.size(); ++i)
+    if (problem.focus.empty() ||
+        std::find(problem.focus.begin(), problem.focus.end(), m.names[i]) != problem.focus.end()) {
+      focus.push_back(static_cast<Eigen::Index>(i));
+      focus_names.push_back(m.names[i]);
+    }
+  SetCriteria(cov(focus, focus), focus_names, m);
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return m;
 }

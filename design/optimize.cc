@@ -13,6 +13,7 @@ namespace {
 
 struct Knobs {
   std::vector<double> lo, hi;
+  bool integer = false;  // counts: each point is rounded to whole numbers
 };
 
 std::optional<Knobs> KnobsOf(const std::string& family, const VesselInfo& info) {
@@ -20,17 +21,18 @@ std::optional<Knobs> KnobsOf(const std::string& family, const VesselInfo& info) 
     const double full = info.actuation.yaw_is_angle ? info.actuation.yaw_full_deg : 35.0;
     return Knobs{{5.0, 5.0}, {std::max(5.5, full), 40.0}};
   }
+  if (family == "stepgrid") return Knobs{{2.0, 1.0}, {8.0, 5.0}, true};
   if (family == "random-steps") return Knobs{{1.0}, {60.0}};
   if (family == "prbs") return Knobs{{0.5}, {30.0}};
   if (family == "multisine") return Knobs{{0.02}, {1.0}};
   return std::nullopt;
 }
 
-std::string Spec(const std::string& family, const std::vector<double>& x) {
+std::string Spec(const std::string& family, const std::vector<double>& x, bool integer) {
   std::string spec = family + ":";
   for (size_t i = 0; i < x.size(); ++i) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", x[i]);
+    std::snprintf(buf, sizeof buf, "%.3g", integer ? std::round(x[i]) : x[i]);
     spec += (i > 0 ? "/" : "") + std::string(buf);
   }
   return spec;
@@ -38,17 +40,15 @@ std::string Spec(const std::string& family, const std::vector<double>& x) {
 
 }  // namespace
 
-std::optional<ManeuverInformation> OptimizeManeuver(const std::string& vessel,
-                                                    const std::string& method,
-                                                    const std::string& family, double seconds,
-                                                    const NoiseModel& noise, int evaluations) {
+std::optional<ManeuverInformation> OptimizeManeuver(const DesignProblem& problem,
+                                                    const std::string& family, int evaluations) {
   const std::string name = family.substr(0, family.find(':'));
-  const auto knobs = KnobsOf(name, FindVessel(vessel).Info());
+  const auto knobs = KnobsOf(name, FindVessel(problem.vessel).Info());
   if (!knobs) return std::nullopt;
   auto objective = [&](const std::vector<double>& x) {
     try {
-      const double v = InformationOf(vessel, method, Spec(name, x), seconds, noise).log_det;
-      return std::isfinite(v) ? v : -1e300;
+      const ManeuverInformation m = InformationOf(problem, Spec(name, x, knobs->integer));
+      return std::isfinite(m.log_det) && m.unusable.empty() ? m.log_det : -1e300;
     } catch (const std::exception&) {
       return -1e300;  // a design that cannot be simulated
     }
@@ -70,7 +70,7 @@ std::optional<ManeuverInformation> OptimizeManeuver(const std::string& vessel,
   } catch (const nlopt::roundoff_limited&) {
     // DIRECT-L stopped on round-off: x holds the best point found.
   }
-  return InformationOf(vessel, method, Spec(name, x), seconds, noise);
+  return InformationOf(problem, Spec(name, x, knobs->integer));
 }
 
 }  // namespace usvid::design

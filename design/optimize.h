@@ -5,8 +5,11 @@
 //   random-steps:H  hold time H in [1, 60] s
 //   prbs:C          clock period C in [0.5, 30] s
 //   multisine:F     top frequency F in [0.02, 1] Hz
+//   stepgrid:T/Y    thrust levels T in [2, 8], yaw levels Y (each side) in [1, 5], whole numbers
 // The levels and amplitudes are the maneuvers' own (they already span the actuators' range).
-// turning and stepgrid have no knob searched. The best point is written as a spec with three
+// turning has no knob searched. A design the method cannot fit (eb-lr without
+// steady windows) or that cannot be simulated scores nothing: the search stays where the method
+// works. The best point is written as a spec with three
 // significant digits and evaluated again as written, so the design reported is the one a person
 // can run.
 #pragma once
@@ -18,10 +21,9 @@
 
 namespace usvid::design {
 
-// nullopt for a family without knobs (turning, stepgrid).
-std::optional<ManeuverInformation> OptimizeManeuver(const std::string& vessel,
-                                                    const std::string& method,
-                                                    const std::string& family, double seconds,
-                                                    const NoiseModel& noise, int evaluations = 40);
+// nullopt for a family without knobs (turning).
+std::optional<ManeuverInformation> OptimizeManeuver(const DesignProblem& problem,
+                                                    const std::string& family,
+                                                    int evaluations = 40);
 
 }  // namespace usvid::design

@@ -5,33 +5,22 @@
 
 #include "core/error.h"
 #include "methods/identify.h"
-#include "sensors/noise.h"
 
 namespace usvid::design {
 
-SpreadCheck CheckSpread(const std::string& vessel, const std::string& method,
-                        const ManeuverInformation& predicted, double seconds,
-                        const NoiseModel& noise, int runs, int threads) {
+SpreadCheck CheckSpread(const DesignProblem& problem, const ManeuverInformation& predicted,
+                        int runs, int threads) {
   if (runs < 2) throw InputError("design: --check needs at least 2 runs, not " + std::to_string(runs));
   const size_t n = predicted.names.size();
   std::vector<std::vector<double>> estimates(static_cast<size_t>(runs));
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(1, threads))
   for (int k = 0; k < runs; ++k) {
     try {
-      // The maneuver as designed (its seed 1), with noise drawn from the run's own seed.
-      Dataset data = SimulateManeuver(vessel, predicted.maneuver, seconds, 1);
-      // Each channel's noise as the design assumed it (an absolute sd), drawn from the run's seed.
-      uint64_t stream = 0;
-      for (const auto& [channel, sd] : noise) {
-        const Eigen::VectorXd& y = data[channel];
-        const double spread = std::sqrt((y.array() - y.mean()).square().mean());
-        if (spread > 0.0)
-          AddGaussianNoise(data, {channel}, sd / spread,
-                           static_cast<uint64_t>(k + 1) * 1000 + stream++);
-      }
+      // The maneuver as designed, with noise drawn from the run's own seed.
+      const Dataset data = NoisyRun(problem, predicted.maneuver, static_cast<uint64_t>(k + 1));
       IdentifyRequest r;
-      r.method = method;
-      r.vessel = vessel;
+      r.method = problem.method;
+      r.vessel = problem.vessel;
       r.threads = 1;
       const nlohmann::json model = Identify(data, r);
       std::vector<double> p;

@@ -1,5 +1,6 @@
-// usvid design --vessel V --method refit|fossen-ceres --maneuvers M1,M2,... [--noise S]
-//              [--duration T] [--optimize] [--check N] [--threads N] --out DIR
+// usvid design --vessel V --method refit|fossen-ceres|eb-lr --maneuvers M1,M2,... [--noise S]
+//              [--duration T] [--parameters P1,P2,...] [--optimize] [--check N] [--threads N]
+//              --out DIR
 // Which sea trial to run, before running it: each maneuver's Fisher information for the
 // method's parameters (design/information.h), their predicted standard deviations, log det,
 // condition number and weakest directions; with --optimize, each family's knobs searched for the
@@ -24,29 +25,38 @@ namespace {
 
 struct DesignOptions {
   std::string vessel, method, out;
-  std::vector<std::string> maneuvers;
+  std::vector<std::string> maneuvers, parameters;
   double noise = 0.005, duration = 600.0;
   int check = 0, threads = 1;
   bool optimize = false;
 };
 
 void RunDesign(const DesignOptions& o) {
-  design::MethodProblem(o.vessel, o.method);  // a bad vessel or method before any work
+  design::DesignProblem problem;
+  problem.vessel = o.vessel;
+  problem.method = o.method;
+  problem.seconds = o.duration;
+  problem.focus = o.parameters;
+  design::CheckProblem(problem);  // a bad vessel, method or parameter before any work
   if (o.check == 1) throw InputError("--check: at least 2 runs to measure a spread");
+  // The sensors' noise, the same for every maneuver: a fraction of each state's spread on the
+  // first maneuver.
+  problem.noise = design::ReferenceNoise(
+      design::SimulateManeuver(o.vessel, o.maneuvers.at(0), o.duration, 1),
+      FindVessel(o.vessel).Info().states, o.noise);
   design::DesignStudy study;
   study.vessel = o.vessel;
   study.method = o.method;
   study.noise = o.noise;
   study.duration_s = o.duration;
-  // The sensors' noise, the same for every maneuver: a fraction of each state's spread on the
-  // first maneuver.
-  const design::NoiseModel noise = design::ReferenceNoise(
-      design::SimulateManeuver(o.vessel, o.maneuvers.at(0), o.duration, 1),
-      FindVessel(o.vessel).Info().states, o.noise);
+  study.focus = o.parameters;
   for (const std::string& m : o.maneuvers) {
-    study.maneuvers.push_back(design::InformationOf(o.vessel, o.method, m, o.duration, noise));
-    std::cerr << "usvid design: " << m << ": log det " << study.maneuvers.back().log_det
-              << ", condition " << study.maneuvers.back().condition_number << '\n';
+    study.maneuvers.push_back(design::InformationOf(problem, m));
+    const design::ManeuverInformation& info = study.maneuvers.back();
+    std::cerr << "usvid design: " << m << ": log det " << info.log_det << ", condition "
+              << info.condition_number
+              << (info.unusable.empty() ? "" : "; " + o.method + " cannot fit it: " + info.unusable)
+              << '\n';
   }
   if (o.optimize) {
     std::vector<std::string> families;
@@ -54,24 +64,24 @@ void RunDesign(const DesignOptions& o) {
       const std::string family = m.substr(0, m.find(':'));
       if (std::find(families.begin(), families.end(), family) != families.end()) continue;
       families.push_back(family);
-      auto best = design::OptimizeManeuver(o.vessel, o.method, family, o.duration, noise);
+      auto best = design::OptimizeManeuver(problem, family);
       if (!best) {
         std::cerr << "usvid design: " << family << " has no knob to optimise\n";
         continue;
       }
       best->optimized_from = family;
       std::cerr << "usvid design: optimised " << family << ": " << best->maneuver << ", log det "
-                << best->log_det << '\n';
+                << best->log_det << (best->unusable.empty() ? "" : " (no usable design found)")
+                << '\n';
       study.maneuvers.push_back(std::move(*best));
     }
   }
   for (const design::ManeuverInformation& m : study.maneuvers) {
-    if (o.check == 0) {
+    if (o.check == 0 || !m.unusable.empty()) {
       study.checks.emplace_back();
       continue;
     }
-    study.checks.push_back(
-        design::CheckSpread(o.vessel, o.method, m, o.duration, noise, o.check, o.threads));
+    study.checks.push_back(design::CheckSpread(problem, m, o.check, o.threads));
     std::cerr << "usvid design: " << m.maneuver << ": checked by " << o.check
               << " fits, median predicted/observed sd " << study.checks.back()->median_ratio
               << '\n';
@@ -79,8 +89,10 @@ void RunDesign(const DesignOptions& o) {
   EnsureOutputDirectory(o.out);
   WriteFileAtomically(o.out + "/design.json", design::DesignJson(study).dump(2) + "\n");
   design::WriteDesignFigure(study, o.out + "/design.svg");
-  std::cerr << "usvid design: best " << study.maneuvers[design::Best(study)].maneuver << "; wrote "
-            << o.out << "/design.json, design.svg\n";
+  std::cerr << "usvid design: best "
+            << (design::AnyUsable(study) ? study.maneuvers[design::Best(study)].maneuver
+                                         : "none (" + o.method + " can fit no maneuver listed)")
+            << "; wrote " << o.out << "/design.json, design.svg\n";
 }
 
 }  // namespace
@@ -91,7 +103,8 @@ void AddDesignCommand(CLI::App& app) {
       "design", "Which maneuver to run for a method: Fisher information through the simulator");
   cmd->add_option("--vessel", o->vessel, "Simulator whose trials are designed")->required();
   cmd->add_option("--method", o->method,
-                  "refit (the vessel's own coefficients) or fossen-ceres (odin3dof)")
+                  "refit (the vessel's own coefficients), fossen-ceres (odin3dof) or eb-lr "
+                  "(eb2dof)")
       ->required();
   cmd->add_option("--maneuvers", o->maneuvers,
                   "Maneuvers to compare, as `usvid simulate --maneuver` takes them")
@@ -101,6 +114,10 @@ void AddDesignCommand(CLI::App& app) {
                   "Measurement noise, a fraction of each channel's standard deviation on the "
                   "first maneuver (the same sensors for every maneuver)")
       ->capture_default_str();
+  cmd->add_option("--parameters", o->parameters,
+                  "Parameters of interest, as the method names them: the criteria are theirs, "
+                  "the others nuisances (default: all)")
+      ->delimiter(',');
   cmd->add_option("--duration", o->duration, "Trial length [s]")->capture_default_str();
   cmd->add_option("--check", o->check,
                   "Fit N seeded noisy runs of each maneuver and put their spread beside the "

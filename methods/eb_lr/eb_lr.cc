@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/parse_number.h"
 #include "methods/eb_lr/output_error.h"
+#include "methods/eb_lr/transient_pieces.h"
 #include "preprocessing/derivative.h"
 
 namespace usvid::eb_lr {
@@ -101,33 +102,6 @@ double Stieltjes(const Eigen::VectorXd& x, const Span& span, F f) {
   for (Eigen::Index k = span.first; k < span.last; ++k)
     sum += 0.5 * (f(k) + f(k + 1)) * (x(k + 1) - x(k));
   return sum;
-}
-
-// The runs of samples outside the windows, each reaching `margin` samples (at most half a
-// window) into the windows around it.
-std::vector<Span> TransientRuns(Eigen::Index n, const std::vector<Span>& windows,
-                                Eigen::Index margin) {
-  std::vector<int> window_of(n, -1);
-  for (size_t w = 0; w < windows.size(); ++w)
-    for (Eigen::Index k = windows[w].first; k <= windows[w].last; ++k)
-      window_of[k] = static_cast<int>(w);
-  std::vector<Span> runs;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    if (window_of[k] >= 0) continue;
-    Span run{k, k};
-    while (run.last + 1 < n && window_of[run.last + 1] < 0) ++run.last;
-    k = run.last;
-    if (run.first > 0) {
-      const Span& w = windows[window_of[run.first - 1]];
-      run.first = std::max(w.last - margin, (w.first + w.last) / 2);
-    }
-    if (run.last + 1 < n) {
-      const Span& w = windows[window_of[run.last + 1]];
-      run.last = std::min(w.first + margin, (w.first + w.last) / 2);
-    }
-    if (run.last > run.first) runs.push_back(run);
-  }
-  return runs;
 }
 
 // sigma from the steady windows, each corrected by what it still accelerates under the mass.
@@ -274,16 +248,9 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
                        "max_relative_rate)");
   const std::vector<Span> runs = TransientRuns(
       n, windows, static_cast<Eigen::Index>(std::round(options.transient_margin_s / dt)));
-  std::vector<Span> pieces;
-  const auto piece = std::max<Eigen::Index>(
-      1, static_cast<Eigen::Index>(std::round(options.transient_window_s / dt)));
-  for (const Span& run : runs)
-    for (Eigen::Index a = run.first; a < run.last;) {
-      Eigen::Index b = std::min(run.last, a + piece);
-      if (run.last - b < piece / 2) b = run.last;
-      pieces.push_back({a, b});
-      a = b;
-    }
+  const std::vector<Span> pieces = TransientPieces(
+      runs, std::max<Eigen::Index>(
+                1, static_cast<Eigen::Index>(std::round(options.transient_window_s / dt))));
   for (const Equation& e : eq)
     if (pieces.size() < e.mass_terms.size())
       throw InputError("eb-lr: " + std::to_string(pieces.size()) + " transient pieces; m_" +

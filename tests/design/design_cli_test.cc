@@ -61,6 +61,8 @@ TEST(DesignCliTest, RefusesBadRequestsAndWritesNothing) {
       "--vessel odin3dof --method fossen-ceres --maneuvers prbs --duration 0",
       "--vessel submarine --method refit --maneuvers prbs",
       "--vessel odin3dof --method fossen-ceres --maneuvers prbs --check 1",
+      "--vessel odin3dof --method fossen-ceres --maneuvers prbs --parameters Nr,warp",
+      "--vessel odin3dof --method eb-lr --maneuvers stepgrid",
   };
   for (const char* args : bad) {
     const auto r = RunUsvid(std::string("design ") + args + " --out " + out);
@@ -68,6 +70,25 @@ TEST(DesignCliTest, RefusesBadRequestsAndWritesNothing) {
     EXPECT_NE(r.err.find("error"), std::string::npos) << args;
     EXPECT_FALSE(std::filesystem::exists(out)) << args;
   }
+}
+
+// eb-lr through the binary (eb2dof): the step grid is the best trial eb-lr can fit; the zig-zag
+// is listed as unusable with eb-lr's reason and never best; each maneuver eb-lr fits carries a
+// shooting fit's sd beside eb-lr's own.
+TEST(DesignCliTest, DesignsForEbLr) {
+  const auto dir = FreshTempDir();
+  const std::string out = (dir / "design").string();
+  const auto r = RunUsvid(
+      "design --vessel eb2dof --method eb-lr --maneuvers stepgrid,random-steps,zigzag "
+      "--duration 600 --parameters sigma_U.U*U,sigma_U.U*U*U --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json d = ReadJsonFile(out + "/design.json");
+  EXPECT_EQ(d.at("best"), "stepgrid");
+  EXPECT_EQ(d.at("parameters_of_interest").size(), 2u);
+  const nlohmann::json& zigzag = d.at("maneuvers").at(2);
+  EXPECT_FALSE(zigzag.at("usable"));
+  EXPECT_NE(zigzag.at("unusable_because").get<std::string>().find("constant"), std::string::npos);
+  EXPECT_EQ(d.at("maneuvers").at(0).at("shooting_fit_sd").size(), 11u);
 }
 
 }  // namespace

@@ -1,0 +1,20 @@
+// The transients of a step experiment, where eb-lr fits the masses (eb_lr.h, step 3): the runs
+// of samples outside the steady windows, each reaching `margin` samples (at most half a window)
+// into the windows around it, cut into pieces of `piece` samples (a last piece shorter than half
+// of that joins the one before). Sample spans are inclusive.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "methods/eb_lr/steady_windows.h"
+
+namespace usvid::eb_lr {
+
+// n: the record's samples; windows in time order.
+std::vector<SteadyWindow> TransientRuns(Eigen::Index n, const std::vector<SteadyWindow>& windows,
+                                        Eigen::Index margin);
+
+std::vector<SteadyWindow> TransientPieces(const std::vector<SteadyWindow>& runs, Eigen::Index piece);
+
+}  // namespace usvid::eb_lr
