@@ -168,6 +168,117 @@ std::vector<EffectSearch> TermSearches(const std::vector<DiscoveredTerms>& disco
   return out;
 }
 
+// What a diagnosis works with throughout: the vessel's simulator and effect fitter, the nominal
+// parameters, the options and the log (may be null).
+struct Context {
+  const VesselSimulator& sim;
+  const EffectFitter& fitter;
+  const std::vector<double>& params;
+  const DiagnoseOptions& options;
+  std::ostream* log;
+};
+
+// The model extended by the causes named so far, its held-out error and the share of the
+// nominal model's excess error over the noise floor the causes explain.
+struct Extension {
+  MeasuredData model;
+  double error = 0.0;
+  double explained = 0.0;
+};
+
+// What was diagnosed: the vessel, the record and its parts, the nominal model.
+Diagnosis Describe(const Dataset& data, const std::string& vessel, const Context& cx,
+                   const MeasuredData& d) {
+  Diagnosis out;
+  out.vessel = vessel;
+  out.source = data.Source();
+  out.param_names = cx.sim.Info().params;
+  out.params = cx.params;
+  out.base_effects = cx.options.base_effects;
+  out.channels = d.channels;
+  out.segment_s = d.segment_s;
+  out.train_s = d.times[d.train.end - 1] - d.times[d.train.begin];
+  out.heldout_s = d.times[d.heldout.end - 1] - d.times[d.heldout.begin];
+  return out;
+}
+
+// Beyond the catalogue: the residual search proposes terms, and each competes as a candidate,
+// fitted through the simulator and scored on the held-out part like any effect. The candidates
+// are ranked again, all together.
+void AddDiscoveredTerms(const Context& cx, const Dataset& data, const MeasuredData& d,
+                        Diagnosis& out) {
+  if (cx.log) *cx.log << "diagnose: the catalogue leaves much of the residual; searching terms\n";
+  out.discovered = DiscoverMissingTerms(data, cx.sim, cx.fitter, cx.params, d);
+  std::vector<Candidate> all = std::move(out.candidates);
+  for (Candidate& c : FitCandidates(d, cx.fitter, cx.params, TermSearches(out.discovered, cx.sim),
+                                    out.nominal_error, out.noise_floor, out.effective_samples))
+    all.push_back(std::move(c));
+  for (Candidate& c : all) c.alike.clear();
+  out.candidates = Rank(std::move(all), out.nominal_error);
+}
+
+void LogCandidates(const Diagnosis& out, std::ostream& log) {
+  for (const Candidate& c : out.candidates)
+    log << "  " << EffectLabel(c.fit.effect) << ": held-out E " << c.heldout_error << " (nominal "
+        << out.nominal_error << ", floor " << out.noise_floor << "), LR " << c.likelihood_ratio
+        << ", " << c.seconds << " s\n";
+}
+
+// The cause found: the best candidate, added to the extended model.
+void AdoptCause(const Context& cx, const Candidate& best, Extension& ext, Diagnosis& out) {
+  out.cause = std::string(best.fit.effect.name());
+  out.cause_effect = best.fit.effect;
+  SetEffect(best.fit.effect, ext.model.base, cx.sim.Info().inputs, cx.sim.Info().states);
+  ext.error = best.heldout_error;
+  ext.explained = best.explained;
+}
+
+// Further causes named on the extended model while much is left: each round ranks the
+// candidates on the model extended so far and adds the best while it passes.
+void NameFurtherCauses(const Context& cx, const std::vector<EffectSearch>& searches, Extension& ext,
+                       Diagnosis& out) {
+  const double excess = out.nominal_error - out.noise_floor;
+  for (int round = 1; round < cx.options.max_causes && ext.explained < cx.options.further_explained;
+       ++round) {
+    const std::vector<Candidate> next =
+        RankEffects(ext.model, cx.fitter, cx.params, searches, ext.error, out.noise_floor,
+                    out.effective_samples);
+    const Candidate& c = next.front();
+    if (!Passes(c, ext.error, cx.options)) break;
+    FurtherCause f{c.fit.effect, c.alike,   c.likelihood_ratio,
+                   c.explained,  ext.error, c.heldout_error};
+    if (cx.log)
+      *cx.log << "diagnose: on the extended model, " << EffectLabel(c.fit.effect) << " (LR "
+              << c.likelihood_ratio << ")\n";
+    out.further_causes.push_back(f);
+    SetEffect(c.fit.effect, ext.model.base, cx.sim.Info().inputs, cx.sim.Info().states);
+    ext.error = c.heldout_error;
+    ext.explained = excess > 0 ? (out.nominal_error - ext.error) / excess : 1.0;
+  }
+}
+
+// The extended model's held-out error and fit, and the held-out series: measured, nominal and
+// extended.
+void MeasureExtended(const Context& cx, const MeasuredData& d, const MeasuredData& extended,
+                     const Eigen::VectorXd& nominal_held, Diagnosis& out) {
+  const Eigen::VectorXd extended_held =
+      cx.fitter.Residuals(extended, extended.heldout, cx.params, std::nullopt);
+  out.extended_error = MeanSquaredError(d, d.heldout, extended_held);
+  out.extended_fit_percent = FitPercentOf(d, d.heldout, extended_held);
+  out.heldout_error_reduction =
+      out.nominal_error > 0 ? 1.0 - std::sqrt(out.extended_error / out.nominal_error) : 0.0;
+  out.series.t = Eigen::Map<const Eigen::VectorXd>(d.times.data() + d.heldout.begin,
+                                                   d.heldout.end - d.heldout.begin);
+  for (Eigen::Index c = 0; c < static_cast<Eigen::Index>(d.channels.size()); ++c) {
+    Eigen::VectorXd m = d.measured.col(c).segment(d.heldout.begin, d.heldout.end - d.heldout.begin);
+    for (Eigen::Index k = 0; k < m.size(); ++k)
+      if (!d.sampled(d.heldout.begin + k, c)) m(k) = NAN;
+    out.series.measured[d.channels[c]] = m;
+  }
+  out.series.nominal = ModelSeries(d, d.heldout, nominal_held);
+  out.series.extended = ModelSeries(d, d.heldout, extended_held);
+}
+
 }  // namespace
 
 Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
@@ -178,17 +289,9 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   const EffectFitter& fitter = FindEffectFitter(vessel);
   MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
   d.base = ValuesOf(options.base_effects, sim.Info().inputs, sim.Info().states);
+  const Context cx{sim, fitter, params, options, log};
 
-  Diagnosis out;
-  out.vessel = vessel;
-  out.source = data.Source();
-  out.param_names = sim.Info().params;
-  out.params = params;
-  out.base_effects = options.base_effects;
-  out.channels = d.channels;
-  out.segment_s = d.segment_s;
-  out.train_s = d.times[d.train.end - 1] - d.times[d.train.begin];
-  out.heldout_s = d.times[d.heldout.end - 1] - d.times[d.heldout.begin];
+  Diagnosis out = Describe(data, vessel, cx, d);
 
   // 1. Show.
   const Eigen::VectorXd nominal_all = fitter.ResetResiduals(d, d.all, params, d.base);
@@ -212,74 +315,25 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   out.candidates = RankEffects(d, fitter, params, searches, out.nominal_error, out.noise_floor,
                                out.effective_samples);
   const bool visible = out.nominal_error > (1.0 + options.min_excess) * out.noise_floor;
-  // Beyond the catalogue: the residual is well above the noise and no effect explains most of
-  // it. The residual search proposes terms, and each competes as a candidate, fitted through
-  // the simulator and scored on the held-out part like any effect.
-  if (options.discover && visible && out.candidates.front().explained < options.min_explained) {
-    if (log) *log << "diagnose: the catalogue leaves much of the residual; searching terms\n";
-    out.discovered = DiscoverMissingTerms(data, sim, fitter, params, d);
-    std::vector<Candidate> all = std::move(out.candidates);
-    for (Candidate& c : FitCandidates(d, fitter, params, TermSearches(out.discovered, sim),
-                                      out.nominal_error, out.noise_floor, out.effective_samples))
-      all.push_back(std::move(c));
-    for (Candidate& c : all) c.alike.clear();
-    out.candidates = Rank(std::move(all), out.nominal_error);
-  }
-  if (log)
-    for (const Candidate& c : out.candidates)
-      *log << "  " << EffectLabel(c.fit.effect) << ": held-out E " << c.heldout_error
-           << " (nominal " << out.nominal_error << ", floor " << out.noise_floor << "), LR "
-           << c.likelihood_ratio << ", " << c.seconds << " s\n";
+  // Beyond the catalogue, when the residual is well above the noise and no effect explains most
+  // of it.
+  if (options.discover && visible && out.candidates.front().explained < options.min_explained)
+    AddDiscoveredTerms(cx, data, d, out);
+  if (log) LogCandidates(out, *log);
 
   const Candidate& best = out.candidates.front();
   const bool found = Passes(best, out.nominal_error, options);
 
   // 3. Extend and measure; name further causes on the extended model while much is left.
-  MeasuredData extended = d;
-  double error = out.nominal_error;
-  double explained = 0.0;
+  Extension ext{d, out.nominal_error, 0.0};
   if (found) {
-    out.cause = std::string(best.fit.effect.name());
-    out.cause_effect = best.fit.effect;
-    SetEffect(best.fit.effect, extended.base, sim.Info().inputs, sim.Info().states);
-    error = best.heldout_error;
-    explained = best.explained;
+    AdoptCause(cx, best, ext, out);
+    NameFurtherCauses(cx, searches, ext, out);
   }
-  const double excess = out.nominal_error - out.noise_floor;
-  for (int round = 1; found && round < options.max_causes && explained < options.further_explained;
-       ++round) {
-    const std::vector<Candidate> next = RankEffects(extended, fitter, params, searches, error,
-                                                    out.noise_floor, out.effective_samples);
-    const Candidate& c = next.front();
-    if (!Passes(c, error, options)) break;
-    FurtherCause f{c.fit.effect, c.alike, c.likelihood_ratio, c.explained, error, c.heldout_error};
-    if (log)
-      *log << "diagnose: on the extended model, " << EffectLabel(c.fit.effect) << " (LR "
-           << c.likelihood_ratio << ")\n";
-    out.further_causes.push_back(f);
-    SetEffect(c.fit.effect, extended.base, sim.Info().inputs, sim.Info().states);
-    error = c.heldout_error;
-    explained = excess > 0 ? (out.nominal_error - error) / excess : 1.0;
-  }
-  const Eigen::VectorXd extended_held =
-      fitter.Residuals(extended, extended.heldout, params, std::nullopt);
-  out.extended_error = MeanSquaredError(d, d.heldout, extended_held);
-  out.extended_fit_percent = FitPercentOf(d, d.heldout, extended_held);
-  out.heldout_error_reduction =
-      out.nominal_error > 0 ? 1.0 - std::sqrt(out.extended_error / out.nominal_error) : 0.0;
-  out.series.t = Eigen::Map<const Eigen::VectorXd>(d.times.data() + d.heldout.begin,
-                                                   d.heldout.end - d.heldout.begin);
-  for (Eigen::Index c = 0; c < static_cast<Eigen::Index>(d.channels.size()); ++c) {
-    Eigen::VectorXd m = d.measured.col(c).segment(d.heldout.begin, d.heldout.end - d.heldout.begin);
-    for (Eigen::Index k = 0; k < m.size(); ++k)
-      if (!d.sampled(d.heldout.begin + k, c)) m(k) = NAN;
-    out.series.measured[d.channels[c]] = m;
-  }
-  out.series.nominal = ModelSeries(d, d.heldout, nominal_held);
-  out.series.extended = ModelSeries(d, d.heldout, extended_held);
+  MeasureExtended(cx, d, ext.model, nominal_held, out);
 
   // What is left: the residual is well above the noise and the causes named leave much of it.
-  out.unexplained = visible && (!found || explained < options.min_explained);
+  out.unexplained = visible && (!found || ext.explained < options.min_explained);
   out.seconds = Seconds(start);
   return out;
 }

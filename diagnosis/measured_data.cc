@@ -30,6 +30,136 @@ Part MakePart(const MeasuredData& d, Eigen::Index begin, Eigen::Index end, doubl
   return part;
 }
 
+// Whether a channel's samples move: one that never does (a bucket held open) has no fit to
+// score.
+bool Moves(const Channel& c, Eigen::Index rows) {
+  std::vector<double> v;
+  for (Eigen::Index k = 0; k < rows; ++k)
+    if (c.sampled(k)) v.push_back(c.values(k));
+  const Eigen::Map<const Eigen::ArrayXd> a(v.data(), static_cast<Eigen::Index>(v.size()));
+  const double sd = std::sqrt((a - a.mean()).square().mean());
+  return sd > 1e-6 * (1.0 + a.abs().mean());
+}
+
+// Scored channels: the vessel's states that the data measure (with two samples or more) and
+// that move. Throws InputError when there are none.
+void ChooseChannels(const Dataset& data, const VesselInfo& info, MeasuredData& d) {
+  d.state_channel.assign(info.states.size(), -1);
+  for (size_t i = 0; i < info.states.size(); ++i) {
+    const Channel* c = data.Find(info.states[i]);
+    if (c == nullptr || c->sampled.count() < 2) continue;
+    if (!Moves(*c, data.rows())) continue;
+    d.state_channel[i] = static_cast<int>(d.channels.size());
+    d.channels.push_back(info.states[i]);
+    d.channel_state.push_back(static_cast<int>(i));
+  }
+  if (d.channels.empty()) {
+    std::string states;
+    for (const std::string& s : info.states) states += (states.empty() ? "" : ", ") + s;
+    throw InputError(data.SourcePrefix() + "no state column of vessel " + info.name + " (" +
+                     states + ")");
+  }
+}
+
+// The scored channels' samples (0 where unsampled) and where they are sampled.
+void CopyMeasurements(const Dataset& data, MeasuredData& d) {
+  const auto n = data.rows();
+  const auto channels = static_cast<Eigen::Index>(d.channels.size());
+  d.measured = Eigen::MatrixXd::Zero(n, channels);
+  d.sampled.resize(n, channels);
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    const Channel& ch = data.Get(d.channels[c]);
+    d.sampled.col(c) = ch.sampled;
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (ch.sampled(k)) d.measured(k, c) = ch.values(k);
+  }
+}
+
+// Smoothed values for the resets, the heading unwrapped first, and each channel's noise sd
+// (channels with fewer than 8 samples are left as measured, their noise 0).
+void SmoothResets(const VesselInfo& info, MeasuredData& d) {
+  const Eigen::Index n = d.measured.rows();
+  const auto channels = static_cast<Eigen::Index>(d.channels.size());
+  d.reset = d.measured;
+  d.noise_sd.assign(channels, 0.0);
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    std::vector<Eigen::Index> rows;
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (d.sampled(k, c)) rows.push_back(k);
+    if (rows.size() < 8) continue;
+    Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
+    for (size_t i = 0; i < rows.size(); ++i)
+      y(static_cast<Eigen::Index>(i)) = d.measured(rows[i], c);
+    const bool angle =
+        info.actuation.heading_state >= 0 && d.channel_state[c] == info.actuation.heading_state;
+    if (angle)
+      for (Eigen::Index i = 1; i < y.size(); ++i)
+        y(i) -= 2.0 * std::numbers::pi * std::round((y(i) - y(i - 1)) / (2.0 * std::numbers::pi));
+    const double dt =
+        (d.times[rows.back()] - d.times[rows.front()]) / static_cast<double>(rows.size() - 1);
+    const SmoothingSplineResult s = SmoothingSpline(y, dt);
+    for (size_t i = 0; i < rows.size(); ++i)
+      d.reset(rows[i], c) = s.value(static_cast<Eigen::Index>(i));
+    d.noise_sd[c] = s.noise_sd;
+  }
+}
+
+// Split by time: the last heldout_fraction of the record is held out. Throws InputError when
+// either part has fewer than 20 rows.
+void SplitParts(const Dataset& data, double heldout_fraction, MeasuredData& d) {
+  const auto n = data.rows();
+  const double split_t = d.times.front() + (1.0 - heldout_fraction) * data.duration();
+  Eigen::Index split = 0;
+  while (split < n && d.times[split] < split_t) ++split;
+  constexpr Eigen::Index kMinRows = 20;
+  if (split < kMinRows || n - split < kMinRows)
+    throw InputError(data.SourcePrefix() + "too few rows to diagnose (" + std::to_string(n) +
+                     "): need at least " + std::to_string(2 * kMinRows));
+  d.all = MakePart(d, 0, n, d.segment_s);
+  d.train = MakePart(d, 0, split, d.segment_s);
+  d.heldout = MakePart(d, split, n, d.segment_s);
+}
+
+// Scale: the RMS change of each channel from its segment's first row.
+void ComputeScales(MeasuredData& d) {
+  const auto channels = static_cast<Eigen::Index>(d.channels.size());
+  d.scale.assign(channels, 0.0);
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    double sum = 0.0, mean_abs = 0.0;
+    long count = 0;
+    for (size_t s = 0; s < d.all.starts.size(); ++s) {
+      const auto [a, b] = SegmentRows(d.all, s);
+      for (Eigen::Index k = a; k < b; ++k) {
+        if (!d.sampled(k, c)) continue;
+        const double change = d.measured(k, c) - d.measured(a, c);
+        sum += change * change;
+        mean_abs += std::abs(d.measured(k, c));
+        ++count;
+      }
+    }
+    const double rms = count > 0 ? std::sqrt(sum / count) : 0.0;
+    const double floor = 1e-6 * (1.0 + (count > 0 ? mean_abs / count : 0.0));
+    d.scale[c] = std::max(rms, floor);
+  }
+}
+
+// Fallback for unmeasured states: the nominal free run, its last row held if it diverged.
+void FallbackStates(const Dataset& data, const VesselSimulator& sim,
+                    const std::vector<double>& nominal_params, MeasuredData& d) {
+  const VesselInfo& info = sim.Info();
+  const auto n = data.rows();
+  RunOptions run;
+  run.dt = d.max_step;  // as resolved above: options.max_step 0 means the data's interval
+  const SimulationResult free = sim.RunInputs(data, nominal_params, {}, run);
+  d.fallback_states = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(info.states.size()));
+  for (size_t i = 0; i < info.states.size(); ++i) {
+    const Eigen::VectorXd& x = free.data[info.states[i]];
+    for (Eigen::Index k = 0; k < n; ++k)
+      d.fallback_states(k, static_cast<Eigen::Index>(i)) =
+          x.size() > 0 ? x(std::min(k, x.size() - 1)) : 0.0;
+  }
+}
+
 }  // namespace
 
 MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim,
@@ -58,107 +188,15 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
       throw InputError(where + "input column '" + name + "' is empty");
   d.peak_command = d.inputs.PeakAbs();
 
-  // Scored channels: the vessel's states that the data measure.
-  d.state_channel.assign(info.states.size(), -1);
-  for (size_t i = 0; i < info.states.size(); ++i) {
-    const Channel* c = data.Find(info.states[i]);
-    if (c == nullptr || c->sampled.count() < 2) continue;
-    // A channel that never moves (a bucket held open) has no fit to score.
-    std::vector<double> v;
-    for (Eigen::Index k = 0; k < data.rows(); ++k)
-      if (c->sampled(k)) v.push_back(c->values(k));
-    const Eigen::Map<const Eigen::ArrayXd> a(v.data(), static_cast<Eigen::Index>(v.size()));
-    const double sd = std::sqrt((a - a.mean()).square().mean());
-    if (!(sd > 1e-6 * (1.0 + a.abs().mean()))) continue;
-    d.state_channel[i] = static_cast<int>(d.channels.size());
-    d.channels.push_back(info.states[i]);
-    d.channel_state.push_back(static_cast<int>(i));
-  }
-  if (d.channels.empty()) {
-    std::string states;
-    for (const std::string& s : info.states) states += (states.empty() ? "" : ", ") + s;
-    throw InputError(where + "no state column of vessel " + info.name + " (" + states + ")");
-  }
-  const auto n = data.rows();
-  const auto channels = static_cast<Eigen::Index>(d.channels.size());
-  d.measured = Eigen::MatrixXd::Zero(n, channels);
-  d.sampled.resize(n, channels);
-  for (Eigen::Index c = 0; c < channels; ++c) {
-    const Channel& ch = data.Get(d.channels[c]);
-    d.sampled.col(c) = ch.sampled;
-    for (Eigen::Index k = 0; k < n; ++k)
-      if (ch.sampled(k)) d.measured(k, c) = ch.values(k);
-  }
-  // Smoothed values for the resets; the heading unwrapped first.
-  d.reset = d.measured;
-  d.noise_sd.assign(channels, 0.0);
-  for (Eigen::Index c = 0; c < channels; ++c) {
-    std::vector<Eigen::Index> rows;
-    for (Eigen::Index k = 0; k < n; ++k)
-      if (d.sampled(k, c)) rows.push_back(k);
-    if (rows.size() < 8) continue;
-    Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
-    for (size_t i = 0; i < rows.size(); ++i)
-      y(static_cast<Eigen::Index>(i)) = d.measured(rows[i], c);
-    const bool angle =
-        info.actuation.heading_state >= 0 && d.channel_state[c] == info.actuation.heading_state;
-    if (angle)
-      for (Eigen::Index i = 1; i < y.size(); ++i)
-        y(i) -= 2.0 * std::numbers::pi * std::round((y(i) - y(i - 1)) / (2.0 * std::numbers::pi));
-    const double dt =
-        (d.times[rows.back()] - d.times[rows.front()]) / static_cast<double>(rows.size() - 1);
-    const SmoothingSplineResult s = SmoothingSpline(y, dt);
-    for (size_t i = 0; i < rows.size(); ++i)
-      d.reset(rows[i], c) = s.value(static_cast<Eigen::Index>(i));
-    d.noise_sd[c] = s.noise_sd;
-  }
+  ChooseChannels(data, info, d);
+  CopyMeasurements(data, d);
+  SmoothResets(info, d);
   if (info.actuation.rate_state >= 0) d.rate_channel = d.state_channel[info.actuation.rate_state];
   if (info.actuation.heading_state >= 0)
     d.heading_channel = d.state_channel[info.actuation.heading_state];
-
-  // Split by time: the last heldout_fraction of the record is held out.
-  const double split_t = d.times.front() + (1.0 - options.heldout_fraction) * data.duration();
-  Eigen::Index split = 0;
-  while (split < n && d.times[split] < split_t) ++split;
-  constexpr Eigen::Index kMinRows = 20;
-  if (split < kMinRows || n - split < kMinRows)
-    throw InputError(where + "too few rows to diagnose (" + std::to_string(n) +
-                     "): need at least " + std::to_string(2 * kMinRows));
-  d.all = MakePart(d, 0, n, d.segment_s);
-  d.train = MakePart(d, 0, split, d.segment_s);
-  d.heldout = MakePart(d, split, n, d.segment_s);
-
-  // Scale: the RMS change of each channel from its segment's first row.
-  d.scale.assign(channels, 0.0);
-  for (Eigen::Index c = 0; c < channels; ++c) {
-    double sum = 0.0, mean_abs = 0.0;
-    long count = 0;
-    for (size_t s = 0; s < d.all.starts.size(); ++s) {
-      const auto [a, b] = SegmentRows(d.all, s);
-      for (Eigen::Index k = a; k < b; ++k) {
-        if (!d.sampled(k, c)) continue;
-        const double change = d.measured(k, c) - d.measured(a, c);
-        sum += change * change;
-        mean_abs += std::abs(d.measured(k, c));
-        ++count;
-      }
-    }
-    const double rms = count > 0 ? std::sqrt(sum / count) : 0.0;
-    const double floor = 1e-6 * (1.0 + (count > 0 ? mean_abs / count : 0.0));
-    d.scale[c] = std::max(rms, floor);
-  }
-
-  // Fallback for unmeasured states: the nominal free run, its last row held if it diverged.
-  RunOptions run;
-  run.dt = d.max_step;  // as resolved above: options.max_step 0 means the data's interval
-  const SimulationResult free = sim.RunInputs(data, nominal_params, {}, run);
-  d.fallback_states = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(info.states.size()));
-  for (size_t i = 0; i < info.states.size(); ++i) {
-    const Eigen::VectorXd& x = free.data[info.states[i]];
-    for (Eigen::Index k = 0; k < n; ++k)
-      d.fallback_states(k, static_cast<Eigen::Index>(i)) =
-          x.size() > 0 ? x(std::min(k, x.size() - 1)) : 0.0;
-  }
+  SplitParts(data, options.heldout_fraction, d);
+  ComputeScales(d);
+  FallbackStates(data, sim, nominal_params, d);
   return d;
 }
 

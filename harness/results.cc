@@ -180,6 +180,139 @@ void ClosedLoopTables(const Suite& suite, const std::vector<ResultRow>& rows,
   }
 }
 
+// Per method, the median fit of each test maneuver, pooled over training maneuvers, noise and
+// seeds.
+void MethodByTestTable(const Suite& suite, const std::vector<ResultRow>& rows,
+                       const std::string& vessel, const std::set<std::string>& methods,
+                       std::ostringstream& md) {
+  md << "\n### Method x test maneuver (pooled over training maneuvers, noise and seeds)\n\n"
+        "| method |";
+  for (const std::string& t : suite.test_maneuvers) md << ' ' << t << " |";
+  md << "\n| --- |";
+  for (size_t i = 0; i < suite.test_maneuvers.size(); ++i) md << " --- |";
+  md << '\n';
+  const auto g = Group<std::pair<std::string, std::string>>(
+      rows, [&](const ResultRow& r) { return r.vessel == vessel; },
+      [](const ResultRow& r) { return std::make_pair(r.method, r.test_maneuver); });
+  for (const std::string& m : methods) {
+    bool any = false;
+    for (const std::string& t : suite.test_maneuvers) any = any || g.count({m, t});
+    if (!any) continue;
+    md << "| " << m << " |";
+    for (const std::string& t : suite.test_maneuvers) {
+      const auto it = g.find({m, t});
+      md << ' ' << Cell(it == g.end() ? std::vector<double>{} : it->second) << " |";
+    }
+    md << '\n';
+  }
+}
+
+// Structure and complexity per method, over every scored row of this vessel.
+void StructureTable(const std::vector<ResultRow>& rows, const std::string& vessel,
+                    std::ostringstream& md) {
+  std::map<std::string, std::vector<double>> prec, rec, terms, perr;
+  for (const ResultRow& r : rows) {
+    if (r.vessel != vessel || r.status != "ok") continue;
+    terms[r.method].push_back(r.terms);
+    if (r.precision) prec[r.method].push_back(*r.precision);
+    if (r.recall) rec[r.method].push_back(*r.recall);
+    if (r.parameter_error) perr[r.method].push_back(100.0 * *r.parameter_error);
+  }
+  md << "\n### Structure (term precision / recall against the true equations), size, "
+        "parameter error\n\n| method | precision | recall | terms | worst parameter error % |\n"
+        "| --- | --- | --- | --- | --- |\n";
+  for (const auto& [m, t] : terms)
+    md << "| " << m << " | " << Cell(prec[m]) << " | " << Cell(rec[m]) << " | " << Cell(t) << " | "
+       << Cell(perr[m]) << " |\n";
+}
+
+// One method's table of training x test maneuver, and the training maneuver with the best
+// median fit on the other maneuvers.
+void GeneralisationTable(const Suite& suite, const std::vector<ResultRow>& rows,
+                         const std::string& vessel, const std::string& m, std::ostringstream& md) {
+  const auto gm = Group<std::pair<std::string, std::string>>(
+      rows, [&](const ResultRow& r) { return r.vessel == vessel && r.method == m; },
+      [](const ResultRow& r) { return std::make_pair(r.train_maneuver, r.test_maneuver); });
+  if (gm.empty()) return;
+  md << "**" << m << "**\n\n| trained on \\ tested on |";
+  for (const std::string& t : suite.test_maneuvers) md << ' ' << t << " |";
+  md << "\n| --- |";
+  for (size_t i = 0; i < suite.test_maneuvers.size(); ++i) md << " --- |";
+  md << '\n';
+  std::string best;
+  double best_other = -INFINITY;
+  for (const std::string& train : suite.train_maneuvers) {
+    bool any = false;
+    for (const std::string& t : suite.test_maneuvers) any = any || gm.count({train, t});
+    if (!any) continue;
+    md << "| " << train << " |";
+    std::vector<double> others;
+    for (const std::string& t : suite.test_maneuvers) {
+      const auto it = gm.find({train, t});
+      md << ' ' << Cell(it == gm.end() ? std::vector<double>{} : it->second) << " |";
+      if (it != gm.end() && t != train)
+        others.insert(others.end(), it->second.begin(), it->second.end());
+    }
+    md << '\n';
+    if (!others.empty() && Median(others) > best_other) {
+      best_other = Median(others);
+      best = train;
+    }
+  }
+  if (!best.empty()) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.1f", best_other);
+    md << "\nBest training maneuver for " << m << " on " << vessel << ": **" << best
+       << "** (median fit " << buf << " % on the other maneuvers).\n";
+  }
+  md << '\n';
+}
+
+// The maneuver design question per speed regime: which training maneuver gives the best
+// median held-out fit on the rows of the other test maneuvers in each regime.
+void BestPerRegimeTable(const std::vector<ResultRow>& rows, const std::set<std::string>& vessels,
+                        const std::set<std::string>& methods, std::ostringstream& md) {
+  md << "## Best training maneuver per speed regime\n\n| vessel | method | displacement | "
+        "semi-displacement | planing |\n| --- | --- | --- | --- | --- |\n";
+  for (const std::string& vessel : vessels)
+    for (const std::string& m : methods) {
+      std::map<std::string, std::map<std::string, std::vector<double>>> by;  // regime, train
+      for (const ResultRow& r : rows)
+        if (r.vessel == vessel && r.method == m && r.status == "ok" &&
+            r.train_maneuver != r.test_maneuver)
+          for (const auto& [regime, fit] : r.regime_fit_percent)
+            by[regime][r.train_maneuver].push_back(fit);
+      if (by.empty()) continue;
+      md << "| " << vessel << " | " << m << " |";
+      for (const char* regime : {"displacement", "semi-displacement", "planing"}) {
+        std::string best = "n/a";
+        double best_fit = -INFINITY;
+        for (const auto& [train, fits] : by[regime]) {
+          const double median = Median(fits);
+          if (median > best_fit) {
+            best_fit = median;
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "%s (%.1f)", train.c_str(), median);
+            best = buf;
+          }
+        }
+        md << ' ' << best << " |";
+      }
+      md << '\n';
+    }
+  md << '\n';
+}
+
+// Each distinct failure (vessel, training maneuver, method and message) once.
+void FailedList(const std::vector<ResultRow>& rows, std::ostringstream& md) {
+  md << "## Failed\n\n";
+  std::set<std::string> seen;
+  for (const ResultRow& r : rows)
+    if (r.status != "ok" && seen.insert(r.vessel + r.train_maneuver + r.method + r.status).second)
+      md << "- " << r.vessel << " / " << r.train_maneuver << " / " << r.method << ": " << r.status
+         << '\n';
+}
+
 }  // namespace
 
 nlohmann::json ResultsJson(const Suite& suite, const std::vector<ResultRow>& rows, double seconds) {
@@ -254,121 +387,14 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
     md << "## " << vessel << "\n";
     HeadlineTables(suite, rows, vessel, methods, md);
     ClosedLoopTables(suite, rows, vessel, methods, md);
-    md << "\n### Method x test maneuver (pooled over training maneuvers, noise and seeds)\n\n"
-          "| method |";
-    for (const std::string& t : suite.test_maneuvers) md << ' ' << t << " |";
-    md << "\n| --- |";
-    for (size_t i = 0; i < suite.test_maneuvers.size(); ++i) md << " --- |";
-    md << '\n';
-    const auto g = Group<std::pair<std::string, std::string>>(
-        rows, [&](const ResultRow& r) { return r.vessel == vessel; },
-        [](const ResultRow& r) { return std::make_pair(r.method, r.test_maneuver); });
-    for (const std::string& m : methods) {
-      bool any = false;
-      for (const std::string& t : suite.test_maneuvers) any = any || g.count({m, t});
-      if (!any) continue;
-      md << "| " << m << " |";
-      for (const std::string& t : suite.test_maneuvers) {
-        const auto it = g.find({m, t});
-        md << ' ' << Cell(it == g.end() ? std::vector<double>{} : it->second) << " |";
-      }
-      md << '\n';
-    }
+    MethodByTestTable(suite, rows, vessel, methods, md);
     if (suite.Measured()) PerChannelTables(suite, rows, vessel, methods, md);
-    // Structure and complexity per method, over every scored row of this vessel.
-    std::map<std::string, std::vector<double>> prec, rec, terms, perr;
-    for (const ResultRow& r : rows) {
-      if (r.vessel != vessel || r.status != "ok") continue;
-      terms[r.method].push_back(r.terms);
-      if (r.precision) prec[r.method].push_back(*r.precision);
-      if (r.recall) rec[r.method].push_back(*r.recall);
-      if (r.parameter_error) perr[r.method].push_back(100.0 * *r.parameter_error);
-    }
-    md << "\n### Structure (term precision / recall against the true equations), size, "
-          "parameter error\n\n| method | precision | recall | terms | worst parameter error % |\n"
-          "| --- | --- | --- | --- | --- |\n";
-    for (const auto& [m, t] : terms)
-      md << "| " << m << " | " << Cell(prec[m]) << " | " << Cell(rec[m]) << " | " << Cell(t)
-         << " | " << Cell(perr[m]) << " |\n";
+    StructureTable(rows, vessel, md);
     md << "\n### Training x test maneuver, per method (generalisation)\n\n";
-    for (const std::string& m : methods) {
-      const auto gm = Group<std::pair<std::string, std::string>>(
-          rows, [&](const ResultRow& r) { return r.vessel == vessel && r.method == m; },
-          [](const ResultRow& r) { return std::make_pair(r.train_maneuver, r.test_maneuver); });
-      if (gm.empty()) continue;
-      md << "**" << m << "**\n\n| trained on \\ tested on |";
-      for (const std::string& t : suite.test_maneuvers) md << ' ' << t << " |";
-      md << "\n| --- |";
-      for (size_t i = 0; i < suite.test_maneuvers.size(); ++i) md << " --- |";
-      md << '\n';
-      std::string best;
-      double best_other = -INFINITY;
-      for (const std::string& train : suite.train_maneuvers) {
-        bool any = false;
-        for (const std::string& t : suite.test_maneuvers) any = any || gm.count({train, t});
-        if (!any) continue;
-        md << "| " << train << " |";
-        std::vector<double> others;
-        for (const std::string& t : suite.test_maneuvers) {
-          const auto it = gm.find({train, t});
-          md << ' ' << Cell(it == gm.end() ? std::vector<double>{} : it->second) << " |";
-          if (it != gm.end() && t != train)
-            others.insert(others.end(), it->second.begin(), it->second.end());
-        }
-        md << '\n';
-        if (!others.empty() && Median(others) > best_other) {
-          best_other = Median(others);
-          best = train;
-        }
-      }
-      if (!best.empty()) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%.1f", best_other);
-        md << "\nBest training maneuver for " << m << " on " << vessel << ": **" << best
-           << "** (median fit " << buf << " % on the other maneuvers).\n";
-      }
-      md << '\n';
-    }
+    for (const std::string& m : methods) GeneralisationTable(suite, rows, vessel, m, md);
   }
-  // The maneuver design question per speed regime: which training maneuver gives the best
-  // median held-out fit on the rows of the other test maneuvers in each regime.
-  md << "## Best training maneuver per speed regime\n\n| vessel | method | displacement | "
-        "semi-displacement | planing |\n| --- | --- | --- | --- | --- |\n";
-  for (const std::string& vessel : vessels)
-    for (const std::string& m : methods) {
-      std::map<std::string, std::map<std::string, std::vector<double>>> by;  // regime, train
-      for (const ResultRow& r : rows)
-        if (r.vessel == vessel && r.method == m && r.status == "ok" &&
-            r.train_maneuver != r.test_maneuver)
-          for (const auto& [regime, fit] : r.regime_fit_percent)
-            by[regime][r.train_maneuver].push_back(fit);
-      if (by.empty()) continue;
-      md << "| " << vessel << " | " << m << " |";
-      for (const char* regime : {"displacement", "semi-displacement", "planing"}) {
-        std::string best = "n/a";
-        double best_fit = -INFINITY;
-        for (const auto& [train, fits] : by[regime]) {
-          const double median = Median(fits);
-          if (median > best_fit) {
-            best_fit = median;
-            char buf[96];
-            std::snprintf(buf, sizeof buf, "%s (%.1f)", train.c_str(), median);
-            best = buf;
-          }
-        }
-        md << ' ' << best << " |";
-      }
-      md << '\n';
-    }
-  md << '\n';
-  if (failed > 0) {
-    md << "## Failed\n\n";
-    std::set<std::string> seen;
-    for (const ResultRow& r : rows)
-      if (r.status != "ok" && seen.insert(r.vessel + r.train_maneuver + r.method + r.status).second)
-        md << "- " << r.vessel << " / " << r.train_maneuver << " / " << r.method << ": " << r.status
-           << '\n';
-  }
+  BestPerRegimeTable(rows, vessels, methods, md);
+  if (failed > 0) FailedList(rows, md);
   return md.str();
 }
 

@@ -121,139 +121,229 @@ ClosedLoopReplay ReplayVesselModel(const nlohmann::json& model, Maneuver& maneuv
   return out;
 }
 
-ClosedLoopReplay ReplayEquationModel(const nlohmann::json& model, const VesselInfo& info,
-                                     Maneuver& maneuver, const Dataset& recorded) {
-  const Actuation& act = info.actuation;
-  const EquationModel system(model, [&](const std::string& c) { return recorded.Has(c); });
-  const std::vector<std::string>& channels = system.Channels();
-  auto command_index = [&](const std::string& name) {
-    const auto it = std::ranges::find(act.input_names, name);
-    return it == act.input_names.end() ? -1 : static_cast<int>(it - act.input_names.begin());
-  };
-  const bool jet_forces = model.contains("preprocessing") &&
-                          model["preprocessing"].value("forces", nlohmann::json()) == "waterjet";
-  // Each input's source: a command, an actuator state, or a jet force from the actuator states.
-  enum class Kind { kCommand, kActuator, kForce };
-  std::vector<std::pair<Kind, int>> sources;
+// Each input's source: a command, an actuator state, or a jet force from the actuator states.
+enum class SourceKind { kCommand, kActuator, kForce };
+
+// Where each of an equation model's inputs comes from (the index of its command, actuator
+// state or jet force), and the actuator states the inputs need.
+struct InputSources {
+  std::vector<std::pair<SourceKind, int>> sources;
   std::vector<ActuatorState> actuators;
-  auto actuator = [&](const std::string& state) -> int {
-    for (size_t i = 0; i < actuators.size(); ++i)
-      if (actuators[i].channel == state) return static_cast<int>(i);
-    ActuatorState a;
-    a.channel = state;
-    for (const auto& [command, s] : kWaterjetActuators)
-      if (s == state) a.command = command_index(command);
-    if (a.command < 0 || !recorded.Has(state) || !recorded.Has(act.input_names[a.command]))
-      throw InputError("the record lacks '" + state + "' or its command");
-    if (Varies(recorded[act.input_names[a.command]])) {
-      a.model = IdentifyActuator(recorded, act.input_names[a.command], state);
-    } else {
-      a.value = SampledMedian(recorded[state]);
-    }
-    actuators.push_back(a);
-    return static_cast<int>(actuators.size() - 1);
-  };
+  std::array<int, 3> jet = {-1, -1, -1};  // the jet states among the actuators (-1: none)
+  bool any_force = false;
+};
+
+// The model's states (x, in its channels' order) and the actuator states (y).
+struct ReplayState {
+  Eigen::VectorXd x;
+  std::vector<double> y;
+};
+
+// The replay's time grid: the record's sample period, split into integration steps of at most
+// kMaxStep, over the record's duration.
+struct ReplayClock {
+  double period = 0.0;
+  int substeps = 1;
+  double h = 0.0;  // the integration step
+  long ticks = 0;  // samples
+};
+
+ReplayClock ClockFor(const Dataset& recorded) {
+  ReplayClock c;
+  c.period = 1.0 / SampleRate(recorded);
+  c.substeps = std::max(1, static_cast<int>(std::ceil(c.period / kMaxStep - 1e-9)));
+  c.h = c.period / c.substeps;
+  c.ticks = static_cast<long>(std::floor(recorded.duration() / c.period + 1e-9)) + 1;
+  return c;
+}
+
+// Whether the model's inputs include jet forces computed from the actuator states.
+bool JetForces(const nlohmann::json& model) {
+  return model.contains("preprocessing") &&
+         model["preprocessing"].value("forces", nlohmann::json()) == "waterjet";
+}
+
+// The input index of the command `name`, or -1.
+int CommandIndex(const Actuation& act, const std::string& name) {
+  const auto it = std::ranges::find(act.input_names, name);
+  return it == act.input_names.end() ? -1 : static_cast<int>(it - act.input_names.begin());
+}
+
+// The index of actuator state `state` among `actuators`, added when new: simulated from its
+// command when the record's command varies, else held at the record's median. Throws
+// InputError when the record lacks the state or its command.
+int ActuatorIndex(const std::string& state, const Actuation& act, const Dataset& recorded,
+                  std::vector<ActuatorState>& actuators) {
+  for (size_t i = 0; i < actuators.size(); ++i)
+    if (actuators[i].channel == state) return static_cast<int>(i);
+  ActuatorState a;
+  a.channel = state;
+  for (const auto& [command, s] : kWaterjetActuators)
+    if (s == state) a.command = CommandIndex(act, command);
+  if (a.command < 0 || !recorded.Has(state) || !recorded.Has(act.input_names[a.command]))
+    throw InputError("the record lacks '" + state + "' or its command");
+  if (Varies(recorded[act.input_names[a.command]])) {
+    a.model = IdentifyActuator(recorded, act.input_names[a.command], state);
+  } else {
+    a.value = SampledMedian(recorded[state]);
+  }
+  actuators.push_back(a);
+  return static_cast<int>(actuators.size() - 1);
+}
+
+// The source of each of the model's inputs. Throws InputError for an input that is neither a
+// command of the vessel nor derived from one.
+InputSources ResolveInputs(const EquationModel& system, const VesselInfo& info, bool jet_forces,
+                           const Dataset& recorded) {
+  const Actuation& act = info.actuation;
+  InputSources in;
   for (const std::string& name : system.Inputs()) {
-    if (const int c = command_index(name); c >= 0) {
-      sources.push_back({Kind::kCommand, c});
+    if (const int c = CommandIndex(act, name); c >= 0) {
+      in.sources.push_back({SourceKind::kCommand, c});
     } else if (std::ranges::find(kWaterjetStateChannels, name) != kWaterjetStateChannels.end()) {
-      sources.push_back({Kind::kActuator, actuator(name)});
+      in.sources.push_back(
+          {SourceKind::kActuator, ActuatorIndex(name, act, recorded, in.actuators)});
     } else if (const auto f = std::ranges::find(kWaterjetForceChannels, name);
                jet_forces && f != kWaterjetForceChannels.end()) {
-      for (const std::string& s : kWaterjetStateChannels) actuator(s);
-      sources.push_back({Kind::kForce, static_cast<int>(f - kWaterjetForceChannels.begin())});
+      for (const std::string& s : kWaterjetStateChannels)
+        ActuatorIndex(s, act, recorded, in.actuators);
+      in.sources.push_back(
+          {SourceKind::kForce, static_cast<int>(f - kWaterjetForceChannels.begin())});
     } else {
       throw InputError("input '" + name + "' is neither a command of " + info.name +
                        " nor derived from one");
     }
   }
   // Where the jet states sit among the actuators, for the forces (-1: no force input).
-  std::array<int, 3> jet = {-1, -1, -1};
-  for (size_t j = 0; j < jet.size(); ++j)
-    for (size_t a = 0; a < actuators.size(); ++a)
-      if (actuators[a].channel == kWaterjetStateChannels[j]) jet[j] = static_cast<int>(a);
-  const bool any_force =
-      std::ranges::any_of(sources, [](const auto& s) { return s.first == Kind::kForce; });
-  const std::vector<double> initial = maneuver.InitialCommand();
-  CommandHistory history(initial);
+  for (size_t j = 0; j < in.jet.size(); ++j)
+    for (size_t a = 0; a < in.actuators.size(); ++a)
+      if (in.actuators[a].channel == kWaterjetStateChannels[j]) in.jet[j] = static_cast<int>(a);
+  in.any_force =
+      std::ranges::any_of(in.sources, [](const auto& s) { return s.first == SourceKind::kForce; });
+  return in;
+}
+
+// The record's first row: the model's states (0 where unrecorded) and the actuator states
+// (a held one at its value).
+ReplayState InitialState(const std::vector<std::string>& channels,
+                         const std::vector<ActuatorState>& actuators, const Dataset& recorded) {
   const auto n = static_cast<Eigen::Index>(channels.size());
-  Eigen::VectorXd x(n), u(static_cast<Eigen::Index>(sources.size()));
+  ReplayState state;
+  state.x.resize(n);
   for (Eigen::Index i = 0; i < n; ++i)
-    x(i) = recorded.Has(channels[i]) ? recorded[channels[i]](0) : 0.0;
-  std::vector<double> y(actuators.size());
+    state.x(i) = recorded.Has(channels[i]) ? recorded[channels[i]](0) : 0.0;
+  state.y.resize(actuators.size());
   for (size_t a = 0; a < actuators.size(); ++a)
-    y[a] = actuators[a].model ? recorded[actuators[a].channel](0) : actuators[a].value;
-  const DivergenceBounds bounds(channels, recorded);
-  // The state the maneuver sees, in the vessel's order: the model's, the actuators', else the
-  // record's first row.
-  std::vector<double> vessel_state(info.states.size());
-  auto fill_state = [&] {
-    for (size_t i = 0; i < info.states.size(); ++i) {
-      const std::string& s = info.states[i];
-      if (const int c = system.Index(s); c >= 0) {
-        vessel_state[i] = x(c);
-      } else if (recorded.Has(s)) {
-        vessel_state[i] = recorded[s](0);
-      }
-      for (size_t a = 0; a < actuators.size(); ++a)
-        if (actuators[a].channel == s) vessel_state[i] = y[a];
+    state.y[a] = actuators[a].model ? recorded[actuators[a].channel](0) : actuators[a].value;
+  return state;
+}
+
+// The state the maneuver sees, in the vessel's order: the model's, the actuators', else the
+// record's first row (a state none of them has keeps its value).
+void FillVesselState(const VesselInfo& info, const EquationModel& system,
+                     const std::vector<ActuatorState>& actuators, const Dataset& recorded,
+                     const ReplayState& state, std::vector<double>& vessel_state) {
+  for (size_t i = 0; i < info.states.size(); ++i) {
+    const std::string& s = info.states[i];
+    if (const int c = system.Index(s); c >= 0) {
+      vessel_state[i] = state.x(c);
+    } else if (recorded.Has(s)) {
+      vessel_state[i] = recorded[s](0);
     }
-  };
-  const double period = 1.0 / SampleRate(recorded);
-  const int substeps = std::max(1, static_cast<int>(std::ceil(period / kMaxStep - 1e-9)));
-  const double h = period / substeps;
-  const long ticks = static_cast<long>(std::floor(recorded.duration() / period + 1e-9)) + 1;
-  ClosedLoopReplay out;
-  std::vector<double> times;
-  std::vector<std::vector<double>> rows;
-  std::vector<double> command(act.inputs());
-  for (long k = 0; k < ticks; ++k) {
-    const double t = static_cast<double>(k) * period;
-    fill_state();
-    maneuver.Command(t, vessel_state, command);
-    history.Append(t, command);
-    std::vector<double> row(x.data(), x.data() + n);
-    row.insert(row.end(), command.begin(), command.end());
-    row.insert(row.end(), y.begin(), y.end());
-    times.push_back(t);
-    rows.push_back(std::move(row));
-    if (k + 1 == ticks || maneuver.Done()) break;
-    for (int s = 0; s < substeps; ++s) {
-      const double ts = t + s * h;
-      for (size_t a = 0; a < actuators.size(); ++a)
-        if (actuators[a].model)
-          y[a] =
-              ActuatorStep(*actuators[a].model, y[a],
-                           history.At(ts - actuators[a].model->delay_s, actuators[a].command), h);
-      const std::array<double, 4> forces =
-          any_force ? WaterjetForces(y[jet[0]], y[jet[1]], y[jet[2]]) : std::array<double, 4>{};
-      for (size_t i = 0; i < sources.size(); ++i) {
-        const auto [kind, index] = sources[i];
-        u(static_cast<Eigen::Index>(i)) = kind == Kind::kCommand
-                                              ? history.At(ts - system.DelayS(), index)
-                                          : kind == Kind::kActuator ? y[index]
-                                                                    : forces[index];
-      }
-      system.Step(u, h, x);
-    }
-    if (const int bad = bounds.Exceeded(x); bad >= 0) {
-      out.diverged = true;
-      out.diverged_at_s = t + period;
-      out.diverged_channel = channels[bad];
-      break;
-    }
+    for (size_t a = 0; a < actuators.size(); ++a)
+      if (actuators[a].channel == s) vessel_state[i] = state.y[a];
   }
+}
+
+// The model and the simulated actuators integrated over one sample period from t, under the
+// commands issued so far (each delayed by its own delay).
+void AdvanceTick(const EquationModel& system, const InputSources& in, const CommandHistory& history,
+                 const ReplayClock& clock, double t, ReplayState& state) {
+  const std::vector<ActuatorState>& actuators = in.actuators;
+  std::vector<double>& y = state.y;
+  Eigen::VectorXd u(static_cast<Eigen::Index>(in.sources.size()));
+  for (int s = 0; s < clock.substeps; ++s) {
+    const double ts = t + s * clock.h;
+    for (size_t a = 0; a < actuators.size(); ++a)
+      if (actuators[a].model)
+        y[a] = ActuatorStep(*actuators[a].model, y[a],
+                            history.At(ts - actuators[a].model->delay_s, actuators[a].command),
+                            clock.h);
+    const std::array<double, 4> forces =
+        in.any_force ? WaterjetForces(y[in.jet[0]], y[in.jet[1]], y[in.jet[2]])
+                     : std::array<double, 4>{};
+    for (size_t i = 0; i < in.sources.size(); ++i) {
+      const auto [kind, index] = in.sources[i];
+      u(static_cast<Eigen::Index>(i)) = kind == SourceKind::kCommand
+                                            ? history.At(ts - system.DelayS(), index)
+                                        : kind == SourceKind::kActuator ? y[index]
+                                                                        : forces[index];
+    }
+    system.Step(u, clock.h, state.x);
+  }
+}
+
+// One row of the replay: the model's states, the commands, the actuator states.
+std::vector<double> ReplayRow(const ReplayState& state, const std::vector<double>& command) {
+  std::vector<double> row(state.x.data(), state.x.data() + state.x.size());
+  row.insert(row.end(), command.begin(), command.end());
+  row.insert(row.end(), state.y.begin(), state.y.end());
+  return row;
+}
+
+// The replay's rows as a dataset: the model's channels, the commands and the actuator states,
+// each name once (a command the model also integrates keeps the state).
+Dataset ReplayDataset(const std::vector<double>& times,
+                      const std::vector<std::vector<double>>& rows,
+                      const std::vector<std::string>& channels, const Actuation& act,
+                      const std::vector<ActuatorState>& actuators) {
   Eigen::VectorXd ts = Eigen::Map<const Eigen::VectorXd>(times.data(), times.size());
-  out.run = Dataset(ts);
+  Dataset run(ts);
   std::vector<std::string> names = channels;
   names.insert(names.end(), act.input_names.begin(), act.input_names.end());
   for (const ActuatorState& a : actuators) names.push_back(a.channel);
   for (size_t c = 0; c < names.size(); ++c) {
-    if (out.run.Has(names[c])) continue;  // a command the model also integrates: keep the state
+    if (run.Has(names[c])) continue;  // a command the model also integrates: keep the state
     Eigen::VectorXd v(static_cast<Eigen::Index>(rows.size()));
     for (size_t k = 0; k < rows.size(); ++k) v(static_cast<Eigen::Index>(k)) = rows[k][c];
-    out.run.Set(names[c], v);
+    run.Set(names[c], v);
   }
+  return run;
+}
+
+ClosedLoopReplay ReplayEquationModel(const nlohmann::json& model, const VesselInfo& info,
+                                     Maneuver& maneuver, const Dataset& recorded) {
+  const Actuation& act = info.actuation;
+  const EquationModel system(model, [&](const std::string& c) { return recorded.Has(c); });
+  const std::vector<std::string>& channels = system.Channels();
+  const InputSources in = ResolveInputs(system, info, JetForces(model), recorded);
+  const std::vector<double> initial = maneuver.InitialCommand();
+  CommandHistory history(initial);
+  ReplayState state = InitialState(channels, in.actuators, recorded);
+  const DivergenceBounds bounds(channels, recorded);
+  std::vector<double> vessel_state(info.states.size());
+  const ReplayClock clock = ClockFor(recorded);
+  ClosedLoopReplay out;
+  std::vector<double> times;
+  std::vector<std::vector<double>> rows;
+  std::vector<double> command(act.inputs());
+  for (long k = 0; k < clock.ticks; ++k) {
+    const double t = static_cast<double>(k) * clock.period;
+    FillVesselState(info, system, in.actuators, recorded, state, vessel_state);
+    maneuver.Command(t, vessel_state, command);
+    history.Append(t, command);
+    times.push_back(t);
+    rows.push_back(ReplayRow(state, command));
+    if (k + 1 == clock.ticks || maneuver.Done()) break;
+    AdvanceTick(system, in, history, clock, t, state);
+    if (const int bad = bounds.Exceeded(state.x); bad >= 0) {
+      out.diverged = true;
+      out.diverged_at_s = t + clock.period;
+      out.diverged_channel = channels[bad];
+      break;
+    }
+  }
+  out.run = ReplayDataset(times, rows, channels, act, in.actuators);
   return out;
 }
 

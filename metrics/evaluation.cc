@@ -38,6 +38,128 @@ double ValidPredictionTime(const Dataset& data, const FreeRun& run) {
   return data.duration();
 }
 
+// A model identified on the jets' forces is driven by them here too (unless the data carry
+// them already, as `usvid preprocess --forces waterjet` writes them).
+void AddModelForces(const nlohmann::json& model, Dataset& data) {
+  if (model.contains("preprocessing") && model["preprocessing"].is_object() &&
+      model["preprocessing"].contains("forces") && model["preprocessing"]["forces"].is_string() &&
+      !data.Has("tau_x"))
+    AddForces(data, model["preprocessing"]["forces"].get<std::string>());
+}
+
+// One-step derivative R^2: each equation at the measured states against the data's
+// derivatives (default estimator, inputs shifted by the model's delay). Empty for a vessel
+// model, or when the data lack a variable or input of the equations.
+nlohmann::json DerivativeR2(const nlohmann::json& model, const Dataset& data) {
+  nlohmann::json r2 = nlohmann::json::object();
+  std::vector<std::string> states, inputs;
+  const bool has_equations = model.contains("equations");  // else a vessel model
+  if (has_equations)
+    for (const auto& [state, _] : model.at("equations").items()) states.push_back(state);
+  if (model.contains("inputs"))
+    for (const auto& i : model.at("inputs")) inputs.push_back(i.get<std::string>());
+  std::vector<std::string> variables = states;
+  if (model.contains("variables"))
+    variables = model.at("variables").get<std::vector<std::string>>();
+  bool can_differentiate = has_equations && !inputs.empty();
+  for (const auto& names : {variables, inputs})
+    for (const std::string& n : names) can_differentiate = can_differentiate && data.Has(n);
+  if (can_differentiate) {
+    PreprocessOptions pre;
+    if (model.contains("preprocessing")) pre.delay_s = model["preprocessing"].value("delay_s", 0.0);
+    const PreparedData prepared = Preprocess(data, variables, inputs, pre);
+    for (const auto& [state, text] : model.at("equations").items()) {
+      const Expression expr = Expression::Parse(text.get<std::string>(), "model: " + state);
+      r2[state] = RSquared(prepared.data[state + "_dot"], expr.Evaluate(prepared.data));
+    }
+  }
+  return r2;
+}
+
+// k-step-ahead: from every k-th measured state, k steps of the model; the error at the end.
+nlohmann::json KStepNrmse(const nlohmann::json& model, const Dataset& data) {
+  nlohmann::json k_step = nlohmann::json::object();
+  for (const int k : {10, 40}) {
+    if (data.rows() < 3 * k) continue;
+    std::map<std::string, std::vector<double>> measured, predicted;
+    for (Eigen::Index start = 0; start + k < data.rows(); start += k) {
+      const Dataset window = data.Rows(start, k + 1);
+      const FreeRun run = FreeRunModel(model, window);
+      for (const std::string& c : run.channels)
+        if (data.Has(c)) {
+          measured[c].push_back(window[c](k));
+          predicted[c].push_back(run.simulated[c](k));
+        }
+    }
+    nlohmann::json per = nlohmann::json::object();
+    for (const auto& [c, m] : measured) {
+      const Eigen::VectorXd a = Eigen::Map<const Eigen::VectorXd>(m.data(), m.size());
+      const Eigen::VectorXd b = Eigen::Map<const Eigen::VectorXd>(predicted[c].data(), m.size());
+      per[c] = ScoreChannel(a, b).nrmse;
+    }
+    k_step[std::to_string(k)] = per;
+  }
+  return k_step;
+}
+
+// The fit % of each channel over the whole record ("all", from `channels`' scores) and over
+// each horizon of kHorizonsS shorter than the record.
+nlohmann::json HorizonFits(const nlohmann::json& model, const Dataset& data,
+                           const nlohmann::json& channels) {
+  nlohmann::json horizons = {{"all", nlohmann::json::object()}};
+  for (const auto& [c, s] : channels.items()) horizons["all"][c] = s.at("fit_percent");
+  for (const double h : kHorizonsS)
+    if (h < data.duration()) horizons[HorizonKey(h)] = HorizonFit(model, data, h);
+  return horizons;
+}
+
+// The measured speed over ground: U, else from u and v, else empty.
+Eigen::VectorXd MeasuredSpeed(const Dataset& data) {
+  Eigen::VectorXd speed;
+  if (data.Has("U")) {
+    speed = data["U"];
+  } else if (data.Has("u") && data.Has("v")) {
+    speed = (data["u"].array().square() + data["v"].array().square()).sqrt().matrix();
+  }
+  return speed;
+}
+
+// The hull length: the model's "length_m", else its vessel's, else Odin's 10.5 m.
+double HullLength(const nlohmann::json& model) {
+  double length = 10.5;
+  if (model.contains("vessel") && model.at("vessel").is_string() &&
+      !model.at("vessel").get<std::string>().empty()) {
+    const std::string vessel = model.at("vessel").get<std::string>();
+    const std::vector<std::string> known = VesselNames();
+    if (std::ranges::find(known, vessel) != known.end() && FindVessel(vessel).Info().length_m > 0)
+      length = FindVessel(vessel).Info().length_m;
+  }
+  return model.value("length_m", length);
+}
+
+// Per speed regime (by Froude number on the hull length), over the rows measured in it: each
+// scored channel's scores, for regimes with at least 10 rows.
+nlohmann::json RegimeScores(const Eigen::VectorXd& speed, double length, const Dataset& data,
+                            const FreeRun& run, const nlohmann::json& channels) {
+  const Eigen::ArrayXd fn = speed.array() / std::sqrt(9.81 * length);
+  const std::pair<const char*, std::pair<double, double>> regimes[] = {
+      {"displacement", {-INFINITY, 0.4}},
+      {"semi-displacement", {0.4, 1.1}},
+      {"planing", {1.1, INFINITY}}};
+  nlohmann::json by_regime = nlohmann::json::object();
+  for (const auto& [name, range] : regimes) {
+    const Eigen::Array<bool, Eigen::Dynamic, 1> in = fn >= range.first && fn < range.second;
+    if (in.count() < 10) continue;
+    nlohmann::json scores = {{"samples", in.count()}};
+    for (const auto& [c, _] : channels.items()) {
+      const Eigen::VectorXd m = in.select(data[c].array(), NAN).matrix();
+      scores[c] = ScoreChannel(m, run.simulated[c]).ToJson();
+    }
+    by_regime[name] = scores;
+  }
+  return by_regime;
+}
+
 }  // namespace
 
 std::string HorizonKey(double horizon_s) {
@@ -68,79 +190,25 @@ std::map<std::string, double> HorizonFit(const nlohmann::json& model, const Data
 Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
   Dataset data = recorded;
   AddSpeedAndCourse(data);  // for models in speed and course (2-DOF)
-  // A model identified on the jets' forces is driven by them here too (unless the data carry
-  // them already, as `usvid preprocess --forces waterjet` writes them).
-  if (model.contains("preprocessing") && model["preprocessing"].is_object() &&
-      model["preprocessing"].contains("forces") && model["preprocessing"]["forces"].is_string() &&
-      !data.Has("tau_x"))
-    AddForces(data, model["preprocessing"]["forces"].get<std::string>());
+  AddModelForces(model, data);
   Evaluation e;
   e.run = FreeRunModel(model, data);
   nlohmann::json channels = nlohmann::json::object();
   for (const std::string& c : e.run.channels)
     if (data.Has(c)) channels[c] = ScoreChannel(data[c], e.run.simulated[c]).ToJson();
 
-  // One-step derivative R^2: each equation at the measured states against the data's
-  // derivatives (default estimator, inputs shifted by the model's delay).
-  nlohmann::json r2 = nlohmann::json::object();
-  std::vector<std::string> states, inputs;
-  const bool has_equations = model.contains("equations");  // else a vessel model
-  if (has_equations)
-    for (const auto& [state, _] : model.at("equations").items()) states.push_back(state);
-  if (model.contains("inputs"))
-    for (const auto& i : model.at("inputs")) inputs.push_back(i.get<std::string>());
-  std::vector<std::string> variables = states;
-  if (model.contains("variables"))
-    variables = model.at("variables").get<std::vector<std::string>>();
-  bool can_differentiate = has_equations && !inputs.empty();
-  for (const auto& names : {variables, inputs})
-    for (const std::string& n : names) can_differentiate = can_differentiate && data.Has(n);
-  if (can_differentiate) {
-    PreprocessOptions pre;
-    if (model.contains("preprocessing")) pre.delay_s = model["preprocessing"].value("delay_s", 0.0);
-    const PreparedData prepared = Preprocess(data, variables, inputs, pre);
-    for (const auto& [state, text] : model.at("equations").items()) {
-      const Expression expr = Expression::Parse(text.get<std::string>(), "model: " + state);
-      r2[state] = RSquared(prepared.data[state + "_dot"], expr.Evaluate(prepared.data));
-    }
-  }
+  const nlohmann::json r2 = DerivativeR2(model, data);
   e.metrics = {{"channels", channels},
                {"derivative_r2", r2},
                {"diverged", e.run.diverged},
                {"samples", data.rows()},
                {"seconds", data.duration()}};
-  // k-step-ahead: from every k-th measured state, k steps of the model; the error at the end.
-  nlohmann::json k_step = nlohmann::json::object();
-  for (const int k : {10, 40}) {
-    if (data.rows() < 3 * k) continue;
-    std::map<std::string, std::vector<double>> measured, predicted;
-    for (Eigen::Index start = 0; start + k < data.rows(); start += k) {
-      const Dataset window = data.Rows(start, k + 1);
-      const FreeRun run = FreeRunModel(model, window);
-      for (const std::string& c : run.channels)
-        if (data.Has(c)) {
-          measured[c].push_back(window[c](k));
-          predicted[c].push_back(run.simulated[c](k));
-        }
-    }
-    nlohmann::json per = nlohmann::json::object();
-    for (const auto& [c, m] : measured) {
-      const Eigen::VectorXd a = Eigen::Map<const Eigen::VectorXd>(m.data(), m.size());
-      const Eigen::VectorXd b = Eigen::Map<const Eigen::VectorXd>(predicted[c].data(), m.size());
-      per[c] = ScoreChannel(a, b).nrmse;
-    }
-    k_step[std::to_string(k)] = per;
-  }
-  e.metrics["k_step_nrmse"] = k_step;
-  nlohmann::json horizons = {{"all", nlohmann::json::object()}};
-  for (const auto& [c, s] : channels.items()) horizons["all"][c] = s.at("fit_percent");
-  for (const double h : kHorizonsS)
-    if (h < data.duration()) horizons[HorizonKey(h)] = HorizonFit(model, data, h);
-  e.metrics["horizon_fit_percent"] = horizons;
+  e.metrics["k_step_nrmse"] = KStepNrmse(model, data);
+  e.metrics["horizon_fit_percent"] = HorizonFits(model, data, channels);
   if (const double vpt = ValidPredictionTime(data, e.run); std::isfinite(vpt))
     e.metrics["valid_prediction_s"] = vpt;
 
-  // Flat per-channel fields too, as the contract lists them per state channel.
+  // Flat per-channel fields too, as docs/data.md#metricsjson lists them per state channel.
   for (const auto& [c, s] : channels.items()) e.metrics[c] = s;
   if (e.run.diverged) {
     e.metrics["diverged_at_s"] = e.run.diverged_at_s;
@@ -148,41 +216,9 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
   }
 
   // Per speed regime, over the rows measured in it.
-  Eigen::VectorXd speed;
-  if (data.Has("U")) {
-    speed = data["U"];
-  } else if (data.Has("u") && data.Has("v")) {
-    speed = (data["u"].array().square() + data["v"].array().square()).sqrt().matrix();
-  }
-  if (speed.size() > 0) {
-    // The hull length: the model's "length_m", else its vessel's, else Odin's 10.5 m.
-    double length = 10.5;
-    if (model.contains("vessel") && model.at("vessel").is_string() &&
-        !model.at("vessel").get<std::string>().empty()) {
-      const std::string vessel = model.at("vessel").get<std::string>();
-      const std::vector<std::string> known = VesselNames();
-      if (std::ranges::find(known, vessel) != known.end() && FindVessel(vessel).Info().length_m > 0)
-        length = FindVessel(vessel).Info().length_m;
-    }
-    length = model.value("length_m", length);
-    const Eigen::ArrayXd fn = speed.array() / std::sqrt(9.81 * length);
-    const std::pair<const char*, std::pair<double, double>> regimes[] = {
-        {"displacement", {-INFINITY, 0.4}},
-        {"semi-displacement", {0.4, 1.1}},
-        {"planing", {1.1, INFINITY}}};
-    nlohmann::json by_regime = nlohmann::json::object();
-    for (const auto& [name, range] : regimes) {
-      const Eigen::Array<bool, Eigen::Dynamic, 1> in = fn >= range.first && fn < range.second;
-      if (in.count() < 10) continue;
-      nlohmann::json scores = {{"samples", in.count()}};
-      for (const auto& [c, _] : channels.items()) {
-        const Eigen::VectorXd m = in.select(data[c].array(), NAN).matrix();
-        scores[c] = ScoreChannel(m, e.run.simulated[c]).ToJson();
-      }
-      by_regime[name] = scores;
-    }
-    e.metrics["regimes"] = by_regime;
-  }
+  const Eigen::VectorXd speed = MeasuredSpeed(data);
+  if (speed.size() > 0)
+    e.metrics["regimes"] = RegimeScores(speed, HullLength(model), data, e.run, channels);
   if (data.Has("north") && data.Has("east") && e.run.simulated.Has("north")) {
     const Eigen::Index last = data.rows() - 1;
     e.metrics["position_drift_m"] = std::hypot(data["north"](last) - e.run.simulated["north"](last),

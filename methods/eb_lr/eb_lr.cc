@@ -183,23 +183,22 @@ double Rms(const Eigen::VectorXd& v) {
   return v.size() ? std::sqrt(v.squaredNorm() / static_cast<double>(v.size())) : 0.0;
 }
 
-}  // namespace
-
-EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& speed,
-                                    const std::string& rate, const std::string& thrust_input,
-                                    const std::string& yaw_input, const EbLrOptions& options) {
-  CheckOptions(options);
-  Signals s;
-  s.t = data.t();
-  s.x = {Column(data, speed, "speed"), Column(data, rate, "rate")};
-  s.u = {Column(data, thrust_input, "thrust input"), Column(data, yaw_input, "yaw input")};
-  const Eigen::Index n = s.t.size();
+// The time step of the data, whose grid must be uniform and at least 20 rows long.
+double UniformStep(const Eigen::VectorXd& t) {
+  const Eigen::Index n = t.size();
   if (n < 20) throw InputError("eb-lr: the data have " + std::to_string(n) + " rows; need 20");
-  const double dt = (s.t(n - 1) - s.t(0)) / static_cast<double>(n - 1);
+  const double dt = (t(n - 1) - t(0)) / static_cast<double>(n - 1);
   for (Eigen::Index k = 1; k < n; ++k)
-    if (std::abs(s.t(k) - s.t(k - 1) - dt) > 1e-3 * dt)
-      throw InputError("eb-lr: the time grid is not uniform at t = " + FormatNumber(s.t(k)) +
+    if (std::abs(t(k) - t(k - 1) - dt) > 1e-3 * dt)
+      throw InputError("eb-lr: the time grid is not uniform at t = " + FormatNumber(t(k)) +
                        " s (resample first)");
+  return dt;
+}
+
+// The speed and rate equations' states, inputs and bases (their fits still to come).
+std::array<Equation, 2> NewEquations(const std::string& speed, const std::string& rate,
+                                     const std::string& thrust_input, const std::string& yaw_input,
+                                     const EbLrOptions& options) {
   std::array<Equation, 2> eq;
   eq[0].state = speed;
   eq[1].state = rate;
@@ -210,13 +209,14 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
   eq[0].mass_basis = &options.mass_speed_basis;
   eq[1].mass_basis = &options.mass_rate_basis;
   eq[0].thrust_loss_term = !options.thrust_loss_channel.empty();
-  if (eq[0].thrust_loss_term) {
-    s.q = Column(data, options.thrust_loss_channel, "thrust loss");
-    eq[0].thrust_loss_text = options.thrust_loss_channel + "*" + speed;
-  }
-  // The inputs that are held at each step of the experiment: the commands, when the regression's
-  // inputs are forces that slew to their new values and carry measurement noise.
-  std::array<Eigen::VectorXd, 2> held = s.u;
+  return eq;
+}
+
+// The inputs that are held at each step of the experiment: the commands, when the regression's
+// inputs are forces that slew to their new values and carry measurement noise.
+std::array<Eigen::VectorXd, 2> HeldInputs(const Dataset& data, const EbLrOptions& options,
+                                          const std::array<Eigen::VectorXd, 2>& inputs) {
+  std::array<Eigen::VectorXd, 2> held = inputs;
   if (!options.held_inputs.empty()) {
     if (options.held_inputs.size() != 2)
       throw InputError("eb-lr option held_inputs: names a thrust and a yaw command, got " +
@@ -224,8 +224,15 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
     held = {Column(data, options.held_inputs[0], "held thrust command"),
             Column(data, options.held_inputs[1], "held yaw command")};
   }
-  const std::vector<Eigen::Index> breaks =
-      StepBreaks({held[0], held[1]}, options.steady.input_tolerance);
+  return held;
+}
+
+// Each state smoothed (its derivative's smoothing broken at the input steps), each equation's
+// term names, and its mass started at zero. Throws InputError for a constant input.
+void SmoothStates(double dt, const std::vector<Eigen::Index>& breaks, Signals& s,
+                  std::array<Equation, 2>& eq) {
+  const std::string& speed = eq[0].state;
+  const std::string& rate = eq[1].state;
   for (int i = 0; i < 2; ++i) {
     if (s.u[i].maxCoeff() == s.u[i].minCoeff())
       throw InputError("eb-lr: the input '" + eq[i].input +
@@ -235,10 +242,10 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
     for (const Monomial& m : *eq[i].mass_basis) eq[i].mass_terms.push_back(m.Text(speed, rate));
     eq[i].mass = Eigen::VectorXd::Zero(eq[i].mass_terms.size());
   }
+}
 
-  const SteadyWindowReport steady =
-      DetectSteadyWindows(s.t, {s.x[0], s.x[1]}, {held[0], held[1]}, options.steady);
-  const std::vector<Span>& windows = steady.windows;
+// Throws InputError when there are fewer steady windows than an equation's sigma terms.
+void CheckWindows(const std::vector<Span>& windows, const std::array<Equation, 2>& eq) {
   for (const Equation& e : eq)
     if (windows.size() < e.sigma_terms.size())
       throw InputError("eb-lr: found " + std::to_string(windows.size()) +
@@ -246,17 +253,22 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
                        " needs at least " + std::to_string(e.sigma_terms.size()) +
                        " (hold more input steps to steady state, or relax min_window_s or "
                        "max_relative_rate)");
-  const std::vector<Span> runs = TransientRuns(
-      n, windows, static_cast<Eigen::Index>(std::round(options.transient_margin_s / dt)));
-  const std::vector<Span> pieces = TransientPieces(
-      runs, std::max<Eigen::Index>(
-                1, static_cast<Eigen::Index>(std::round(options.transient_window_s / dt))));
+}
+
+// Throws InputError when there are fewer transient pieces than an equation's mass terms.
+void CheckPieces(const std::vector<Span>& pieces, const std::array<Equation, 2>& eq) {
   for (const Equation& e : eq)
     if (pieces.size() < e.mass_terms.size())
       throw InputError("eb-lr: " + std::to_string(pieces.size()) + " transient pieces; m_" +
                        e.state + " on " + BasisText(*e.mass_basis) + " needs at least " +
                        std::to_string(e.mass_terms.size()));
+}
 
+// sigma and M of both equations, fitted in turn 1 + options.refinements times, the mass (when
+// asked) by output error over the transient runs.
+void FitEquations(const Signals& s, const std::vector<Span>& windows, const std::vector<Span>& runs,
+                  const std::vector<Span>& pieces, const EbLrOptions& options,
+                  std::array<Equation, 2>& eq) {
   for (int pass = 0; pass <= options.refinements; ++pass)
     for (int i = 0; i < 2; ++i) {
       FitSigma(s, i, windows, eq[i]);
@@ -270,60 +282,106 @@ EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& spee
       eq[i].output_error_rms = fit.rms;
       eq[i].output_error_iterations = fit.iterations;
     }
+}
 
-  EbLrIdentification out;
-  nlohmann::json& info = out.details;
-  info["warnings"] = nlohmann::json::array();
+// Each steady window: its times, mean states and inputs, and sigma's residual there.
+nlohmann::json WindowsJson(const Signals& s, const std::vector<Span>& windows,
+                           const std::array<Equation, 2>& eq) {
   nlohmann::json list = nlohmann::json::array();
   for (size_t w = 0; w < windows.size(); ++w) {
     const Eigen::Index f = windows[w].first, len = windows[w].last - f + 1;
     list.push_back({{"start_s", s.t(f)},
                     {"end_s", s.t(windows[w].last)},
-                    {speed, s.x[0].segment(f, len).mean()},
-                    {rate, s.x[1].segment(f, len).mean()},
-                    {thrust_input, s.u[0].segment(f, len).mean()},
-                    {yaw_input, s.u[1].segment(f, len).mean()},
-                    {"residual_" + speed, eq[0].sigma_residual(w)},
-                    {"residual_" + rate, eq[1].sigma_residual(w)}});
+                    {eq[0].state, s.x[0].segment(f, len).mean()},
+                    {eq[1].state, s.x[1].segment(f, len).mean()},
+                    {eq[0].input, s.u[0].segment(f, len).mean()},
+                    {eq[1].input, s.u[1].segment(f, len).mean()},
+                    {"residual_" + eq[0].state, eq[0].sigma_residual(w)},
+                    {"residual_" + eq[1].state, eq[1].sigma_residual(w)}});
   }
-  info["steady_windows"] = list;
+  return list;
+}
+
+// One equation's parameters and expression into `out`, its fit summary into out.details, and a
+// warning when its mass is not positive over the data.
+void ReportEquation(const Equation& e, double noise_sd, const Signals& s, bool output_error_mass,
+                    const std::string& speed, const std::string& rate, EbLrIdentification& out) {
+  nlohmann::json& info = out.details;
+  info["noise_sd"][e.state] = noise_sd;
+  info["fit"]["sigma_" + e.state] = {
+      {"basis", BasisText(*e.sigma_basis) + (e.thrust_loss_term ? "," + e.thrust_loss_text : "")},
+      {"rms", Rms(e.sigma_residual)}};
+  info["fit"]["m_" + e.state] = {{"basis", BasisText(*e.mass_basis)},
+                                 {"rms", Rms(e.mass_residual)}};
+  if (output_error_mass) {
+    info["fit"]["m_" + e.state]["output_error_rms"] = e.output_error_rms;
+    info["fit"]["m_" + e.state]["output_error_iterations"] = e.output_error_iterations;
+  }
+  for (Eigen::Index j = 0; j < e.sigma.size(); ++j)
+    out.parameters["sigma_" + e.state + "." + e.sigma_terms[j]] = e.sigma(j);
+  std::string sigma_text = Sum(*e.sigma_basis, e.sigma, speed, rate);
+  if (e.thrust_loss_term) {
+    out.parameters["sigma_" + e.state + "." + e.thrust_loss_text] = e.thrust_loss;
+    sigma_text += (e.thrust_loss < 0 ? " - " : " + ") + FormatNumber(std::abs(e.thrust_loss)) +
+                  "*" + e.thrust_loss_text;
+  }
+  for (size_t j = 0; j < e.mass_terms.size(); ++j)
+    out.parameters["m_" + e.state + "." + e.mass_terms[j]] = e.mass(j);
+  out.equations[e.state] = "(" + e.input + " - (" + sigma_text + ")) / (" +
+                           Sum(*e.mass_basis, e.mass, speed, rate) + ")";
+  double least = INFINITY;
+  for (Eigen::Index k = 0; k < s.t.size(); ++k)
+    least = std::min(least, Combination(*e.mass_basis, e.mass, s.x[0](k), s.x[1](k)));
+  if (!(least > 0.0))
+    info["warnings"].push_back("m_" + e.state + " reaches " + FormatNumber(least) +
+                               " over the data: the mass must be positive");
+}
+
+}  // namespace
+
+EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& speed,
+                                    const std::string& rate, const std::string& thrust_input,
+                                    const std::string& yaw_input, const EbLrOptions& options) {
+  CheckOptions(options);
+  Signals s;
+  s.t = data.t();
+  s.x = {Column(data, speed, "speed"), Column(data, rate, "rate")};
+  s.u = {Column(data, thrust_input, "thrust input"), Column(data, yaw_input, "yaw input")};
+  const double dt = UniformStep(s.t);
+  std::array<Equation, 2> eq = NewEquations(speed, rate, thrust_input, yaw_input, options);
+  if (eq[0].thrust_loss_term) {
+    s.q = Column(data, options.thrust_loss_channel, "thrust loss");
+    eq[0].thrust_loss_text = options.thrust_loss_channel + "*" + speed;
+  }
+  const std::array<Eigen::VectorXd, 2> held = HeldInputs(data, options, s.u);
+  const std::vector<Eigen::Index> breaks =
+      StepBreaks({held[0], held[1]}, options.steady.input_tolerance);
+  SmoothStates(dt, breaks, s, eq);
+
+  const SteadyWindowReport steady =
+      DetectSteadyWindows(s.t, {s.x[0], s.x[1]}, {held[0], held[1]}, options.steady);
+  const std::vector<Span>& windows = steady.windows;
+  CheckWindows(windows, eq);
+  const std::vector<Span> runs = TransientRuns(
+      s.t.size(), windows, static_cast<Eigen::Index>(std::round(options.transient_margin_s / dt)));
+  const std::vector<Span> pieces = TransientPieces(
+      runs, std::max<Eigen::Index>(
+                1, static_cast<Eigen::Index>(std::round(options.transient_window_s / dt))));
+  CheckPieces(pieces, eq);
+  FitEquations(s, windows, runs, pieces, options, eq);
+
+  EbLrIdentification out;
+  nlohmann::json& info = out.details;
+  info["warnings"] = nlohmann::json::array();
+  info["steady_windows"] = WindowsJson(s, windows, eq);
   info["input_stretches"] = steady.stretches;
   info["windows_refused_drifting_input"] = steady.drifting;
   info["transient_runs"] = runs.size();
   info["transient_pieces"] = pieces.size();
   info["refinements"] = options.refinements;
   info["mass_fit"] = options.output_error_mass ? "output error" : "equation error";
-  for (int i = 0; i < 2; ++i) {
-    const Equation& e = eq[i];
-    info["noise_sd"][e.state] = steady.noise_sd[i];
-    info["fit"]["sigma_" + e.state] = {
-        {"basis", BasisText(*e.sigma_basis) + (e.thrust_loss_term ? "," + e.thrust_loss_text : "")},
-        {"rms", Rms(e.sigma_residual)}};
-    info["fit"]["m_" + e.state] = {{"basis", BasisText(*e.mass_basis)},
-                                   {"rms", Rms(e.mass_residual)}};
-    if (options.output_error_mass) {
-      info["fit"]["m_" + e.state]["output_error_rms"] = e.output_error_rms;
-      info["fit"]["m_" + e.state]["output_error_iterations"] = e.output_error_iterations;
-    }
-    for (Eigen::Index j = 0; j < e.sigma.size(); ++j)
-      out.parameters["sigma_" + e.state + "." + e.sigma_terms[j]] = e.sigma(j);
-    std::string sigma_text = Sum(*e.sigma_basis, e.sigma, speed, rate);
-    if (e.thrust_loss_term) {
-      out.parameters["sigma_" + e.state + "." + e.thrust_loss_text] = e.thrust_loss;
-      sigma_text += (e.thrust_loss < 0 ? " - " : " + ") + FormatNumber(std::abs(e.thrust_loss)) +
-                    "*" + e.thrust_loss_text;
-    }
-    for (size_t j = 0; j < e.mass_terms.size(); ++j)
-      out.parameters["m_" + e.state + "." + e.mass_terms[j]] = e.mass(j);
-    out.equations[e.state] = "(" + e.input + " - (" + sigma_text + ")) / (" +
-                             Sum(*e.mass_basis, e.mass, speed, rate) + ")";
-    double least = INFINITY;
-    for (Eigen::Index k = 0; k < n; ++k)
-      least = std::min(least, Combination(*e.mass_basis, e.mass, s.x[0](k), s.x[1](k)));
-    if (!(least > 0.0))
-      info["warnings"].push_back("m_" + e.state + " reaches " + FormatNumber(least) +
-                                 " over the data: the mass must be positive");
-  }
+  for (int i = 0; i < 2; ++i)
+    ReportEquation(eq[i], steady.noise_sd[i], s, options.output_error_mass, speed, rate, out);
   return out;
 }
 

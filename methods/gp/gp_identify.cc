@@ -43,6 +43,8 @@ std::string OperatorList(const std::vector<Op>& ops) {
 
 namespace {
 
+using StateProgress = std::function<void(const std::string&, const GenerationLog&)>;
+
 // The first `rows` rows of every variable and of the target.
 GpProblem Head(const GpProblem& p, long rows) {
   GpProblem out;
@@ -56,6 +58,223 @@ nlohmann::json CandidateJson(const Model& m, const std::vector<std::string>& nam
   return {{"size", m.Size()}, {"r2_heldout", m.r2_heldout}, {"equation", m.Equation(names)}};
 }
 
+// The measured variables the search draws from: `variables`, then `inputs`.
+GpProblem MeasuredVariables(const PreparedData& prepared, const std::vector<std::string>& variables,
+                            const std::vector<std::string>& inputs) {
+  GpProblem all;
+  for (const auto& names : {variables, inputs})
+    for (const std::string& n : names) {
+      all.names.push_back(n);
+      all.variables.push_back(prepared.data[n]);
+    }
+  return all;
+}
+
+// Appends each feature not yet among the variables, and its column of `derived`.
+// A feature is named by its expression in parentheses, so that every equation written is in
+// channel names, and is computed from the variables it names (which must be among them).
+void AddFeatures(const std::vector<DerivedVariable>& features, const PreparedData& prepared,
+                 GpProblem* all, std::vector<DerivedColumn>* derived) {
+  for (const DerivedVariable& f : features) {
+    if (std::find(all->names.begin(), all->names.end(), f.Column()) != all->names.end()) continue;
+    DerivedColumn d{static_cast<int>(all->names.size()),
+                    Expression::Parse(f.expression, "feature " + f.name),
+                    {}};
+    for (const std::string& arg : d.expression.Variables()) {
+      const auto it = std::find(all->names.begin(), all->names.end(), arg);
+      if (it == all->names.end())
+        throw InputError("gp: feature " + f.name + " = " + f.expression + " needs variable '" +
+                         arg + "'");
+      d.arguments.push_back(static_cast<int>(it - all->names.begin()));
+    }
+    all->names.push_back(f.Column());
+    all->variables.push_back(d.expression.Evaluate(prepared.data));
+    derived->push_back(std::move(d));
+  }
+}
+
+// The rows searched on: all but the last fraction `f` (the validation part), or every row when
+// f is 0. Throws InputError when either part is too short.
+long TrainRows(long rows, double f) {
+  const long train_rows = f > 0 ? std::lround((1.0 - f) * static_cast<double>(rows)) : rows;
+  if (f > 0 && (train_rows < 10 || rows - train_rows < 2))
+    throw InputError("gp: --validation-fraction " + FormatNumber(f) + " leaves " +
+                     std::to_string(train_rows) + " rows to search on and " +
+                     std::to_string(rows - train_rows) + " to validate on (need 10 and 2)");
+  return train_rows;
+}
+
+// One search per state on the training rows, its result appended to `results`. A state's
+// candidates are the search's best and its Pareto front, each equation once.
+std::vector<StateCandidates> SearchStates(const PreparedData& prepared,
+                                          const std::vector<std::string>& states, long train_rows,
+                                          const GpOptions& search, const StateProgress& progress,
+                                          GpProblem* all, std::vector<GpResult>* results,
+                                          double* node_evaluations) {
+  std::vector<StateCandidates> candidates;
+  for (const std::string& state : states) {
+    all->target = prepared.data[state + "_dot"];
+    results->push_back(RunGp(Head(*all, train_rows), search, [&](const GenerationLog& log) {
+      if (progress) progress(state, log);
+    }));
+    const GpResult& r = results->back();
+    *node_evaluations += r.node_evaluations;
+    StateCandidates c{state, {r.best}};
+    std::set<std::string> seen = {r.best.Equation(all->names)};
+    for (const ParetoPoint& p : r.pareto)
+      if (seen.insert(p.equation).second) c.models.push_back(p.model);
+    candidates.push_back(std::move(c));
+  }
+  return candidates;
+}
+
+// Each candidate offered the completion library (term_completion.h) on the training rows; a
+// completed model that fits and is a new equation becomes another candidate.
+void CompleteCandidates(const PreparedData& prepared, const std::vector<std::string>& states,
+                        const GpProblem& all, const std::vector<DerivedColumn>& derived,
+                        long train_rows, const GpOptions& search,
+                        std::vector<StateCandidates>* candidates) {
+  std::vector<int> state_vars, feature_vars;
+  for (const std::string& s : states) {
+    const auto it = std::find(all.names.begin(), all.names.end(), s);
+    if (it != all.names.end()) state_vars.push_back(static_cast<int>(it - all.names.begin()));
+  }
+  for (const DerivedColumn& d : derived) feature_vars.push_back(d.index);
+  const std::vector<Tree> library = CompletionLibrary(state_vars, feature_vars, search.functions);
+  const GpProblem head = Head(all, train_rows);
+  for (size_t i = 0; i < states.size(); ++i) {
+    GpProblem p = head;
+    p.target = prepared.data[states[i] + "_dot"].head(train_rows);
+    std::vector<Model>& models = (*candidates)[i].models;
+    std::set<std::string> seen;
+    for (const Model& m : models) seen.insert(m.Equation(all.names));
+    const size_t n = models.size();
+    for (size_t c = 0; c < n; ++c) {
+      Model completed = CompleteTerms(models[c], library, p, search);
+      if (completed.fitness > -1.0 && seen.insert(completed.Equation(all.names)).second)
+        models.push_back(std::move(completed));
+    }
+  }
+}
+
+// Whether every state is a variable of its own (which its simulation needs).
+bool AllAmong(const std::vector<std::string>& states, const std::vector<std::string>& names) {
+  return std::all_of(states.begin(), states.end(), [&](const std::string& s) {
+    return std::find(names.begin(), names.end(), s) != names.end();
+  });
+}
+
+// The chosen terms of each state refitted on every row by equation error.
+std::vector<Model> FitChosen(const PreparedData& prepared, const std::vector<std::string>& states,
+                             const std::vector<StateCandidates>& candidates,
+                             const Selection& selection, const GpOptions& search, GpProblem* all) {
+  std::vector<Model> bests;
+  for (size_t i = 0; i < states.size(); ++i) {
+    all->target = prepared.data[states[i] + "_dot"];
+    bests.push_back(FitTree(candidates[i].models[selection.chosen[i]].tree, *all, search));
+  }
+  return bests;
+}
+
+// The weights of `bests` refitted by simulation error (simulation_refit.h); every state must be
+// among the variables.
+SimulationRefit RefineBySimulation(const PreparedData& prepared,
+                                   const std::vector<std::string>& states, const GpProblem& all,
+                                   const std::vector<DerivedColumn>& derived, long train_rows,
+                                   double horizon_s, std::vector<Model>* bests) {
+  SelectionData data{prepared.data.t(), all.names, all.variables, 0, horizon_s, derived};
+  std::vector<int> state_vars;
+  for (const std::string& s : states)
+    state_vars.push_back(
+        static_cast<int>(std::find(all.names.begin(), all.names.end(), s) - all.names.begin()));
+  return RefitBySimulation(data, state_vars, *bests, {horizon_s, 30, train_rows});
+}
+
+// The equation error's r^2 of the refitted weights, on every row.
+double RefittedR2(const PreparedData& prepared, const std::string& state, const Model& best,
+                  const std::vector<Eigen::VectorXd>& variables) {
+  const Eigen::VectorXd y = prepared.data[state + "_dot"];
+  const double sst = (y.array() - y.mean()).square().sum();
+  return sst > 0 ? 1.0 - (y - Predict(best, variables)).squaredNorm() / sst : 0.0;
+}
+
+nlohmann::json ParetoJson(const GpResult& r) {
+  nlohmann::json pareto = nlohmann::json::array();
+  for (const ParetoPoint& p : r.pareto)
+    pareto.push_back(
+        {{"size", p.size}, {"mse", p.mse}, {"r2_heldout", p.r2_heldout}, {"equation", p.equation}});
+  return pareto;
+}
+
+nlohmann::json LogJson(const GpResult& r) {
+  nlohmann::json log = nlohmann::json::array();
+  for (const GenerationLog& g : r.log)
+    log.push_back({{"generation", g.generation},
+                   {"best_fitness", g.best_fitness},
+                   {"best_r2", g.best_r2},
+                   {"best_size", g.best_size},
+                   {"mean_size", g.mean_size}});
+  return log;
+}
+
+// Why the model selection chose what it did, for a validation part of fraction `f`.
+std::string SelectionReason(const Selection& selection, double horizon_s, double f) {
+  return std::string(selection.free_run_diverged
+                         ? "every combination tried diverged in a free run of the training "
+                           "record; the candidate with the smallest"
+                         : "the smallest candidate within one standard error of the smallest") +
+         " short-horizon simulation error (" + FormatNumber(horizon_s) +
+         " s segments, the other states as measured) on the last " + FormatNumber(100.0 * f) +
+         " % of the training record" +
+         (selection.rejected_for_divergence > 0
+              ? ", after " + std::to_string(selection.rejected_for_divergence) +
+                    " better ones diverged in a free run of the training record"
+              : ", and it free-runs the training record within bounds");
+}
+
+// Which of state i's candidates `models` was chosen, each one's score when they were scored
+// (`select`), and why.
+nlohmann::json ChosenJson(const std::vector<Model>& models, size_t i, const Selection& selection,
+                          bool select, double horizon_s, double f,
+                          const std::vector<std::string>& names) {
+  nlohmann::json chosen = {{"candidate", CandidateJson(models[selection.chosen[i]], names)}};
+  if (select) {
+    nlohmann::json scored = nlohmann::json::array();
+    for (const ScoredCandidate& c : selection.candidate_scores[i]) {
+      nlohmann::json j = CandidateJson(models[c.index], names);
+      j["short_horizon_error"] = c.score;
+      scored.push_back(j);
+    }
+    chosen["candidates"] = scored;
+    chosen["short_horizon_error"] = selection.scores[i];
+    chosen["standard_error"] = selection.standard_errors[i];
+    chosen["free_run_diverged"] = selection.free_run_diverged;
+    chosen["reason"] = SelectionReason(selection, horizon_s, f);
+  } else {
+    chosen["reason"] = f > 0 ? "a state has no variable of its own to simulate: the search's best"
+                             : "no validation part (--validation-fraction 0): the search's best";
+  }
+  return chosen;
+}
+
+// How the weights were fitted: by equation error, or (`refine`) then by simulation error.
+nlohmann::json WeightsJson(const SimulationRefit& refit, bool refine, double horizon_s) {
+  if (!refine) return {{"fit", "equation"}};
+  return {{"fit", "simulation"},
+          {"accepted", refit.accepted},
+          {"reason", refit.reason},
+          {"horizon_s", horizon_s},
+          {"segments", refit.segments},
+          {"validation_segments", refit.validation_segments},
+          {"iterations", refit.iterations},
+          {"short_horizon_error_before", refit.initial_error},
+          {"short_horizon_error_after", refit.final_error},
+          {"validation_error_before", refit.validation_error_before},
+          {"validation_error_after", refit.validation_error_after},
+          {"free_run_error_before", refit.free_run_error_before},
+          {"free_run_error_after", refit.free_run_error_after}};
+}
+
 }  // namespace
 
 GpIdentification IdentifyWithGp(
@@ -63,88 +282,26 @@ GpIdentification IdentifyWithGp(
     const std::vector<std::string>& variables, const std::vector<std::string>& inputs,
     const GpIdentifyOptions& options,
     const std::function<void(const std::string&, const GenerationLog&)>& progress) {
-  GpProblem all;
-  for (const auto& names : {variables, inputs})
-    for (const std::string& n : names) {
-      all.names.push_back(n);
-      all.variables.push_back(prepared.data[n]);
-    }
-  // A feature is named by its expression in parentheses, so that every equation written is in
-  // channel names, and is computed from the variables it names (which must be among them).
+  GpProblem all = MeasuredVariables(prepared, variables, inputs);
   std::vector<DerivedColumn> derived;
-  auto add_features = [&](const std::vector<DerivedVariable>& features) {
-    for (const DerivedVariable& f : features) {
-      if (std::find(all.names.begin(), all.names.end(), f.Column()) != all.names.end()) continue;
-      DerivedColumn d{static_cast<int>(all.names.size()),
-                      Expression::Parse(f.expression, "feature " + f.name),
-                      {}};
-      for (const std::string& arg : d.expression.Variables()) {
-        const auto it = std::find(all.names.begin(), all.names.end(), arg);
-        if (it == all.names.end())
-          throw InputError("gp: feature " + f.name + " = " + f.expression + " needs variable '" +
-                           arg + "'");
-        d.arguments.push_back(static_cast<int>(it - all.names.begin()));
-      }
-      all.names.push_back(f.Column());
-      all.variables.push_back(d.expression.Evaluate(prepared.data));
-      derived.push_back(std::move(d));
-    }
-  };
-  add_features(options.features);
-  const long rows = prepared.data.rows();
+  AddFeatures(options.features, prepared, &all, &derived);
   const double f = options.validation_fraction;
-  const long train_rows = f > 0 ? std::lround((1.0 - f) * static_cast<double>(rows)) : rows;
-  if (f > 0 && (train_rows < 10 || rows - train_rows < 2))
-    throw InputError("gp: --validation-fraction " + FormatNumber(f) + " leaves " +
-                     std::to_string(train_rows) + " rows to search on and " +
-                     std::to_string(rows - train_rows) + " to validate on (need 10 and 2)");
+  const long train_rows = TrainRows(prepared.data.rows(), f);
 
   GpIdentification out;
-  std::vector<StateCandidates> candidates;
   std::vector<GpResult> results;
-  for (const std::string& state : states) {
-    all.target = prepared.data[state + "_dot"];
-    results.push_back(RunGp(Head(all, train_rows), options.search, [&](const GenerationLog& log) {
-      if (progress) progress(state, log);
-    }));
-    const GpResult& r = results.back();
-    out.node_evaluations += r.node_evaluations;
-    StateCandidates c{state, {r.best}};
-    std::set<std::string> seen = {r.best.Equation(all.names)};
-    for (const ParetoPoint& p : r.pareto)
-      if (seen.insert(p.equation).second) c.models.push_back(p.model);
-    candidates.push_back(std::move(c));
-  }
+  std::vector<StateCandidates> candidates =
+      SearchStates(prepared, states, train_rows, options.search, progress, &all, &results,
+                   &out.node_evaluations);
   if (options.complete_terms) {
-    add_features(options.completion_features);  // after the search, which does not draw them
-    std::vector<int> state_vars, feature_vars;
-    for (const std::string& s : states) {
-      const auto it = std::find(all.names.begin(), all.names.end(), s);
-      if (it != all.names.end()) state_vars.push_back(static_cast<int>(it - all.names.begin()));
-    }
-    for (const DerivedColumn& d : derived) feature_vars.push_back(d.index);
-    const std::vector<Tree> library =
-        CompletionLibrary(state_vars, feature_vars, options.search.functions);
-    const GpProblem head = Head(all, train_rows);
-    for (size_t i = 0; i < states.size(); ++i) {
-      GpProblem p = head;
-      p.target = prepared.data[states[i] + "_dot"].head(train_rows);
-      std::set<std::string> seen;
-      for (const Model& m : candidates[i].models) seen.insert(m.Equation(all.names));
-      const size_t n = candidates[i].models.size();
-      for (size_t c = 0; c < n; ++c) {
-        Model completed = CompleteTerms(candidates[i].models[c], library, p, options.search);
-        if (completed.fitness > -1.0 && seen.insert(completed.Equation(all.names)).second)
-          candidates[i].models.push_back(std::move(completed));
-      }
-    }
+    // after the search, which does not draw them
+    AddFeatures(options.completion_features, prepared, &all, &derived);
+    CompleteCandidates(prepared, states, all, derived, train_rows, options.search, &candidates);
   }
 
   Selection selection;
   selection.chosen.assign(states.size(), 0);
-  const bool select = f > 0 && std::all_of(states.begin(), states.end(), [&](const std::string& s) {
-                        return std::find(all.names.begin(), all.names.end(), s) != all.names.end();
-                      });
+  const bool select = f > 0 && AllAmong(states, all.names);
   if (select) {
     SelectionData data{prepared.data.t(), all.names,         all.variables,
                        train_rows,        options.horizon_s, derived};
@@ -152,103 +309,31 @@ GpIdentification IdentifyWithGp(
   }
 
   // The chosen terms refitted on every row by equation error, then (when asked) by simulation.
-  std::vector<Model> bests;
-  for (size_t i = 0; i < states.size(); ++i) {
-    all.target = prepared.data[states[i] + "_dot"];
-    bests.push_back(FitTree(candidates[i].models[selection.chosen[i]].tree, all, options.search));
-  }
+  std::vector<Model> bests =
+      FitChosen(prepared, states, candidates, selection, options.search, &all);
   SimulationRefit refit;
   const bool refine = select && options.weight_fit == WeightFit::kSimulation;
-  if (refine) {
-    SelectionData data{prepared.data.t(), all.names, all.variables, 0, options.horizon_s, derived};
-    std::vector<int> state_vars;
-    for (const std::string& s : states)
-      state_vars.push_back(
-          static_cast<int>(std::find(all.names.begin(), all.names.end(), s) - all.names.begin()));
-    refit = RefitBySimulation(data, state_vars, bests, {options.horizon_s, 30, train_rows});
-  }
+  if (refine)
+    refit =
+        RefineBySimulation(prepared, states, all, derived, train_rows, options.horizon_s, &bests);
 
   for (size_t i = 0; i < states.size(); ++i) {
     const std::string& state = states[i];
     const GpResult& r = results[i];
-    const Model& candidate = candidates[i].models[selection.chosen[i]];
     Model& best = bests[i];
-    if (refit.accepted) {  // the equation error's r^2 of the refitted weights
-      const Eigen::VectorXd y = prepared.data[state + "_dot"];
-      const double sst = (y.array() - y.mean()).square().sum();
-      best.r2 = sst > 0 ? 1.0 - (y - Predict(best, all.variables)).squaredNorm() / sst : 0.0;
-    }
+    if (refit.accepted) best.r2 = RefittedR2(prepared, state, best, all.variables);
     out.equations[state] = best.Equation(all.names);
     out.parameters[state + ".bias"] = best.bias;
     for (size_t t = 0; t < best.weights.size(); ++t)
       out.parameters[state + ".w" + std::to_string(t + 1)] = best.weights[t];
-    nlohmann::json pareto = nlohmann::json::array();
-    for (const ParetoPoint& p : r.pareto)
-      pareto.push_back({{"size", p.size},
-                        {"mse", p.mse},
-                        {"r2_heldout", p.r2_heldout},
-                        {"equation", p.equation}});
-    nlohmann::json log = nlohmann::json::array();
-    for (const GenerationLog& g : r.log)
-      log.push_back({{"generation", g.generation},
-                     {"best_fitness", g.best_fitness},
-                     {"best_r2", g.best_r2},
-                     {"best_size", g.best_size},
-                     {"mean_size", g.mean_size}});
-    nlohmann::json chosen = {{"candidate", CandidateJson(candidate, all.names)}};
-    if (select) {
-      nlohmann::json scored = nlohmann::json::array();
-      for (const ScoredCandidate& c : selection.candidate_scores[i]) {
-        nlohmann::json j = CandidateJson(candidates[i].models[c.index], all.names);
-        j["short_horizon_error"] = c.score;
-        scored.push_back(j);
-      }
-      chosen["candidates"] = scored;
-      chosen["short_horizon_error"] = selection.scores[i];
-      chosen["standard_error"] = selection.standard_errors[i];
-      chosen["free_run_diverged"] = selection.free_run_diverged;
-      chosen["reason"] =
-          std::string(selection.free_run_diverged
-                          ? "every combination tried diverged in a free run of the training "
-                            "record; the candidate with the smallest"
-                          : "the smallest candidate within one standard error of the smallest") +
-          " short-horizon simulation error (" + FormatNumber(options.horizon_s) +
-          " s segments, the other states as measured) on the last " + FormatNumber(100.0 * f) +
-          " % of the training record" +
-          (selection.rejected_for_divergence > 0
-               ? ", after " + std::to_string(selection.rejected_for_divergence) +
-                     " better ones diverged in a free run of the training record"
-               : ", and it free-runs the training record within bounds");
-    } else {
-      chosen["reason"] = f > 0 ? "a state has no variable of its own to simulate: the search's best"
-                               : "no validation part (--validation-fraction 0): the search's best";
-    }
-    if (refine)
-      chosen["weights"] = {{"fit", "simulation"},
-                           {"accepted", refit.accepted},
-                           {"reason", refit.reason},
-                           {"horizon_s", options.horizon_s},
-                           {"segments", refit.segments},
-                           {"validation_segments", refit.validation_segments},
-                           {"iterations", refit.iterations},
-                           {"short_horizon_error_before", refit.initial_error},
-                           {"short_horizon_error_after", refit.final_error},
-                           {"validation_error_before", refit.validation_error_before},
-                           {"validation_error_after", refit.validation_error_after},
-                           {"free_run_error_before", refit.free_run_error_before},
-                           {"free_run_error_after", refit.free_run_error_after}};
-    else
-      chosen["weights"] = {{"fit", "equation"}};
-    out.details[state] = {{"r2_train", best.r2},
-                          {"r2_heldout", best.r2_heldout},
-                          {"size", best.Size()},
-                          {"generations", r.log.size()},
-                          {"restarts", r.restarts},
-                          {"stop_reason", r.stop_reason},
-                          {"evaluations", r.evaluations},
-                          {"selection", chosen},
-                          {"pareto", pareto},
-                          {"log", log}};
+    nlohmann::json chosen =
+        ChosenJson(candidates[i].models, i, selection, select, options.horizon_s, f, all.names);
+    chosen["weights"] = WeightsJson(refit, refine, options.horizon_s);
+    out.details[state] = {{"r2_train", best.r2},          {"r2_heldout", best.r2_heldout},
+                          {"size", best.Size()},          {"generations", r.log.size()},
+                          {"restarts", r.restarts},       {"stop_reason", r.stop_reason},
+                          {"evaluations", r.evaluations}, {"selection", chosen},
+                          {"pareto", ParetoJson(r)},      {"log", LogJson(r)}};
   }
   return out;
 }

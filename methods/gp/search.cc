@@ -119,6 +119,140 @@ void SortByFitness(std::vector<Model>& population) {
                    [](const Model& a, const Model& b) { return a.fitness > b.fitness; });
 }
 
+// Tournament selection: the fittest of opt.tournament individuals drawn at random.
+const Model& Tournament(Rng& rng, const std::vector<Model>& parents, const GpOptions& opt) {
+  const int n = static_cast<int>(parents.size());
+  int best = static_cast<int>(rng() % n);
+  for (int k = 1; k < opt.tournament; ++k) {
+    const int c = static_cast<int>(rng() % n);
+    if (parents[c].fitness > parents[best].fitness) best = c;
+  }
+  return parents[best];
+}
+
+// Offspring i of a generation, from its own random stream. `fresh`: ramped half-and-half over
+// depths 2..max_depth (generation 0 and restarts); else a tournament winner, crossed over and
+// mutated with the options' probabilities.
+Tree Breed(const GpOptions& opt, const PrimitiveSet& set, int generation, int i, bool fresh,
+           const std::vector<Model>& parents) {
+  Rng rng = StreamFor(opt.seed, static_cast<uint64_t>(generation), static_cast<uint64_t>(i));
+  if (fresh) {
+    const int depth = 2 + i % std::max(1, opt.max_depth - 1);
+    return RandomTree(rng, set, depth, i % 2 == 0);
+  }
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Tree child = Tournament(rng, parents, opt).tree;
+  if (unit(rng) < opt.crossover) {
+    child = opt.term_mutation && rng() % 2 == 0
+                ? CrossoverTerms(rng, child, Tournament(rng, parents, opt).tree, opt.max_depth)
+                : Crossover(rng, child, Tournament(rng, parents, opt).tree, opt.max_depth);
+  }
+  if (unit(rng) < opt.mutation) {
+    child = opt.term_mutation && rng() % 3 == 0 ? MutateTerm(rng, child, set, opt.max_depth)
+                                                : Mutate(rng, child, set, opt.max_depth);
+  }
+  return child;
+}
+
+// Generation g bred from `population` and scored into `next` (after the first, the elites
+// carried over unchanged); returns the tree nodes evaluated.
+template <typename T>
+double BreedAndScore(int g, bool fresh, const PrimitiveSet& set, const Columns<T>& data,
+                     const GpOptions& opt, const std::vector<Model>& population,
+                     std::vector<Model>& next) {
+  const int n = opt.population;
+  double nodes = 0.0;
+#pragma omp parallel reduction(+ : nodes)
+  {
+    Interpreter<T> interp(data.Pointers());
+#pragma omp for schedule(dynamic, 16)
+    for (int i = 0; i < n; ++i) {
+      if (g > 0 && i < opt.elites) {
+        next[i] = population[i];  // the best, sorted first below
+        continue;
+      }
+      const Tree tree = Breed(opt, set, g, i, fresh, population);
+      next[i] = Score(tree, data, interp, opt);
+      nodes += static_cast<double>(tree.size()) * static_cast<double>(data.rows);
+    }
+  }
+  return nodes;
+}
+
+// Levenberg-Marquardt on the constants of the best few not tuned yet (`exact`: the rows in
+// double precision); a tuned tree replaces its parent when it scores better.
+template <typename T>
+void TuneElites(const Columns<T>& data, const Columns<double>& exact, const GpOptions& opt,
+                std::vector<Model>& population) {
+  const int n = opt.population;
+  const std::vector<const double*> exact_columns = exact.Pointers();
+  std::vector<int> chosen;
+  for (int i = 0; i < n && static_cast<int>(chosen.size()) < opt.constant_elites; ++i)
+    if (!population[i].constants_tuned) chosen.push_back(i);
+#pragma omp parallel
+  {
+    Interpreter<T> interp(data.Pointers());
+#pragma omp for schedule(dynamic, 1)
+    for (size_t c = 0; c < chosen.size(); ++c) {
+      Model& m = population[chosen[c]];
+      m.constants_tuned = true;
+      if (!HasTunableConstants(m)) continue;
+      const ConstantFitResult fit =
+          FitConstants(m, exact_columns, exact.target.data(), exact.rows, opt.constant_iterations);
+      if (!fit.improved) continue;
+      Model tuned = Score(fit.tree, data, interp, opt);
+      tuned.constants_tuned = true;
+      if (tuned.fitness > m.fitness) m = tuned;
+    }
+  }
+  SortByFitness(population);
+}
+
+// Generation g's log line, of the sorted population.
+GenerationLog LogGeneration(int g, const std::vector<Model>& population, double nodes,
+                            double seconds) {
+  const int n = static_cast<int>(population.size());
+  GenerationLog log{g,
+                    population[0].fitness,
+                    population[0].r2,
+                    population[0].Size(),
+                    0.0,
+                    seconds > 0 ? nodes / seconds : 0.0};
+  for (const Model& m : population) log.mean_size += static_cast<double>(m.Size()) / n;
+  return log;
+}
+
+// The best fitness so far and the generations since it last improved.
+struct Stagnation {
+  double best_fitness = -INFINITY;
+  int since_improvement = 0;
+};
+
+// After a generation whose best is `best`: whether the search stops (its reason set in
+// result.stop_reason). A search that stagnates restarts while it may: `fresh` is set, so that all
+// but the elites are drawn anew in the next generation.
+bool Stop(const Model& best, const GpOptions& opt, Stagnation& s, bool& fresh, GpResult& result) {
+  if (best.r2 > 1.0 - 1e-12) {
+    result.stop_reason = "exact fit";
+    return true;
+  }
+  if (best.fitness > s.best_fitness + 1e-12) {
+    s.best_fitness = best.fitness;
+    s.since_improvement = 0;
+  } else if (++s.since_improvement >= opt.stagnation) {
+    if (result.restarts >= opt.restarts) {
+      result.stop_reason =
+          "no improvement for " + std::to_string(opt.stagnation) + " generations" +
+          (opt.restarts > 0 ? " after " + std::to_string(result.restarts) + " restarts" : "");
+      return true;
+    }
+    ++result.restarts;
+    s.since_improvement = 0;
+    fresh = true;
+  }
+  return false;
+}
+
 template <typename T>
 GpResult Run(const GpProblem& p, const GpOptions& opt,
              const std::function<void(const GenerationLog&)>& progress) {
@@ -127,125 +261,31 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
   const std::vector<long> rows = SpreadRows(p.target.size(), opt.fit_rows);
   const Columns<T> data(p, rows);
   const Columns<double> exact(p, rows);  // for the constant optimisation
-  const std::vector<const double*> exact_columns = exact.Pointers();
   PrimitiveSet set{opt.functions, static_cast<int>(p.names.size()), opt.constant_probability};
   const int n = opt.population;
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
 
   GpResult result;
   std::vector<Model> population(n), next(n);
-  // `fresh`: ramped half-and-half over depths 2..max_depth (generation 0 and restarts).
-  auto breed = [&](int generation, int i, bool fresh, const std::vector<Model>& parents) {
-    Rng rng = StreamFor(opt.seed, static_cast<uint64_t>(generation), static_cast<uint64_t>(i));
-    if (fresh) {
-      const int depth = 2 + i % std::max(1, opt.max_depth - 1);
-      return RandomTree(rng, set, depth, i % 2 == 0);
-    }
-    auto tournament = [&]() -> const Model& {
-      int best = static_cast<int>(rng() % n);
-      for (int k = 1; k < opt.tournament; ++k) {
-        const int c = static_cast<int>(rng() % n);
-        if (parents[c].fitness > parents[best].fitness) best = c;
-      }
-      return parents[best];
-    };
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    Tree child = tournament().tree;
-    if (unit(rng) < opt.crossover) {
-      child = opt.term_mutation && rng() % 2 == 0
-                  ? CrossoverTerms(rng, child, tournament().tree, opt.max_depth)
-                  : Crossover(rng, child, tournament().tree, opt.max_depth);
-    }
-    if (unit(rng) < opt.mutation) {
-      child = opt.term_mutation && rng() % 3 == 0 ? MutateTerm(rng, child, set, opt.max_depth)
-                                                  : Mutate(rng, child, set, opt.max_depth);
-    }
-    return child;
-  };
-
-  // Levenberg-Marquardt on the constants of the best few not tuned yet; a tuned tree replaces
-  // its parent when it scores better.
-  auto tune_elites = [&]() {
-    std::vector<int> chosen;
-    for (int i = 0; i < n && static_cast<int>(chosen.size()) < opt.constant_elites; ++i)
-      if (!population[i].constants_tuned) chosen.push_back(i);
-#pragma omp parallel
-    {
-      Interpreter<T> interp(data.Pointers());
-#pragma omp for schedule(dynamic, 1)
-      for (size_t c = 0; c < chosen.size(); ++c) {
-        Model& m = population[chosen[c]];
-        m.constants_tuned = true;
-        if (!HasTunableConstants(m)) continue;
-        const ConstantFitResult fit = FitConstants(m, exact_columns, exact.target.data(),
-                                                   exact.rows, opt.constant_iterations);
-        if (!fit.improved) continue;
-        Model tuned = Score(fit.tree, data, interp, opt);
-        tuned.constants_tuned = true;
-        if (tuned.fitness > m.fitness) m = tuned;
-      }
-    }
-    SortByFitness(population);
-  };
-
-  double best_fitness = -INFINITY;
-  int since_improvement = 0;
+  Stagnation stagnation;
   bool fresh = true;  // the next generation is drawn anew
   for (int g = 0; g < opt.generations; ++g) {
     const auto gen_start = Clock::now();
-    const bool drawn = fresh;
-    double nodes = 0.0;
-#pragma omp parallel reduction(+ : nodes)
-    {
-      Interpreter<T> interp(data.Pointers());
-#pragma omp for schedule(dynamic, 16)
-      for (int i = 0; i < n; ++i) {
-        if (g > 0 && i < opt.elites) {
-          next[i] = population[i];  // the best, sorted first below
-          continue;
-        }
-        const Tree tree = breed(g, i, drawn, population);
-        next[i] = Score(tree, data, interp, opt);
-        nodes += static_cast<double>(tree.size()) * static_cast<double>(data.rows);
-      }
-    }
+    const double nodes = BreedAndScore(g, fresh, set, data, opt, population, next);
     fresh = false;
     std::swap(population, next);
     SortByFitness(population);
-    if (opt.constant_iterations > 0 && opt.constant_elites > 0) tune_elites();
+    if (opt.constant_iterations > 0 && opt.constant_elites > 0)
+      TuneElites(data, exact, opt, population);
 
     const double seconds = std::chrono::duration<double>(Clock::now() - gen_start).count();
-    GenerationLog log{g,
-                      population[0].fitness,
-                      population[0].r2,
-                      population[0].Size(),
-                      0.0,
-                      seconds > 0 ? nodes / seconds : 0.0};
-    for (const Model& m : population) log.mean_size += static_cast<double>(m.Size()) / n;
+    const GenerationLog log = LogGeneration(g, population, nodes, seconds);
     result.log.push_back(log);
     result.node_evaluations += nodes;
     result.evaluations += g == 0 ? n : n - opt.elites;
     for (int i = 0; i < std::min(n, 50); ++i) UpdatePareto(result.pareto, population[i], p.names);
     if (progress) progress(log);
-
-    if (population[0].r2 > 1.0 - 1e-12) {
-      result.stop_reason = "exact fit";
-      break;
-    }
-    if (population[0].fitness > best_fitness + 1e-12) {
-      best_fitness = population[0].fitness;
-      since_improvement = 0;
-    } else if (++since_improvement >= opt.stagnation) {
-      if (result.restarts >= opt.restarts) {
-        result.stop_reason =
-            "no improvement for " + std::to_string(opt.stagnation) + " generations" +
-            (opt.restarts > 0 ? " after " + std::to_string(result.restarts) + " restarts" : "");
-        break;
-      }
-      ++result.restarts;  // all but the elites drawn anew in the next generation
-      since_improvement = 0;
-      fresh = true;
-    }
+    if (Stop(population[0], opt, stagnation, fresh, result)) break;
   }
   if (result.stop_reason.empty()) result.stop_reason = "generation limit";
   result.best = FitTree(population[0].tree, p, opt);

@@ -133,17 +133,29 @@ Eigen::MatrixXd FreeInformation(ceres::Problem& problem, double* theta,
   return 0.5 * (info + info.transpose());
 }
 
+namespace detail {
+
+// The dynamic states' channels and their measurement noise sd, in DynamicIndices order.
 template <Vessel V>
-RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
-                       const std::vector<double>& start, const RefitOptions& o) {
-  constexpr int C = DynamicStates<V>();
-  constexpr auto dyn = DynamicIndices<V>();
-  RefitResult result;
-  result.names = info.params;
-  result.start = start;
-  // Free parameters.
+struct MeasuredStates {
+  std::array<const Channel*, DynamicStates<V>()> channels;
+  std::array<double, DynamicStates<V>()> sd;
+};
+
+// The missing terms, their coefficients kappa_j * term_scale_j (kappa from 1, or 0 for a zero
+// start); the unused entries have kappa 0 and scale 1.
+struct MissingTerms {
+  std::vector<std::shared_ptr<const ResolvedTerm>> terms;
+  std::array<double, kMaxRefitTerms> kappa{}, term_scale;
+};
+
+// The free parameters: `requested`, or when empty the vessel's kRefitParams (else its damping
+// and resistance groups). Throws InputError for a name the vessel does not have.
+template <Vessel V>
+std::array<bool, V::kParams> FreeParameters(const VesselInfo& info,
+                                            const std::vector<std::string>& requested) {
   std::array<bool, V::kParams> free{};
-  std::vector<std::string> names = o.free;
+  std::vector<std::string> names = requested;
   if (names.empty()) {
     if constexpr (requires { V::kRefitParams; }) {
       for (std::string_view n : V::kRefitParams) names.emplace_back(n);
@@ -160,34 +172,179 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
       throw InputError("--refit-params: vessel " + info.name + " has no parameter '" + n + "'");
     free[it - info.params.begin()] = true;
   }
+  return free;
+}
+
+// The sd residuals of channel `name` are divided by: the given one, or its measurement noise
+// estimated from the samples, at least 0.1 % of the channel's spread (noise-free and quantised
+// data). Residuals in units of the measurement noise make the data term a chi-square, so that
+// the prior's relative sd means what it says.
+inline double ResidualSd(const Channel& channel, Eigen::Index rows, const std::string& name,
+                         const RefitOptions& o) {
+  std::vector<double> samples;
+  for (Eigen::Index k = 0; k < rows; ++k)
+    if (channel.sampled(k)) samples.push_back(channel.values(k));
+  const Eigen::Map<const Eigen::VectorXd> y(samples.data(),
+                                            static_cast<Eigen::Index>(samples.size()));
+  const double spread = y.size() > 1 ? std::sqrt((y.array() - y.mean()).square().mean()) : 1.0;
+  const auto given = o.noise_sd.find(name);
+  const double noise = given != o.noise_sd.end() ? given->second
+                       : y.size() >= 16          ? EstimateNoiseSd(y)
+                                                 : 0.0;
+  return std::max({noise, 1e-3 * spread, 1e-12});
+}
+
+// Each dynamic state's channel (its name appended to result->channels) and residual sd.
+// Throws InputError when one is missing.
+template <Vessel V>
+MeasuredStates<V> MeasureStates(const VesselInfo& info, const Dataset& data, const RefitOptions& o,
+                                RefitResult* result) {
+  constexpr int C = DynamicStates<V>();
+  constexpr auto dyn = DynamicIndices<V>();
+  MeasuredStates<V> states;
+  for (int c = 0; c < C; ++c) {
+    const std::string name(V::kStateNames[dyn[c]]);
+    states.channels[c] = data.Find(name);
+    if (states.channels[c] == nullptr)
+      throw InputError(data.SourcePrefix() + "refit of " + info.name + " needs state column '" +
+                       name + "'");
+    result->channels.push_back(name);
+    states.sd[c] = ResidualSd(*states.channels[c], data.rows(), name, o);
+  }
+  return states;
+}
+
+// The missing terms resolved, their coefficients split into kappa and scale. Throws InputError
+// for too many terms or an effect that is not a missing term.
+inline MissingTerms ResolveMissingTerms(const VesselInfo& info,
+                                        const std::vector<Effect>& effects) {
+  if (effects.size() > static_cast<size_t>(kMaxRefitTerms))
+    throw InputError("refit: at most " + std::to_string(kMaxRefitTerms) + " missing terms, not " +
+                     std::to_string(effects.size()));
+  MissingTerms missing;
+  missing.term_scale.fill(1.0);
+  for (size_t j = 0; j < effects.size(); ++j) {
+    if (effects[j].kind != EffectKind::kMissingTerm)
+      throw InputError("refit: effect " + EffectLabel(effects[j]) + " is not a missing term");
+    missing.terms.push_back(ResolveTerm(effects[j], info.states, info.inputs));
+    const double c = effects[j].at("coefficient");
+    missing.term_scale[j] = c != 0.0 ? std::abs(c) : 1.0;
+    missing.kappa[j] = c / missing.term_scale[j];
+  }
+  return missing;
+}
+
+// Segments of segment_s seconds as rows [first, last] (the last may be shorter; at least two
+// rows each). Throws InputError for fewer than two rows.
+inline std::vector<std::pair<Eigen::Index, Eigen::Index>> SegmentBounds(const Dataset& data,
+                                                                        double segment_s) {
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> bounds;
+  for (Eigen::Index a = 0; a + 1 < data.rows();) {
+    Eigen::Index b = a + 1;
+    while (b + 1 < data.rows() && data.t()(b + 1) - data.t()(a) <= segment_s) ++b;
+    bounds.emplace_back(a, b);
+    a = b;
+  }
+  if (bounds.empty()) throw InputError(data.SourcePrefix() + "refit needs at least two rows");
+  return bounds;
+}
+
+// The segment of rows [a, b]: its times, measurements and first row, with the scales.
+template <Vessel V>
+RefitSegment<V>* NewSegment(const Dataset& data, const InputTrack& track, Eigen::Index a,
+                            Eigen::Index b, double dt, const MeasuredStates<V>& states,
+                            const std::array<double, V::kParams>& scale,
+                            const MissingTerms& missing) {
+  constexpr int C = DynamicStates<V>();
+  auto* seg = new RefitSegment<V>;
+  seg->track = &track;
+  seg->max_step = std::min(dt, 0.5) * 1.0000001;
+  for (Eigen::Index k = a; k <= b; ++k) seg->times.push_back(data.t()(k));
+  seg->measured.resize(b - a + 1, C);
+  seg->sampled.resize(b - a + 1, C);
+  for (Eigen::Index k = a; k <= b; ++k)
+    for (int c = 0; c < C; ++c) {
+      seg->sampled(k - a, c) = states.channels[c]->sampled(k);
+      seg->measured(k - a, c) =
+          states.channels[c]->sampled(k) ? states.channels[c]->values(k) : 0.0;
+    }
+  for (int i = 0; i < V::kStates; ++i) {
+    const Channel* ch = data.Find(std::string(V::kStateNames[i]));
+    seg->first[i] = ch != nullptr && ch->sampled(a) ? ch->values(a) : 0.0;
+  }
+  seg->sd = states.sd;
+  seg->scale = scale;
+  seg->terms = missing.terms;
+  seg->term_scale = missing.term_scale;
+  return seg;
+}
+
+// Holds constant the parameters that are not free (all of them with hold_model) and the terms'
+// coefficients that are unused (all of them with hold_model).
+template <Vessel V>
+void HoldFixed(const std::array<bool, V::kParams>& free, bool hold_model, size_t n_terms,
+               double* theta, double* kappa, ceres::Problem* problem) {
+  std::vector<int> held;
+  for (int i = 0; i < V::kParams; ++i)
+    if (!free[i] || hold_model) held.push_back(i);
+  if (held.size() == static_cast<size_t>(V::kParams))
+    problem->SetParameterBlockConstant(theta);
+  else if (!held.empty())
+    problem->SetManifold(theta, new ceres::SubsetManifold(V::kParams, held));
+  std::vector<int> unused;
+  for (int j = hold_model ? 0 : static_cast<int>(n_terms); j < kMaxRefitTerms; ++j)
+    unused.push_back(j);
+  if (unused.size() == static_cast<size_t>(kMaxRefitTerms))
+    problem->SetParameterBlockConstant(kappa);
+  else if (!unused.empty())
+    problem->SetManifold(kappa, new ceres::SubsetManifold(kMaxRefitTerms, unused));
+}
+
+// Solves the problem, recording how it went (termination, costs, iterations, time) in `result`.
+inline void SolveRefit(const RefitOptions& o, ceres::Problem* problem, RefitResult* result) {
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  so.max_num_iterations = o.max_iterations;
+  so.num_threads = std::max(1, o.threads);
+  so.function_tolerance = 1e-10;
+  ceres::Solver::Summary summary;
+  const auto t0 = std::chrono::steady_clock::now();
+  ceres::Solve(so, problem, &summary);
+  result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result->termination = ceres::TerminationTypeToString(summary.termination_type) +
+                        std::string(": ") + summary.message;
+  result->converged = summary.termination_type == ceres::CONVERGENCE;
+  result->initial_cost = summary.initial_cost;
+  result->final_cost = summary.final_cost;
+  result->iterations = static_cast<int>(summary.iterations.size());
+}
+
+// The integrated autocorrelation time of the segments' residuals (the first `residuals`; the
+// prior's are last), over `channels` interleaved channels.
+inline double SegmentCorrelationTime(ceres::Problem& problem, int residuals, int channels) {
+  std::vector<double> r;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, &r, nullptr, nullptr);
+  r.resize(static_cast<size_t>(residuals));
+  return CorrelationTime(
+      Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())), channels);
+}
+
+}  // namespace detail
+
+template <Vessel V>
+RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
+                       const std::vector<double>& start, const RefitOptions& o) {
+  constexpr int C = DynamicStates<V>();
+  constexpr auto dyn = DynamicIndices<V>();
+  RefitResult result;
+  result.names = info.params;
+  result.start = start;
+  const std::array<bool, V::kParams> free = detail::FreeParameters<V>(info, o.free);
   for (int i = 0; i < V::kParams; ++i)
     if (free[i]) result.free.push_back(info.params[i]);
   // Data: inputs, dynamic states, their measurement noise.
   const InputTrack track = RecordedInputs(data, info);
-  std::array<const Channel*, C> channels;
-  std::array<double, C> sd;
-  for (int c = 0; c < C; ++c) {
-    const std::string name(V::kStateNames[dyn[c]]);
-    channels[c] = data.Find(name);
-    if (channels[c] == nullptr)
-      throw InputError(data.SourcePrefix() + "refit of " + info.name + " needs state column '" +
-                       name + "'");
-    result.channels.push_back(name);
-    // Residuals in units of the measurement noise (its sd estimated from the samples, at least
-    // 0.1 % of the channel's spread: noise-free and quantised data), so that the data term is a
-    // chi-square and the prior's relative sd means what it says.
-    std::vector<double> samples;
-    for (Eigen::Index k = 0; k < data.rows(); ++k)
-      if (channels[c]->sampled(k)) samples.push_back(channels[c]->values(k));
-    const Eigen::Map<const Eigen::VectorXd> y(samples.data(),
-                                              static_cast<Eigen::Index>(samples.size()));
-    const double spread = y.size() > 1 ? std::sqrt((y.array() - y.mean()).square().mean()) : 1.0;
-    const auto given = o.noise_sd.find(name);
-    const double noise = given != o.noise_sd.end() ? given->second
-                         : y.size() >= 16          ? EstimateNoiseSd(y)
-                                                   : 0.0;
-    sd[c] = std::max({noise, 1e-3 * spread, 1e-12});
-  }
+  const detail::MeasuredStates<V> states = detail::MeasureStates<V>(info, data, o, &result);
   if (!(o.segment_s >= 0)) throw InputError("refit: --segment must be positive (0: automatic)");
   const double segment_s = o.segment_s > 0 ? o.segment_s : AutomaticSegmentSeconds(data, info);
   result.segment_s = segment_s;
@@ -197,79 +354,27 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     scale[i] = start[i] != 0.0 ? std::abs(start[i]) : 1.0;
     theta[i] = start[i] / scale[i];
   }
-  // Missing terms: coefficients kappa_j * term_scale_j, kappa from 1 (or 0 for a zero start).
-  if (o.terms.size() > static_cast<size_t>(kMaxRefitTerms))
-    throw InputError("refit: at most " + std::to_string(kMaxRefitTerms) + " missing terms, not " +
-                     std::to_string(o.terms.size()));
-  std::vector<std::shared_ptr<const ResolvedTerm>> terms;
-  std::array<double, kMaxRefitTerms> kappa{}, term_scale;
-  term_scale.fill(1.0);
-  for (size_t j = 0; j < o.terms.size(); ++j) {
-    if (o.terms[j].kind != EffectKind::kMissingTerm)
-      throw InputError("refit: effect " + EffectLabel(o.terms[j]) + " is not a missing term");
-    terms.push_back(ResolveTerm(o.terms[j], info.states, info.inputs));
-    const double c = o.terms[j].at("coefficient");
-    term_scale[j] = c != 0.0 ? std::abs(c) : 1.0;
-    kappa[j] = c / term_scale[j];
-  }
+  detail::MissingTerms missing = detail::ResolveMissingTerms(info, o.terms);
   const double dt = data.rows() > 1 ? data.duration() / static_cast<double>(data.rows() - 1) : 1.0;
-  // Segments of segment_s seconds (the last may be shorter; at least two rows each).
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> bounds;
-  for (Eigen::Index a = 0; a + 1 < data.rows();) {
-    Eigen::Index b = a + 1;
-    while (b + 1 < data.rows() && data.t()(b + 1) - data.t()(a) <= segment_s) ++b;
-    bounds.emplace_back(a, b);
-    a = b;
-  }
-  if (bounds.empty()) throw InputError(data.SourcePrefix() + "refit needs at least two rows");
+  const auto bounds = detail::SegmentBounds(data, segment_s);
   std::vector<std::array<double, C>> x0(bounds.size());
   ceres::Problem problem;
   for (size_t j = 0; j < bounds.size(); ++j) {
     const auto [a, b] = bounds[j];
-    auto* seg = new RefitSegment<V>;
-    seg->track = &track;
-    seg->max_step = std::min(dt, 0.5) * 1.0000001;
-    for (Eigen::Index k = a; k <= b; ++k) seg->times.push_back(data.t()(k));
-    seg->measured.resize(b - a + 1, C);
-    seg->sampled.resize(b - a + 1, C);
-    for (Eigen::Index k = a; k <= b; ++k)
-      for (int c = 0; c < C; ++c) {
-        seg->sampled(k - a, c) = channels[c]->sampled(k);
-        seg->measured(k - a, c) = channels[c]->sampled(k) ? channels[c]->values(k) : 0.0;
-      }
-    for (int i = 0; i < V::kStates; ++i) {
-      const Channel* ch = data.Find(std::string(V::kStateNames[i]));
-      seg->first[i] = ch != nullptr && ch->sampled(a) ? ch->values(a) : 0.0;
-    }
+    RefitSegment<V>* seg = detail::NewSegment<V>(data, track, a, b, dt, states, scale, missing);
     for (int c = 0; c < C; ++c) x0[j][c] = seg->first[dyn[c]];
-    seg->sd = sd;
-    seg->scale = scale;
-    seg->terms = terms;
-    seg->term_scale = term_scale;
     const int residuals = seg->Residuals();
     result.residuals += residuals;
     problem.AddResidualBlock(
         new ceres::AutoDiffCostFunction<RefitSegment<V>, ceres::DYNAMIC, V::kParams, C,
                                         kMaxRefitTerms>(seg, residuals),
-        nullptr, theta.data(), x0[j].data(), kappa.data());
+        nullptr, theta.data(), x0[j].data(), missing.kappa.data());
   }
   problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RefitPrior<V>, V::kParams, V::kParams>(
                                new RefitPrior<V>{free, o.prior_sd}),
                            nullptr, theta.data());
-  std::vector<int> held;
-  for (int i = 0; i < V::kParams; ++i)
-    if (!free[i] || o.hold_model) held.push_back(i);
-  if (held.size() == static_cast<size_t>(V::kParams))
-    problem.SetParameterBlockConstant(theta.data());
-  else if (!held.empty())
-    problem.SetManifold(theta.data(), new ceres::SubsetManifold(V::kParams, held));
-  std::vector<int> unused;
-  for (int j = o.hold_model ? 0 : static_cast<int>(terms.size()); j < kMaxRefitTerms; ++j)
-    unused.push_back(j);
-  if (unused.size() == static_cast<size_t>(kMaxRefitTerms))
-    problem.SetParameterBlockConstant(kappa.data());
-  else if (!unused.empty())
-    problem.SetManifold(kappa.data(), new ceres::SubsetManifold(kMaxRefitTerms, unused));
+  detail::HoldFixed<V>(free, o.hold_model, missing.terms.size(), theta.data(), missing.kappa.data(),
+                       &problem);
 
   if (o.information_only) {
     result.information = FreeInformation(problem, theta.data(), x0, C);
@@ -277,35 +382,16 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     result.sd.assign(V::kParams, 0.0);
     return result;
   }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-  so.max_num_iterations = o.max_iterations;
-  so.num_threads = std::max(1, o.threads);
-  so.function_tolerance = 1e-10;
-  ceres::Solver::Summary summary;
-  const auto t0 = std::chrono::steady_clock::now();
-  ceres::Solve(so, &problem, &summary);
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  result.termination = ceres::TerminationTypeToString(summary.termination_type) +
-                       std::string(": ") + summary.message;
-  result.converged = summary.termination_type == ceres::CONVERGENCE;
-  result.initial_cost = summary.initial_cost;
-  result.final_cost = summary.final_cost;
-  result.iterations = static_cast<int>(summary.iterations.size());
+  detail::SolveRefit(o, &problem, &result);
   result.segments = static_cast<int>(bounds.size());
-  if (o.hold_model) {
-    std::vector<double> r;
-    problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, &r, nullptr, nullptr);
-    r.resize(static_cast<size_t>(result.residuals));  // the segments' (the prior's are last)
-    result.correlation_time = CorrelationTime(
-        Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())), C);
-  }
+  if (o.hold_model)
+    result.correlation_time = detail::SegmentCorrelationTime(problem, result.residuals, C);
   result.params.resize(V::kParams);
   result.sd.assign(V::kParams, 0.0);
   for (int i = 0; i < V::kParams; ++i) result.params[i] = theta[i] * scale[i];
   result.terms = o.terms;
-  for (size_t j = 0; j < terms.size(); ++j)
-    result.terms[j].parameters["coefficient"] = kappa[j] * term_scale[j];
+  for (size_t j = 0; j < missing.terms.size(); ++j)
+    result.terms[j].parameters["coefficient"] = missing.kappa[j] * missing.term_scale[j];
   return result;
 }
 
