@@ -1,4 +1,4 @@
-// The data file of contract section 1: a header of column names, then one row per sample,
+// The data file (docs/data.md#data-files): a header of column names, then one row per sample,
 // comma-separated, '.' decimal point; column t [s] strictly increasing; an empty cell is a
 // sample not taken (multi-rate logs); nan/inf, text, short or long rows are bad input.
 // Every error is an InputError reading "file:line:column: what was wrong".

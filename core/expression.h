@@ -1,5 +1,5 @@
-// The equations of model.json (contract section 5): parsed once into a flat postfix program and
-// evaluated per sample, over a whole Dataset, or on any scalar T (double, ceres::Jet).
+// The equations of model.json (docs/data.md#equation-syntax): parsed once into a flat postfix
+// program and evaluated per sample, over a whole Dataset, or on any scalar T (double, ceres::Jet).
 //
 // Grammar (whitespace between tokens is ignored; columns in messages are 1-based bytes):
 //   expression := product (('+' | '-') product)*           left-associative
@@ -94,7 +94,7 @@ class Expression {
   template <typename T>
   T EvaluateT(const T* variables) const;
 
-  // The expression in the contract's syntax; Parse(ToString()) evaluates bit-identically.
+  // The expression in the grammar above; Parse(ToString()) evaluates bit-identically.
   std::string ToString() const;
 
   // The expression expanded into a sum of products, as (term, coefficient) sorted by term; see

@@ -57,7 +57,7 @@ std::vector<Effect> ExtendedEffects(const Diagnosis& d) {
 }
 
 // Where an effect acts, beside its sizes: the inputs of an effect on some inputs only, the state
-// and term of a missing term (contract: "inputs", "state", "term").
+// and term of a missing term (docs/data.md#diagnosisjson: "inputs", "state", "term").
 void AddWhere(const Effect& e, nlohmann::json& j) {
   if (!e.inputs.empty()) j["inputs"] = e.inputs;
   if (e.kind == EffectKind::kMissingTerm) {

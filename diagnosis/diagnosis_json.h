@@ -1,4 +1,4 @@
-// diagnosis.json (contract section 4, with more fields) and the extended model's model.json.
+// diagnosis.json (docs/data.md#diagnosisjson) and the extended model's model.json.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-// What is fitted for each effect of the catalogue: the free sizes, their contract names, bounds
+// What is fitted for each effect of the catalogue: the free sizes, their public names, bounds
 // and starting values, and how they set EffectValues<T>. Smooth effects (current, actuator lag,
 // biases, inertia, damping, surge force, resistance) are fitted by Ceres through the differentiable
 // rollout; input delay and saturation move signals in time or clip them, so they are found by a
@@ -96,7 +96,7 @@ void ApplySizes(const EffectSearch& search, const T* theta, EffectValues<T>& e) 
   }
 }
 
-// The contract names of the sizes (contract section 3).
+// The public names of the sizes (docs/data.md#effects).
 std::vector<std::string> SizeNames(EffectKind kind);
 
 // The effect of a search's sizes; a one-input search names its input from `input_names`.

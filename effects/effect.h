@@ -1,4 +1,4 @@
-// The catalogue of what a simulation can get wrong (contract section 3), shared by
+// The catalogue of what a simulation can get wrong (docs/data.md#effects), shared by
 // `usvid simulate --effect NAME=VALUE` and `usvid diagnose`:
 //   input_delay   every input reaches the plant late by delay_s [s]
 //   current       constant irrotational current current_north, current_east [m/s]; damping
@@ -58,7 +58,7 @@ const EffectInfo& InfoOf(EffectKind kind);
 
 struct Effect {
   EffectKind kind;
-  std::map<std::string, double> parameters;  // names of contract section 3
+  std::map<std::string, double> parameters;  // names of docs/data.md#effects
   // The input channels it acts on; empty: the kind's default (every input; the yaw input for
   // input_bias). Only for the kinds that OnInputs allows.
   std::vector<std::string> inputs = {};

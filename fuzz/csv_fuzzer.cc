@@ -1,4 +1,4 @@
-// libFuzzer target: the strict data CSV reader (contract section 1). Any input either parses
+// libFuzzer target: the strict data CSV reader (docs/data.md#data-files). Any input either parses
 // into a dataset whose time is strictly increasing and whose sampled cells are finite, or is
 // refused with InputError; nothing else (no crash, no other exception, no sanitizer report).
 #include <cmath>

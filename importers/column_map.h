@@ -1,4 +1,4 @@
-// A column map for `usvid import --format csv --map NEW=OLD[:unit],...`: the contract channel
+// A column map for `usvid import --format csv --map NEW=OLD[:unit],...`: the data channel
 // NEW is taken from the log's column OLD, times the unit's factor to SI (core/units.h).
 // Two targets are special: vn and ve (earth-fixed north and east velocity) are rotated into
 // body-fixed u and v with psi.

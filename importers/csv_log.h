@@ -1,8 +1,8 @@
-// Any CSV log into the contract's form. The separator (',', ';' or tab) is detected from the
-// header. With a column map only the mapped columns are read (others may hold text, such as
-// dates); without one every column is read and must be numeric. Time comes from the channel t
-// (map it: --map t=time). Rows whose time does not increase are dropped and reported; vn/ve
-// become body-fixed u/v (column_map.h).
+// Any CSV log into a data file (docs/data.md#data-files). The separator (',', ';' or tab) is
+// detected from the header. With a column map only the mapped columns are read (others may hold
+// text, such as dates); without one every column is read and must be numeric. Time comes from
+// the channel t (map it: --map t=time). Rows whose time does not increase are dropped and
+// reported; vn/ve become body-fixed u/v (column_map.h).
 #pragma once
 
 #include <string>

@@ -21,7 +21,7 @@
 
 namespace usvid {
 
-// A variable `name` defined by `expression`, an expression in channel names (contract syntax).
+// A variable `name` defined by `expression` in channel names (docs/data.md#equation-syntax).
 struct DerivedVariable {
   std::string name;
   std::string expression;

@@ -1,4 +1,4 @@
-// Scores a model on data it may never have seen (contract section 5, metrics.json): the model's
+// Scores a model on data it may never have seen (docs/data.md#metricsjson): the model's
 // free run on the data's inputs, per channel fit %, NRMSE and RMSE; k-step-ahead NRMSE (k = 10
 // and 40 samples: the model run k steps from every k-th measured state); the one-step derivative
 // R^2 of each equation against derivatives estimated from the data; whether the free run diverged;

@@ -1,4 +1,4 @@
-// How well a simulated channel follows the measured one (contract section 5):
+// How well a simulated channel follows the measured one (docs/data.md#metricsjson):
 //   fit % = 100 (1 - ||y - y_hat|| / ||y - mean(y)||)   (MATLAB's compare; 100 is perfect,
 //           0 is no better than the mean, negative is worse),
 //   rmse  = ||y - y_hat|| / sqrt(n),   nrmse = rmse / std(y).

@@ -1,7 +1,7 @@
 // Whether an identified equation has the true structure: its additive terms (Expression::Terms,
 // products normalised, coefficients dropped; the constant term ignored on both sides, an offset
 // is not structure) against the true terms. precision = correct / found, recall = correct /
-// true. True terms are known for msd and odin3dof (domain.md sections 2.1, 2.2).
+// true. True terms are known for msd and odin3dof (docs/model.md#msd, docs/model.md#odin3dof).
 #pragma once
 
 #include <optional>

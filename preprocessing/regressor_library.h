@@ -1,7 +1,7 @@
 // Candidate regressors for equation-error fits (delay scans, SINDy): from state channels x and
 // input channels u, the columns 1, x_i, u_j, x_i x_k (i <= k) and |x_i| x_i, each named in the
-// contract's expression syntax ("u", "v*r", "abs(u)*u", "tau_x") so a fitted row of weights is
-// an equation that can be written out.
+// equation syntax (docs/data.md#equation-syntax: "u", "v*r", "abs(u)*u", "tau_x") so a fitted
+// row of weights is an equation that can be written out.
 #pragma once
 
 #include <Eigen/Core>

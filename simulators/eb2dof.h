@@ -1,4 +1,4 @@
-// Eriksen-Breivik 2-DOF high-speed model, vessel `eb2dof` (domain.md section 2.3; Eriksen &
+// Eriksen-Breivik 2-DOF high-speed model, vessel `eb2dof` (docs/model.md#eb2dof; Eriksen &
 // Breivik 2017, reference report eq. 2.4-2.6). State x = [U r] (speed over ground [m/s], rate of
 // turn [rad/s]), input tau = [throttle, nozzle] ([0,1] or [-1,1]; [rad]):
 //   M(x) x' + sigma(x) = tau,   M(x) = diag(m_U(x), m_r(x)),

@@ -1,4 +1,4 @@
-// Mass-spring-damper, vessel `msd` (domain.md section 2.1):
+// Mass-spring-damper, vessel `msd` (docs/model.md#msd):
 //   m x'' + d x' + k x = f,   m = 10 kg, d = 1 N s/m, k = 2 N/m,
 // so x'' = -0.2 x - 0.1 x' + 0.1 f. States x [m], v [m/s]; input f [N].
 // A current (effect `current`) is a medium moving along x at current_north: the damper acts on

@@ -1,4 +1,4 @@
-// Fossen 3-DOF vessel with Odin's numbers, vessel `odin3dof` (domain.md section 2.2, the
+// Fossen 3-DOF vessel with Odin's numbers, vessel `odin3dof` (docs/model.md#odin3dof, the
 // reference report's eq. 3.12 with D22 on |v_r|):
 //   eta' = R(psi) nu,   M nu' + C(nu) nu + D(nu_r) nu_r = tau,   nu_r = nu - nu_c,
 //   M = diag(m11, m22, m33),  C(nu) = [[0, 0, -m22 v], [0, 0, m11 u], [m22 v, -m11 u, 0]],

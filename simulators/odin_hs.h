@@ -1,4 +1,4 @@
-// High-speed twin-waterjet USV of Odin's size, vessel `odin-hs` (domain.md section 2.4): one hull
+// High-speed twin-waterjet USV of Odin's size, vessel `odin-hs` (docs/model.md#odin-hs): one hull
 // model for the displacement (Fn < 0.4), semi-displacement (0.4-1.1) and planing (> 1.1) regimes,
 // driven by two Hamilton-type waterjets used as one (same rpm, nozzle and bucket on both).
 // Model, parameter sources and measured behaviour: docs/vessels/odin-hs.md. SI units, radians.
@@ -142,7 +142,7 @@ struct OdinHs {
   // Froude number on the waterline length.
   static double FroudeNumber(double speed) { return speed / std::sqrt(kGravity * kLength); }
 
-  // Regime by Froude number (domain.md section 2.4).
+  // Regime by Froude number (docs/model.md#speed-regimes).
   static constexpr std::string_view Regime(double fn) {
     return fn < 0.4 ? "displacement" : fn <= 1.1 ? "semi-displacement" : "planing";
   }

@@ -24,7 +24,7 @@
 namespace usvid {
 
 // What a parameter stands for, so that effects can scale a whole class of them
-// (effects `inertia`, `damping` and `resistance` of contract section 3). kResistance is the
+// (effects `inertia`, `damping` and `resistance` of docs/data.md#effects). kResistance is the
 // part of the damping that resists forward motion (surge resistance): `damping` scales it with
 // the rest, `resistance` alone.
 enum class ParamGroup { kInertia, kDamping, kResistance, kOther };

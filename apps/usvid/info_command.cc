@@ -1,4 +1,4 @@
-// usvid info --data F.csv: checks a data file against the contract (section 1) and summarises
+// usvid info --data F.csv: checks a data file against docs/data.md#data-files and summarises
 // it: rows, duration, and per channel the samples taken, the sampling rate and the range.
 // With --zigzag B: the zig-zag overshoots (metrics/zigzag_response.h).
 

@@ -1,8 +1,8 @@
 // Monomials in speed U and rate r, the regressors of the Eriksen-Breivik model (eb_lr.h):
 //   U^i r^j,   or with abs_rate   U^i |r| r^(j-1)   (j >= 1; |r| r is the odd form of r^2).
-// Written in the contract's equation syntax with the caller's channel names ("U*U*r",
-// "abs(r)*r", "1"); parsed from lists such as "U,U^2,U^3,r^2" or "1,U,abs(r)*r" whose factors
-// are 1, U, r and abs(r) (or |r|), each with an optional integer power ^n (n >= 0).
+// Written in the equation syntax (docs/data.md#equation-syntax) with the caller's channel names
+// ("U*U*r", "abs(r)*r", "1"); parsed from lists such as "U,U^2,U^3,r^2" or "1,U,abs(r)*r" whose
+// factors are 1, U, r and abs(r) (or |r|), each with an optional integer power ^n (n >= 0).
 #pragma once
 
 #include <Eigen/Core>

@@ -83,7 +83,7 @@ struct Odin3DofModel : FossenModelBase<Odin3DofModel> {
   static void Forces(const T* /*p*/, const T* in, T* tau) {
     for (int i = 0; i < 3; ++i) tau[i] = in[i];
   }
-  // tau_i written in channel names (contract section 5).
+  // tau_i written in channel names (docs/data.md#modeljson).
   static std::string ForceText(int i, const double* /*p*/) { return std::string(kInputNames[i]); }
 };
 

@@ -147,7 +147,7 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
     }
   }
 
-  // The equations in channel names (contract section 5): the same arithmetic as Hull.
+  // The equations in channel names (docs/data.md#modeljson): the same arithmetic as Hull.
   static std::string EquationText(int i, const double* p) {
     auto n = [](double x) { return "(" + FormatNumber(x) + ")"; };
     const std::string speed = "sqrt(u*u + v*v + " + FormatNumber(kSpeedEps * kSpeedEps) + ")";

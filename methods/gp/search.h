@@ -71,7 +71,7 @@ struct Model {
   double fitness = -1.0;
   bool constants_tuned = false;
 
-  // "bias + w1*term1 + ..." in the contract's syntax.
+  // "bias + w1*term1 + ..." in the equation syntax (docs/data.md#equation-syntax).
   std::string Equation(const std::vector<std::string>& names) const;
   size_t Size() const { return tree.size(); }
 };

@@ -45,7 +45,7 @@ inline int Depth(const Tree& tree) {
 }
 // Indices of the children of node i, first child first.
 std::vector<int> Children(const Tree& tree, int i);
-// Infix text of the subtree at i in the contract's syntax, variables by name.
+// Infix text of the subtree at i, variables by name (syntax: docs/data.md#equation-syntax).
 std::string ToString(const Tree& tree, int i, const std::vector<std::string>& names);
 inline std::string ToString(const Tree& tree, const std::vector<std::string>& names) {
   return ToString(tree, static_cast<int>(tree.size()) - 1, names);

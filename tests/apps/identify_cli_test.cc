@@ -1,4 +1,4 @@
-// `usvid identify --method gp` as a user runs it: model.json with the contract's fields and
+// `usvid identify --method gp` as a user runs it: model.json with the documented fields and
 // equations, the same equations at 1 and 2 threads, bad options refused with exit code 2.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -34,7 +34,7 @@ class IdentifyCliTest : public ::testing::Test {
   std::string data_;
 };
 
-// Contract section 5: method, vessel, states, inputs, parameters, train, seed, equations.
+// docs/data.md#modeljson: method, vessel, states, inputs, parameters, train, seed, equations.
 TEST_F(IdentifyCliTest, WritesModelJsonWithEquations) {
   const auto out = (dir_ / "model.json").string();
   const auto r = RunUsvid("identify --method gp --vessel msd --data " + data_ +
@@ -51,7 +51,7 @@ TEST_F(IdentifyCliTest, WritesModelJsonWithEquations) {
   EXPECT_THAT(eq, HasSubstr("x"));
   EXPECT_THAT(eq, HasSubstr("f"));
   EXPECT_FALSE(m.at("gp").at("equations").at("v").at("pareto").empty());
-  // The equation is the contract's syntax: it parses and evaluates on the data's channels.
+  // The equation is in the equation syntax: it parses and evaluates on the data's channels.
   const Expression e = Expression::Parse(eq, "model.json");
   const Eigen::VectorXd values = e.Evaluate(ReadDatasetCsv(data_));
   EXPECT_TRUE(values.allFinite());

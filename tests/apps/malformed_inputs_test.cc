@@ -1,4 +1,4 @@
-// The catalogue of malformed inputs (issue 11): each is refused the way contract section 2
+// The catalogue of malformed inputs (issue 11): each is refused as docs/data.md#command-line
 // says: exit code 2, one line on stderr naming the file (and line and column where there is
 // one) or the option at fault, no output file left behind, no crash. One test per input.
 #include <gmock/gmock.h>
@@ -94,7 +94,7 @@ TEST_P(MalformedInputTest, ExitsTwoNamesTheCulpritAndWritesNothing) {
 }
 
 const Malformed kCatalogue[] = {
-    // Data CSV (contract section 1).
+    // Data CSV (docs/data.md#data-files).
     {"csv_no_time", "info --data {D}/no_time.csv", "no_time.csv"},
     {"csv_text_cell", "info --data {D}/text.csv", "text.csv:3:3"},
     {"csv_backwards_time", "info --data {D}/backwards.csv", "backwards.csv:4"},

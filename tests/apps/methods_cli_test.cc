@@ -1,5 +1,5 @@
 // Every method, through the binary: `usvid identify` writes model.json with equations for each
-// state (contract section 5), and `usvid evaluate` free-runs it on other data and writes
+// state (docs/data.md#modeljson), and `usvid evaluate` free-runs it on other data and writes
 // metrics.json with fit %, NRMSE, RMSE, derivative R^2 and divergence, without NaN.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

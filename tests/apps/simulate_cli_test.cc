@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 class SimulateCliTest : public ::testing::Test {};
 
-// A zig-zag writes the contract's channels and a truth file with the vessel, parameters,
+// A zig-zag writes the vessel's channels and a truth file with the vessel, parameters,
 // effects, seed and the overshoot angles.
 TEST_F(SimulateCliTest, ZigZagWritesDataAndTruth) {
   const auto dir = FreshTempDir();

@@ -33,7 +33,7 @@ TEST_F(UsvidCliTest, HelpAndVersion) {
   EXPECT_THAT(version.out, StartsWith("usvid "));
 }
 
-// Usage errors exit 2 with one line naming the command or option (contract section 2).
+// Usage errors exit 2 with one line naming the command or option (docs/data.md#command-line).
 TEST_F(UsvidCliTest, UsageErrorsExitTwo) {
   const auto none = RunUsvid("");
   EXPECT_EQ(none.exit_code, 2);
@@ -106,7 +106,7 @@ TEST_F(UsvidCliTest, MalformedCsvIsLocated) {
   EXPECT_THAT(r.err, HasSubstr((dir / "bad.csv").string() + ":3:5: column 'u'"));
 }
 
-// A foreign CSV log imports with a map and passes the contract check; a bad log leaves no
+// A foreign CSV log imports with a map and passes `usvid info`'s check; a bad log leaves no
 // output file behind.
 TEST_F(UsvidCliTest, ImportCsvThenInfo) {
   const auto dir = FreshTempDir();

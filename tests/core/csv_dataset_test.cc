@@ -1,4 +1,4 @@
-// Contract section 1: what a data file may hold, and the exact place named when it may not.
+// docs/data.md#data-files: what a data file may hold, and the exact place named when it may not.
 #include "core/csv_dataset.h"
 
 #include <gmock/gmock.h>

@@ -1,4 +1,4 @@
-// `usvid diagnose` as a user runs it (contract sections 2-4): diagnosis.json with the contract's
+// `usvid diagnose` as a user runs it (docs/data.md#diagnosisjson): diagnosis.json with its
 // fields and no NaN, the extended model.json, a report.html with its figure inline; the same
 // numbers at 1 and 2 threads; bad input is exit code 2 with a message naming what is wrong, and
 // leaves no diagnosis.json behind.

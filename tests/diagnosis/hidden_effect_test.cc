@@ -155,7 +155,7 @@ TEST(OneInputEffectTestOdinHs, NozzleDelayAlone) {
 
 // Beyond the catalogue (issue 21): a cross-flow yaw term r' += 0.05 |v| v that odin3dof's model
 // lacks. The residual search proposes it, it competes as a missing_term candidate fitted through
-// the simulator, and it is the cause, in the contract's shape; the extended model carries it.
+// the simulator, and it is the cause (docs/data.md#missing_term); the extended model carries it.
 TEST(OneInputEffectTestMissingTerm, CrossFlowYawTermIsTheCause) {
   const fs::path dir = FreshTempDir();
   const std::string data = (dir / "data.csv").string();

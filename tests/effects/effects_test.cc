@@ -1,4 +1,4 @@
-// Each effect of contract section 3 changes the data exactly as its definition says, checked
+// Each effect of docs/data.md#effects changes the data exactly as its definition says, checked
 // against a run without the effect that is changed by hand in the definition's way.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The maneuvers of contract section 2, run on the simulators: the zig-zag switches exactly when
+// The maneuvers (docs/data.md#maneuvers), run on the simulators: the zig-zag switches exactly when
 // the heading passes the threshold and reports its overshoots, turns to port first for a
 // negative A, and ramps its yaw command within the actuation's rate limit; the turning circle
 // reports its geometry; the step grid reaches steady state on every step; the random maneuvers

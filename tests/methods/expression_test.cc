@@ -1,5 +1,5 @@
-// The equations of model.json (contract section 5): parsing with located errors, evaluation per
-// sample, per dataset and on Jets, printing that round-trips, and the term structure.
+// The equations of model.json (docs/data.md#equation-syntax): parsing with located errors,
+// evaluation per sample, per dataset and on Jets, printing that round-trips, term structure.
 #include "core/expression.h"
 
 #include <ceres/jet.h>
@@ -90,7 +90,7 @@ class ExpressionTest : public ::testing::Test {
                                                {"tau_x", 1000}, {"tau_y", 200}, {"tau_n", 500}};
 };
 
-// The odin3dof equations of domain.md 2.2 give the hand-computed accelerations.
+// The odin3dof equations of docs/model.md#odin3dof give the hand-computed accelerations.
 TEST_F(ExpressionTest, EvaluatesOdin3DofEquations) {
   // 0.05 - 0.020264 - 0.19696 + 0.20263
   EXPECT_NEAR(Eval(kSurge, odin_), 0.035406, 1e-12);
@@ -162,7 +162,7 @@ TEST_F(ExpressionTest, SyntaxErrorsNameTheirColumn) {
   }
 }
 
-// The number forms of the contract read as decimal numbers.
+// The number forms of the equation syntax (docs/data.md#equation-syntax) read as decimal numbers.
 TEST_F(ExpressionTest, ReadsNumberForms) {
   EXPECT_EQ(Eval("2.0263e-4", {}), 2.0263e-4);
   EXPECT_EQ(Eval(".5", {}), 0.5);
@@ -186,7 +186,7 @@ TEST_F(ExpressionTest, BoundsNestingAndEvaluatesDeepPrograms) {
   EXPECT_EQ(Eval(text, {{"u", 1.01}}), expected);
 }
 
-// Printing in the contract's syntax and parsing again gives bit-identical values, and printing
+// Printing in the equation syntax and parsing again gives bit-identical values, and printing
 // is then a fixed point; random expressions cover every operator and parenthesisation.
 TEST_F(ExpressionTest, ToStringRoundTripsToIdenticalValues) {
   std::mt19937 rng(7);

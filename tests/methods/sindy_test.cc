@@ -1,6 +1,6 @@
 // SINDy with STRidge recovers the true equations, checked on held-out data: the identified
-// right-hand side against the true one (domain.md 2.1, 2.2), both evaluated at the clean states
-// and inputs of a held-out multisine run that the fit never saw.
+// right-hand side against the true one (docs/model.md#msd, docs/model.md#odin3dof), both
+// evaluated at the clean states and inputs of a held-out multisine run that the fit never saw.
 #include "methods/sindy/sindy.h"
 
 #include <gtest/gtest.h>
@@ -80,7 +80,7 @@ TEST_F(SindyTest, Odin3DofFreeRunsHeldOutMultisineAtNinetyFivePercent) {
   }
 }
 
-// Each of u', v', r' of domain.md 2.2 within 5 % relative RMS error on the held-out multisine.
+// Each of u', v', r' (docs/model.md#odin3dof) within 5 % relative RMS error, held-out multisine.
 TEST_F(SindyTest, Odin3DofFromRandomStepsWithinFivePercentOnHeldOutMultisine) {
   const OdinCase& c = Odin();
   for (int i = 0; i < 3; ++i) {

@@ -1,6 +1,6 @@
-// Scoring models (contract section 5): fit % as MATLAB's compare defines it, the free run of the
-// true equations reproduces the simulator, and a model that blows up is stopped, reported as
-// diverged, and still scored with finite numbers.
+// Scoring models (docs/data.md#metricsjson): fit % as MATLAB's compare defines it, the free
+// run of the true equations reproduces the simulator, and a model that blows up is stopped,
+// reported as diverged, and still scored with finite numbers.
 #include "metrics/evaluation.h"
 
 #include <gtest/gtest.h>
@@ -29,7 +29,7 @@ class EvaluationTest : public ::testing::Test {
     auto m = MakeManeuver(maneuver, sim.Info().actuation, 120.0, 4);
     return sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
   }
-  // domain.md section 2.2, solved for the accelerations, in full precision.
+  // docs/model.md#odin3dof, solved for the accelerations, in full precision.
   static nlohmann::json TrueModel() {
     return {{"method", "truth"},
             {"states", {"u", "v", "r"}},
@@ -157,7 +157,7 @@ Dataset Written(double duration_s,
   return d;
 }
 
-// The msd's equation (domain.md section 2.1, x'' = (f - d x' - k x) / m) with damping d.
+// The msd's equation (docs/model.md#msd, x'' = (f - d x' - k x) / m) with damping d.
 nlohmann::json MsdModel(double damping) {
   return {{"method", "truth"},
           {"states", {"v"}},

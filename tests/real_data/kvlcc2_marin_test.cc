@@ -34,7 +34,7 @@ class Kvlcc2MarinTest : public ::testing::Test {
     if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
     dir_ = FreshTempDir();
   }
-  // The MARIN file `name` (zz_20, zz_-20, tc_35) imported to the contract's CSV.
+  // The MARIN file `name` (zz_20, zz_-20, tc_35) imported to a data CSV (docs/data.md).
   std::string Import(const std::string& name) {
     const std::string out = (dir_ / (name + ".csv")).string();
     const auto r = RunUsvid("import --format marin-dat --data " + kData + "MARIN_FREE_KVLCC2_" +

@@ -1,5 +1,5 @@
 // `usvid simulate --inputs` against an independent implementation of the equations
-// (issue 3 acceptance): odin3dof from domain.md section 2.2 written with its matrices M, C(nu),
+// (issue 3 acceptance): odin3dof from docs/model.md#odin3dof written with its matrices M, C(nu),
 // D(nu) and a linear solve, msd from m x'' + d x' + k x = f, both with classical RK4 and the
 // input held over each step. Over 300 s every channel agrees to 1e-4 of its range.
 #include <gtest/gtest.h>
