@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "design/eb_lr_information.h"
 #include "design/method_problem.h"
+#include "methods/eb_lr/eb_lr.h"
 #include "maneuvers/maneuver_factory.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
@@ -121,7 +122,7 @@ ManeuverInformation InformationOf(const DesignProblem& problem, const std::strin
   const Dataset noisy = NoisyRun(problem, maneuver, 1);
   const Probe probe = ProbeFit(problem.vessel, problem.method, noisy);
   m.unusable = probe.unusable;
-  if (problem.method == "eb-lr" && m.unusable.empty()) {
+  if (problem.method == eb_lr::kMethodName && m.unusable.empty()) {
     std::vector<std::pair<double, double>> windows;
     for (const auto& w : probe.model.at("eb_lr").at("steady_windows"))
       windows.emplace_back(w.at("start_s"), w.at("end_s"));

@@ -2,8 +2,13 @@
 
 #include "core/error.h"
 #include "methods/eb_lr/eb_lr.h"
+#include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/identify.h"
+#include "methods/refit/refit.h"
+#include "methods/registry.h"
 #include "simulation/vessel_simulator.h"
+#include "simulators/eb2dof.h"
+#include "simulators/odin3dof.h"
 
 namespace usvid::design {
 namespace {
@@ -28,31 +33,31 @@ std::vector<std::string> EbLrNames() {
 MethodProblem MethodProblemOf(const std::string& vessel, const std::string& method) {
   const VesselInfo& info = FindVessel(vessel).Info();  // throws for an unknown vessel
   MethodProblem p;
-  if (method == "refit") return p;
-  if (method == "fossen-ceres" || method == "eb-lr") {
-    const std::string own = method == "fossen-ceres" ? "odin3dof" : "eb2dof";
+  if (method == kRefitMethodName) return p;
+  if (method == fossen::kMethodName || method == eb_lr::kMethodName) {
+    const std::string own(method == fossen::kMethodName ? Odin3Dof::kName : Eb2Dof::kName);
     if (vessel != own)
       throw InputError("design: " + method + " is designed for " + own +
                        " only (its model is that vessel's), not " + vessel);
     p.refit.free = info.params;  // all of them
     p.refit.prior_sd = 1e9;      // none
-    if (method == "fossen-ceres") p.refit.segment_s = 10.0;  // fossen-ceres' shooting segments
-    p.names = method == "eb-lr" ? EbLrNames() : info.params;
+    if (method == fossen::kMethodName) p.refit.segment_s = 10.0;  // its shooting segments
+    p.names = method == eb_lr::kMethodName ? EbLrNames() : info.params;
     if (p.names.size() != info.params.size())
       throw std::logic_error("design: eb-lr's default basis is not eb2dof's form");
     return p;
   }
-  if (method == "gp" || method == "sindy")
-    throw InputError("design: --method " + method +
-                     " has no parameters to design a maneuver for (use refit, fossen-ceres or "
-                     "eb-lr)");
-  throw InputError("design: --method '" + method +
-                   "' is not supported (known: refit, fossen-ceres, eb-lr)");
+  const std::string known = std::string(kRefitMethodName) + ", " +
+                            std::string(fossen::kMethodName) + ", " +
+                            std::string(eb_lr::kMethodName);
+  FindMethod(method);  // throws for an unknown method
+  throw InputError("design: --method " + method +
+                   " has no simulator's parameters to design a maneuver for (use " + known + ")");
 }
 
 Probe ProbeFit(const std::string& vessel, const std::string& method, const Dataset& data) {
   Probe probe;
-  if (method != "eb-lr") return probe;
+  if (method != eb_lr::kMethodName) return probe;
   IdentifyRequest r;
   r.method = method;
   r.vessel = vessel;

@@ -70,7 +70,7 @@ struct DiscoveredTerms {
   std::string state;
   std::string expression;   // the missing part of d(state)/dt, in channel names
   double heldout_r2 = 0.0;  // of the derivative residual on the held-out part
-  std::string method;       // the regression that proposed it: "sindy" or "gp"
+  std::string method;       // the regression that proposed it: sindy or gp (their kMethodName)
 };
 
 // What a person looks at: measured, nominal and extended channels on the held-out part.

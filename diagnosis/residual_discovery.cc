@@ -107,11 +107,11 @@ std::vector<DiscoveredTerms> DiscoverMissingTerms(const Dataset& data, const Ves
     const Eigen::VectorXd& d = held_data[s + "_dot"];
     const double r2 = ExplainedShare(
         d, sindy::PredictWithSindy(id, s, held_data, dynamic, inputs, options.library));
-    if (r2 >= kMinHeldoutR2) out.push_back({s, id.equations[s].get<std::string>(), r2, "sindy"});
+    if (r2 >= kMinHeldoutR2) out.push_back({s, id.equations[s].get<std::string>(), r2, std::string(sindy::kMethodName)});
     const std::string expression = gp_id.equations[s].get<std::string>();
     const Eigen::VectorXd prediction = Expression::Parse(expression).Evaluate(held_data);
     const double gp_r2 = prediction.allFinite() ? ExplainedShare(d, prediction) : 0.0;
-    if (gp_r2 >= kMinHeldoutR2) out.push_back({s, expression, gp_r2, "gp"});
+    if (gp_r2 >= kMinHeldoutR2) out.push_back({s, expression, gp_r2, std::string(gp::kMethodName)});
   }
   return out;
 }

@@ -11,6 +11,7 @@
 #include "diagnosis/diagnosis_json.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/identify.h"
+#include "methods/registry.h"
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
 #include "metrics/structure.h"
@@ -82,8 +83,8 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
 std::string ForcesFor(const FitJob& job) {
   const nlohmann::json& o = job.method.options;
   if (o.contains("forces")) return o["forces"] == "none" ? "" : o["forces"].get<std::string>();
-  static const std::set<std::string> kChannelMethods = {"gp", "sindy", "fossen-ceres", "eb-lr"};
-  if (job.vessel.empty() || o.contains("inputs") || !kChannelMethods.contains(job.method.method))
+  if (job.vessel.empty() || o.contains("inputs") || job.method.method == kDiagnoseMethod ||
+      !FindMethod(job.method.method).channel_inputs)
     return "";
   return HasWaterjetStates(FindVessel(job.vessel).Info().states) ? "waterjet" : "";
 }
@@ -199,7 +200,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                               ? train_sets.at(job.train_maneuver)
                               : SimulateForSuite(job.vessel, job.train_maneuver,
                                                  suite.train_seconds, job.noise, job.seed);
-    model = job.method.method == "diagnose" ? DiagnosedModel(job, train)
+    model = job.method.method == kDiagnoseMethod ? DiagnosedModel(job, train)
                                             : Identify(train, RequestFor(job));
   } catch (const std::exception& e) {
     failure = std::string("failed: ") + e.what();

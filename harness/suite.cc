@@ -1,5 +1,8 @@
 #include "harness/suite.h"
 
+#include "harness/default_suites.h"
+#include "methods/registry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -99,10 +102,14 @@ void CheckMethodOptions(const nlohmann::json& options, const std::string& where)
   }
 }
 
-const std::set<std::string> kMethods = {"gp",     "sindy",   "eb-lr",    "fossen-ceres", "refit",
-                                        "hybrid", "nominal", "diagnose", "nomoto"};
-constexpr const char* kKnownMethods =
-    "gp, sindy, eb-lr, fossen-ceres, refit, hybrid, nominal, diagnose, nomoto";
+// A suite's methods: the registered ones, and the nominal simulator's diagnosis.
+bool KnownSuiteMethod(const std::string& name) {
+  if (name == kDiagnoseMethod) return true;
+  const auto& all = Methods();
+  return std::any_of(all.begin(), all.end(), [&](const Method& m) { return m.name == name; });
+}
+
+std::string KnownSuiteMethods() { return MethodNames() + ", " + std::string(kDiagnoseMethod); }
 
 std::vector<SuiteData> DataList(const nlohmann::json& v, const std::string& file,
                                 const std::string& where) {
@@ -115,11 +122,67 @@ std::vector<SuiteData> DataList(const nlohmann::json& v, const std::string& file
   return out;
 }
 
+// A suite on measured data: its training and test files, and at most one vessel.
+void ParseMeasuredData(const nlohmann::json& v, const std::string& file, Suite& s) {
+  const nlohmann::json& data = v["data"];
+  if (!data.is_object() || !data.contains("train") || !data.contains("test"))
+    throw InputError(file + ": data: expected {\"train\": [...], \"test\": [...]}");
+  for (const auto& [key, _] : data.items())
+    if (key != "train" && key != "test")
+      throw InputError(file + ": data: unknown field '" + key + "'");
+  for (const char* key : {"train_maneuvers", "test_maneuvers", "train_seconds", "test_seconds"})
+    if (v.contains(key))
+      throw InputError(file + ": '" + key + "' does not apply to a suite on measured data");
+  s.train_data = DataList(data["train"], file, "data: train");
+  s.test_data = DataList(data["test"], file, "data: test");
+  for (const SuiteData& d : s.train_data) s.train_maneuvers.push_back(d.name);
+  for (const SuiteData& d : s.test_data) s.test_maneuvers.push_back(d.name);
+  if (v.contains("vessels")) {
+    if (!v["vessels"].is_array()) throw InputError(file + ": vessels: expected an array");
+    for (const auto& item : v["vessels"]) {
+      if (!item.is_string()) throw InputError(file + ": vessels: names are strings");
+      s.vessels.push_back(item.get<std::string>());
+    }
+  }
+  if (s.vessels.size() > 1)
+    throw InputError(file + ": a suite on measured data has at most one vessel");
+}
+
+// The methods: names, or objects with "method" and its options.
+std::vector<SuiteMethod> ParseMethods(const nlohmann::json& list, const std::string& file) {
+  if (!list.is_array() || list.empty())
+    throw InputError(file + ": methods: expected a non-empty array");
+  std::vector<SuiteMethod> methods;
+  for (const auto& m : list) {
+    SuiteMethod sm;
+    if (m.is_string()) {
+      sm.method = m.get<std::string>();
+      sm.options = nlohmann::json::object();
+    } else if (m.is_object() && m.contains("method") && m["method"].is_string()) {
+      sm.method = m["method"].get<std::string>();
+      sm.options = m;
+      sm.options.erase("method");
+    } else {
+      throw InputError(file + ": methods: each is a name or an object with \"method\"");
+    }
+    if (!KnownSuiteMethod(sm.method))
+      throw InputError(file + ": methods: unknown method '" + sm.method +
+                       "' (known: " + KnownSuiteMethods() + ")");
+    CheckMethodOptions(sm.options, file + ": methods: " + sm.method);
+    if (sm.options.contains("forces") && sm.options["forces"] != "none")
+      ForceChannels(sm.options["forces"].get<std::string>());  // throws for an unknown map
+    methods.push_back(sm);
+  }
+  return methods;
+}
+
 }  // namespace
 
 std::string SuiteMethod::Label() const {
-  if (method == "gp" && options.contains("operators"))
-    return "gp[" + options.at("operators").get<std::string>() + "]";
+  if (method == kDiagnoseMethod) return method;
+  const std::string& option = FindMethod(method).label_option;
+  if (!option.empty() && options.contains(option))
+    return method + "[" + options.at(option).get<std::string>() + "]";
   return method;
 }
 
@@ -148,28 +211,7 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     s.name = v["name"].get<std::string>();
   }
   if (measured) {
-    const nlohmann::json& data = v["data"];
-    if (!data.is_object() || !data.contains("train") || !data.contains("test"))
-      throw InputError(file + ": data: expected {\"train\": [...], \"test\": [...]}");
-    for (const auto& [key, _] : data.items())
-      if (key != "train" && key != "test")
-        throw InputError(file + ": data: unknown field '" + key + "'");
-    for (const char* key : {"train_maneuvers", "test_maneuvers", "train_seconds", "test_seconds"})
-      if (v.contains(key))
-        throw InputError(file + ": '" + key + "' does not apply to a suite on measured data");
-    s.train_data = DataList(data["train"], file, "data: train");
-    s.test_data = DataList(data["test"], file, "data: test");
-    for (const SuiteData& d : s.train_data) s.train_maneuvers.push_back(d.name);
-    for (const SuiteData& d : s.test_data) s.test_maneuvers.push_back(d.name);
-    if (v.contains("vessels")) {
-      if (!v["vessels"].is_array()) throw InputError(file + ": vessels: expected an array");
-      for (const auto& item : v["vessels"]) {
-        if (!item.is_string()) throw InputError(file + ": vessels: names are strings");
-        s.vessels.push_back(item.get<std::string>());
-      }
-    }
-    if (s.vessels.size() > 1)
-      throw InputError(file + ": a suite on measured data has at most one vessel");
+    ParseMeasuredData(v, file, s);
   } else {
     s.vessels = ListOf<std::string>(v["vessels"], file + ": vessels");
     s.train_maneuvers = ListOf<std::string>(v["train_maneuvers"], file + ": train_maneuvers");
@@ -197,28 +239,7 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     for (const std::string& m : s.train_maneuvers) check_maneuver(m, "train_maneuvers");
     for (const std::string& m : s.test_maneuvers) check_maneuver(m, "test_maneuvers");
   }
-  if (!v["methods"].is_array() || v["methods"].empty())
-    throw InputError(file + ": methods: expected a non-empty array");
-  for (const auto& m : v["methods"]) {
-    SuiteMethod sm;
-    if (m.is_string()) {
-      sm.method = m.get<std::string>();
-      sm.options = nlohmann::json::object();
-    } else if (m.is_object() && m.contains("method") && m["method"].is_string()) {
-      sm.method = m["method"].get<std::string>();
-      sm.options = m;
-      sm.options.erase("method");
-    } else {
-      throw InputError(file + ": methods: each is a name or an object with \"method\"");
-    }
-    if (!kMethods.contains(sm.method))
-      throw InputError(file + ": methods: unknown method '" + sm.method +
-                       "' (known: " + kKnownMethods + ")");
-    CheckMethodOptions(sm.options, file + ": methods: " + sm.method);
-    if (sm.options.contains("forces") && sm.options["forces"] != "none")
-      ForceChannels(sm.options["forces"].get<std::string>());  // throws for an unknown map
-    s.methods.push_back(sm);
-  }
+  s.methods = ParseMethods(v["methods"], file);
   s.noise = v.contains("noise") ? ListOf<double>(v["noise"], file + ": noise")
                                 : std::vector<double>{measured ? 0.0 : 0.005};
   for (double n : s.noise)
@@ -235,31 +256,9 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
 }
 
 Suite DefaultSuite(bool quick) {
-  // GP at its own defaults (docs/gp.md), with abs so that it can write |v| v; the quick suite
-  // only shrinks the search.
-  nlohmann::json gp = {{"method", "gp"}, {"operators", "+,-,*,abs"}};
-  if (quick) {
-    gp["population"] = 300;
-    gp["generations"] = 10;
-  }
-  nlohmann::json suite = {
-      {"name", quick ? "default-quick" : "default"},
-      {"vessels",
-       quick ? nlohmann::json{"odin3dof", "odin-hs"} : nlohmann::json{"odin3dof", "odin-hs"}},
-      // Training on the two maneuvers a sea trial can run in minutes; the step grid (up to an
-      // hour of data, a third of the suite's time as a training set) is a test maneuver. That
-      // time buys a fourth seed: eight paired cells per vessel and training maneuver, enough for
-      // the verdict's Wilcoxon tests to separate four methods after Holm's correction (the
-      // smallest two-sided p of eight pairs is 1/128; of six, 1/32). docs/compare.md.
-      {"train_maneuvers", {"zigzag:20/20", "random-steps"}},
-      {"test_maneuvers", {"zigzag:20/20", "stepgrid", "random-steps"}},
-      // nominal: the true simulator, the ceiling of every score. The shooting fit runs at 10 Hz.
-      {"methods", {"nominal", gp, "sindy", {{"method", "fossen-ceres"}, {"rate", 10}}, "eb-lr"}},
-      {"noise", quick ? nlohmann::json{0.005} : nlohmann::json{0.005, 0.02}},
-      {"seeds", quick ? nlohmann::json{1} : nlohmann::json{1, 2, 3, 4}},
-      {"train_seconds", quick ? 150 : 300},
-      {"test_seconds", quick ? 90 : 180}};
-  return ParseSuite(suite, "default suite");
+  const char* text = quick ? kQuickSuiteJson : kDefaultSuiteJson;
+  return ParseSuite(nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true),
+                    "default suite");
 }
 
 nlohmann::json SuiteToJson(const Suite& s) {
@@ -296,13 +295,13 @@ std::vector<FitJob> FitJobs(const Suite& s) {
   std::vector<FitJob> jobs;
   if (s.Measured()) {
     const std::string vessel = s.vessels.empty() ? "" : s.vessels[0];
-    // The data do not change with the seed: only the GP search does.
+    // The data do not change with the seed: only a seeded method's search (gp's) does.
     for (const std::string& train : s.train_maneuvers)
       for (const SuiteMethod& m : s.methods)
         for (double noise : s.noise)
           for (uint64_t seed : s.seeds) {
             jobs.push_back({vessel, train, m, noise, seed});
-            if (m.method != "gp") break;
+            if (m.method == kDiagnoseMethod || !FindMethod(m.method).seeded) break;
           }
     return jobs;
   }

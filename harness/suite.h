@@ -11,22 +11,26 @@
 //    "file": ..., "format": "marin-dat"}], "test": [...]}, "methods": [...]}
 // with at most one vessel (whose channels the files hold; none when the methods name their
 // "states" and "inputs"), maneuver names taken from the data names, no added noise.
-// Methods: gp, sindy, eb-lr, fossen-ceres, refit, nominal, nomoto, and diagnose (the nominal
-// vessel extended by the causes `usvid diagnose` names on the training data).
+// Methods: every registered method (methods/method_list.h), and diagnose (kDiagnoseMethod: the
+// nominal vessel extended by the causes `usvid diagnose` names on the training data).
 // Unknown fields, wrong types and unknown names are errors naming the file and field.
 #pragma once
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "harness/suite_data.h"
 
 namespace usvid {
 
+// The suite's own method beside the registered ones: the nominal vessel, diagnosed.
+inline constexpr std::string_view kDiagnoseMethod = "diagnose";
+
 struct SuiteMethod {
-  std::string method;      // gp, sindy, eb-lr, fossen-ceres
+  std::string method;      // a registered method's name, or kDiagnoseMethod
   nlohmann::json options;  // method options (gp: operators, population, generations, ...)
   std::string Label() const;
 };
@@ -56,8 +60,10 @@ struct FitJob {
 
 // Relative data paths are taken from the folder of `file`.
 Suite ParseSuite(const nlohmann::json& value, const std::string& file);
-// The embedded default: odin3dof and odin-hs; zig-zag, step grid and random steps; every
-// method; two noise levels; three seeds. `quick`: one vessel's worth, smaller GP, one seed.
+// The embedded default (harness/suites/default.json): odin3dof and odin-hs; trained on zig-zag
+// and random steps, tested on those and the step grid; nominal, gp, sindy, fossen-ceres and
+// eb-lr; two noise levels; four seeds. `quick` (quick.json): the same vessels, maneuvers and
+// methods with one noise level, one seed, shorter records and a smaller GP search.
 Suite DefaultSuite(bool quick);
 nlohmann::json SuiteToJson(const Suite& suite);
 

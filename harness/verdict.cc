@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "methods/nominal/nominal.h"
 #include "metrics/rank_tests.h"
 
 namespace usvid {
@@ -102,7 +103,7 @@ VerdictEntry Judge(const std::string& vessel, const std::string& train, const Me
   e.label = metric.label;
   e.higher_is_better = metric.higher_is_better;
   std::map<std::string, MethodCells> cells = CellScores(rows, metric);
-  if (const auto it = cells.find("nominal"); it != cells.end()) {
+  if (const auto it = cells.find(std::string(kNominalMethodName)); it != cells.end()) {
     std::vector<double> v;
     for (const auto& [_, s] : it->second.score) v.push_back(s);
     if (!v.empty()) e.ceiling = Median(v);

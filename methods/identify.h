@@ -1,59 +1,21 @@
-// One identification, whatever the method: states and inputs chosen (from a vessel or given),
-// the data preprocessed, the method fitted, and the model JSON of contract section 5 returned
-// (method, vessel, states, variables, inputs, parameters, equations, seed, preprocessing, train,
-// and the method's own details). Used by `usvid identify` and by the comparison harness.
+// One identification, whatever the method: speed and course (and the request's forces) derived,
+// the registered method (methods/registry.h) fitted, and its model.json returned (method,
+// vessel, states, variables, inputs, parameters, equations, seed, preprocessing, train, and the
+// method's own details; docs/data.md). Used by `usvid identify`, the comparison harness and the
+// design's checks.
 #pragma once
 
-#include <functional>
 #include <nlohmann/json.hpp>
-#include <optional>
-#include <string>
-#include <vector>
 
 #include "core/dataset.h"
-#include "preprocessing/pipeline.h"
+#include "methods/identify_request.h"
+#include "methods/method.h"
 
 namespace usvid {
-
-struct IdentifyRequest {
-  std::string method;  // gp, sindy, eb-lr, fossen-ceres, refit, hybrid, nominal, nomoto
-  std::string vessel;  // states and inputs from it (when not given)
-  std::vector<std::string> states, inputs;
-  std::string data_name;  // for model.json's train.data
-  PreprocessOptions preprocess;
-  // gp: an unset option takes its value from the preset: "default" (gp::GpOptions, terms
-  // chosen by held-out error, model chosen by short-horizon simulation) or "report" (the
-  // reference report's Table 3.1, gp::ReportOptions, no validation part).
-  std::string preset = "default";
-  std::string operators = "+,-,*";
-  std::optional<int> population, generations, max_depth, restarts, constant_iterations;
-  std::optional<double> ols_threshold, validation_fraction;
-  // gp: the short-horizon simulations' length [s] (model selection and the simulation refit);
-  // unset: 10 s, or kRegimeHorizonS on a record with regime features.
-  std::optional<double> horizon_s;
-  std::string fitness = "r2";
-  // Regime features for gp and sindy (regime_features.h): auto, hinges, froude or none.
-  std::string features = "auto";
-  std::optional<long> fit_rows;
-  uint64_t seed = 1;
-  int threads = 0;
-  // fossen-ceres: "simulation" (multiple shooting) or "equation" error; gp: how the chosen
-  // terms' weights are fitted, by "equation" error or by it and then by "simulation" error.
-  std::string fit_mode = "simulation";
-  double segment_s =
-      0.0;  // shooting segment [s]; 0: the method's default (fossen 10 s, refit auto)
-  bool robust = false;
-  // refit (methods/refit/refit.h); also segment_s
-  std::vector<std::string> refit_params;
-  double prior_sd = 0.5;
-  std::vector<double> start_params;  // empty: the vessel's defaults
-  // hybrid (methods/hybrid/hybrid.h); also the refit options above
-  std::optional<int> hybrid_terms;
-};
 
 // Throws InputError for an unknown method or a combination it cannot fit. `log` receives
 // progress lines (may be empty).
 nlohmann::json Identify(const Dataset& data, const IdentifyRequest& request,
-                        const std::function<void(const std::string&)>& log = {});
+                        const Logger& log = {});
 
 }  // namespace usvid

@@ -3,7 +3,7 @@
 //                [--population N] [--generations N] [--max-depth D] [--ols-threshold E]
 //                [--validation-fraction F] [--horizon S] [--constant-iterations N] [--restarts N]
 //                [--seed N] [--threads N] --out model.json
-// Fits one method and writes model.json (contract section 5).
+// Fits one method and writes model.json (docs/data.md#modeljson).
 
 #include <iostream>
 #include <memory>
@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/json_file.h"
 #include "methods/identify.h"
+#include "methods/registry.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -54,19 +55,15 @@ void RunIdentify(const IdentifyOptions& o) {
 void AddIdentifyCommand(CLI::App& app) {
   auto o = std::make_shared<IdentifyOptions>();
   CLI::App* cmd = app.add_subcommand("identify", "Fit one identification method to data");
-  cmd->add_option("--method", o->request.method,
-                  "gp (GP-SR with orthogonal least squares), sindy (sparse regression, STRidge), "
-                  "eb-lr (Eriksen-Breivik 2-DOF regression on step-grid data), fossen-ceres "
-                  "(parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map), "
-                  "refit (the --vessel's own coefficients, Ceres multiple shooting), hybrid (refit "
-                  "plus the missing terms its residual proposes and held-out simulation keeps), "
-                  "nominal (the "
-                  "--vessel as it is, a baseline), nomoto (first-order Nomoto heading model, "
-                  "T r' + r = K (delta - delta0))")
+  std::string methods_help;
+  std::vector<std::string> names;
+  for (const Method& m : Methods()) {
+    methods_help += (methods_help.empty() ? "" : "; ") + m.name + " (" + m.summary + ")";
+    names.push_back(m.name);
+  }
+  cmd->add_option("--method", o->request.method, methods_help)
       ->required()
-      ->check(
-          CLI::IsMember({"gp", "sindy", "eb-lr", "fossen-ceres", "refit", "hybrid", "nominal",
-                         "nomoto"}));
+      ->check(CLI::IsMember(names));
   cmd->add_option("--data", o->data, "Training data CSV")->required();
   cmd->add_option("--vessel", o->request.vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');

@@ -1,4 +1,4 @@
-// Eriksen & Breivik (2017) linear regression of the 2-DOF high-speed model (domain.md 2.3),
+// Eriksen & Breivik (2017) linear regression of the 2-DOF high-speed model (docs/model.md#eb2dof),
 // method `eb-lr`. State x = [U r] (speed [m/s], rate of turn [rad/s]), input tau = [tau_m
 // tau_delta] (thrust and yaw commands in the data's units, e.g. throttle [-], nozzle [rad]):
 //   M(x) x' + sigma(x) = tau,   M(x) = diag(m_U(x), m_r(x)),
@@ -27,14 +27,16 @@
 //     those runs, each simulated from its start (RK4, the other state from the smoothed data):
 //     noise on the regressors biases and scatters equation error, not output error.
 //  4. Steps 2 and 3 are repeated `refinements` times.
-// Equations (contract section 5): speed -> "(tau_m - (a1*U + ...)) / (c1 + c2*U)", and so for r;
-// with a thrust_loss_channel q, sigma_U's sum ends with "k*q*U".
+// Equations (docs/data.md#modeljson): speed -> "(tau_m - (a1*U + ...)) / (c1 + c2*U)", and so
+// for r; with a thrust_loss_channel q, sigma_U's sum ends with "k*q*U".
 // A mass that is not positive over the data is reported in details.warnings, not thrown.
 //
 // Throws InputError: a missing, not fully sampled or non-finite channel; a non-uniform time
 // grid; a constant input; a bad option (named); fewer steady windows than a sigma basis has
 // terms, or windows that do not separate a term (named); fewer transient pieces than M terms.
 #pragma once
+
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -45,6 +47,9 @@
 #include "methods/eb_lr/steady_windows.h"
 
 namespace usvid::eb_lr {
+
+// The name --method and suites give it (methods/method_list.h registers it).
+inline constexpr std::string_view kMethodName = "eb-lr";
 
 struct EbLrOptions {
   std::vector<Monomial> sigma_speed_basis = {{1, 0}, {2, 0}, {3, 0}, {0, 2}};

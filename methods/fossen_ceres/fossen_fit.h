@@ -1,4 +1,4 @@
-// `fossen-ceres`: the parametric Fossen 3-DOF model of odin3dof (domain.md section 2.2: M, C(nu)
+// `fossen-ceres`: the parametric Fossen 3-DOF model of odin3dof (docs/model.md#odin3dof: M, C(nu)
 // from M, D(nu) with linear and quadratic terms; 10 parameters m11 m22 m33 Xu Xuu Yv Yvv Nv Nr
 // Nrr), and the same model driven through a waterjet input map (13 parameters, inputs throttle,
 // nozzle, bucket; see fossen_models.h) or a rudder-propeller map (inputs delta, rev); and the
@@ -18,6 +18,8 @@
 // simulation-error fit starts from the equation-error one.
 #pragma once
 
+#include <string_view>
+
 #include <array>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -27,6 +29,9 @@
 #include "preprocessing/pipeline.h"
 
 namespace usvid::fossen {
+
+// The name --method and suites give it (methods/method_list.h registers it).
+inline constexpr std::string_view kMethodName = "fossen-ceres";
 
 enum class FitMode { kEquationError, kSimulationError };
 
@@ -66,7 +71,7 @@ template <typename Model>
 BasicFossenFit<Model::kParams> FitSimulationErrorFor(
     const PreparedData& prepared, const std::array<double, Model::kParams>& start,
     const FossenOptions& options);
-// The model written out as equations in channel names (contract section 5).
+// The model written out as equations in channel names (docs/data.md#modeljson).
 template <typename Model>
 nlohmann::json EquationsFor(const std::array<double, Model::kParams>& params);
 

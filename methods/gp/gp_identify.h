@@ -3,10 +3,12 @@
 // then the model chosen among each search's Pareto candidates by short-horizon simulation on the
 // rest, the validation part (model_selection.h), and the chosen terms refitted on every row, by
 // equation error and then by simulation error (simulation_refit.h).
-// The result is the model JSON of contract section 5 (equations in channel names) plus, per
+// The result is the model JSON of docs/data.md#modeljson (equations in channel names) plus, per
 // equation, the Pareto front of held-out error against size, the generation log, why the search
 // stopped, and which candidate was chosen and why.
 #pragma once
+
+#include <string_view>
 
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -18,6 +20,9 @@
 #include "preprocessing/pipeline.h"
 
 namespace usvid::gp {
+
+// The name --method and suites give it (methods/method_list.h registers it).
+inline constexpr std::string_view kMethodName = "gp";
 
 // "+,-,*,abs,tanh,/" -> functions; throws InputError naming an unknown operator.
 std::vector<Op> ParseOperators(const std::string& list);

@@ -18,6 +18,8 @@
 // `usvid evaluate`, `simulate --params` and `diagnose --params` run it.
 #pragma once
 
+#include <string_view>
+
 #include <string>
 #include <vector>
 
@@ -25,6 +27,9 @@
 #include "methods/refit/refit.h"
 
 namespace usvid::hybrid {
+
+// The name --method and suites give it (methods/method_list.h registers it).
+inline constexpr std::string_view kMethodName = "hybrid";
 
 struct HybridOptions {
   RefitOptions refit;  // free parameters, segment, prior; its terms are ignored

@@ -15,6 +15,8 @@
 //     from ceres::Covariance, scaled by the residual variance per degree of freedom.
 #pragma once
 
+#include <string_view>
+
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -22,6 +24,9 @@
 #include "preprocessing/pipeline.h"
 
 namespace usvid::nomoto {
+
+// The name --method and suites give it (methods/method_list.h registers it).
+inline constexpr std::string_view kMethodName = "nomoto";
 
 struct NomotoFit {
   double K = 0.0, T = 0.0, delta0 = 0.0;           // output-error estimate

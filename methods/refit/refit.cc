@@ -36,7 +36,7 @@ const VesselInfo& InfoWithParams(const std::string& vessel, size_t params, const
 
 RefitResult RefitVessel(const std::string& vessel, const Dataset& data,
                         const std::vector<double>& start, const RefitOptions& options) {
-  const VesselInfo& info = InfoWithParams(vessel, start.size(), "refit");
+  const VesselInfo& info = InfoWithParams(vessel, start.size(), kRefitMethodName.data());
   return WithVesselType(vessel, "--method refit", [&]<Vessel V>() {
     return refit::RefitTyped<V>(info, data, start, options);
   });

@@ -15,6 +15,8 @@
 // given value; at most kMaxRefitTerms. The hybrid method (methods/hybrid) finds them.
 #pragma once
 
+#include <string_view>
+
 #include <Eigen/Core>
 #include <map>
 #include <string>
@@ -24,6 +26,9 @@
 #include "effects/effect.h"
 
 namespace usvid {
+
+// The name --method and suites give it (methods/method_list.h registers it).
+inline constexpr std::string_view kRefitMethodName = "refit";
 
 struct RefitOptions {
   // Parameter names; empty: the vessel's kRefitParams, else its damping and resistance groups.

@@ -16,13 +16,16 @@
 // u' on tau_x [N]); thresholds are dimensionless (fractions of the target's RMS per unit-RMS
 // column); held-out errors are in the derivative's units squared.
 //
-// The equations are in the contract's syntax ("0.5 + 0.01*u - 0.049*abs(u)*u + 0.0002*tau_x",
-// coefficients written to round-trip exactly); they parse with core/expression.h and evaluate
-// to PredictWithSindy (to rounding: the parser multiplies c*v*r as (c*v)*r).
+// The equations are in the equation syntax of docs/data.md#equation-syntax
+// ("0.5 + 0.01*u - 0.049*abs(u)*u + 0.0002*tau_x", coefficients written to round-trip exactly);
+// they parse with core/expression.h and evaluate to PredictWithSindy (to rounding: the parser
+// multiplies c*v*r as (c*v)*r).
 //
 // Throws InputError for a missing or non-finite channel, fewer rows than folds x 10, folds < 2,
 // max_iterations < 1, a negative or non-finite ridge or threshold, no states, or an empty library.
 #pragma once
+
+#include <string_view>
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -33,6 +36,9 @@
 #include "preprocessing/regressor_library.h"
 
 namespace usvid::sindy {
+
+// The name --method and suites give it (methods/method_list.h registers it).
+inline constexpr std::string_view kMethodName = "sindy";
 
 struct SindyOptions {
   LibraryOptions library;

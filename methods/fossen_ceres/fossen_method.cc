@@ -1,0 +1,127 @@
+// `fossen-ceres`: the parametric Fossen 3-DOF fit (methods/fossen_ceres/fossen_fit.h) on
+// forces, a waterjet or a rudder-propeller input map, or the jets' forces; registered in
+// methods/method_list.h.
+#include <type_traits>
+
+#include "core/error.h"
+#include "methods/channel_fit.h"
+#include "methods/fossen_ceres/fossen_fit.h"
+#include "methods/fossen_ceres/fossen_models.h"
+#include "methods/fossen_ceres/jet_force_model.h"
+#include "methods/method.h"
+#include "preprocessing/delay_estimation.h"
+#include "simulation/segment_error.h"
+#include "simulation/vessel_simulator.h"
+#include "simulators/odin3dof.h"
+
+namespace usvid {
+namespace {
+
+// fossen-ceres: a parametric Fossen 3-DOF model (odin3dof's, the same driven through the
+// waterjet or the rudder-propeller input map, or the high-speed form on the jets' forces),
+// equation error then multiple shooting.
+template <typename Model>
+nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
+                              const PreparedData& prepared, const Logger& log) {
+  constexpr bool kOdin3Dof = std::is_same_v<Model, fossen::Odin3DofModel>;
+  fossen::FossenOptions fo;
+  fo.segment_s = o.segment_s > 0 ? o.segment_s : 10.0;
+  fo.robust = o.robust;
+  // One thread for Ceres: its parallel evaluation sums the cost in a thread-dependent order, and
+  // the last digits of the fit would differ between 1 and 2 threads.
+  fo.threads = 1;
+  const auto eq = fossen::FitEquationErrorFor<Model>(prepared, fo);
+  Log(log, "equation-error fit: " + eq.termination);
+  auto fit = eq;
+  if (o.fit_mode == "simulation") {
+    fit = fossen::FitSimulationErrorFor<Model>(prepared, eq.params, fo);
+    Log(log, "simulation-error fit (multiple shooting): " + fit.termination);
+  }
+  nlohmann::json params = nlohmann::json::object(), sd = nlohmann::json::object(),
+                 eq_params = nlohmann::json::object();
+  for (int i = 0; i < Model::kParams; ++i) {
+    const std::string name(Model::kParamNames[i]);
+    params[name] = fit.params[i];
+    sd[name] = fit.sd[i];
+    eq_params[name] = eq.params[i];
+  }
+  const nlohmann::json equations = fossen::EquationsFor<Model>(fit.params);
+  nlohmann::json refined = nullptr;
+  if (!kOdin3Dof && prepared.delay_estimate) {
+    Log(log,
+        "delay not refined: the " + std::string(Model::kName) + " model is no registered vessel");
+  } else if (prepared.delay_estimate) {
+    // The delay to a fraction of a sample: NLopt (DIRECT-L, then Sbplx) on the segmented
+    // simulation error of the fitted model on the data as recorded.
+    const VesselSimulator& sim = FindVessel(std::string(Odin3Dof::kName));
+    const std::vector<double> p(fit.params.begin(), fit.params.end());
+    auto cost = [&](const std::vector<double>& d) {
+      EffectValues<double> e;
+      e.delay_s = d[0];
+      return SegmentedSimulationError(sim, p, e, data, {"u", "v", "r"}, fo.segment_s);
+    };
+    const DelayEstimate d =
+        ContinuousDelay(cost, 1, o.preprocess.max_delay_s, {prepared.delay_s}, 60);
+    refined = d.delay_s;
+    Log(log, "delay refined on the simulation error: " + std::to_string(d.delay_s) + " s");
+  }
+  return {{"parameters", params},
+          {"equations", equations},
+          {"fossen",
+           {{"model", std::string(Model::kName)},
+            {"mode", o.fit_mode},
+            {"segment_s", fo.segment_s},
+            {"robust", o.robust},
+            {"parameter_sd", sd},
+            {"covariance_ok", fit.covariance_ok},
+            {"termination", fit.termination},
+            {"converged", fit.converged},
+            {"initial_cost", fit.initial_cost},
+            {"final_cost", fit.final_cost},
+            {"iterations", fit.iterations},
+            {"equation_error_parameters", eq_params},
+            {"delay_refined_s", refined}}}};
+}
+
+const std::vector<std::string> kForces = {"tau_x", "tau_y", "tau_n"},
+                               kJetForces = {"tau_x", "tau_y", "tau_n", "jet_flow"},
+                               kWaterjets = {"throttle", "nozzle", "bucket"}, kRudder = {"delta", "rev"};
+
+nlohmann::json IdentifyFossenModel(const Dataset& data, const IdentifyRequest& o,
+                                   const Logger& log) {
+  const Channels c = DefaultChannels(o);
+  if (c.states != std::vector<std::string>{"u", "v", "r"} ||
+      (c.inputs != kForces && c.inputs != kJetForces && c.inputs != kWaterjets &&
+       c.inputs != kRudder))
+    throw InputError(
+        "--method fossen-ceres: fits the Fossen 3-DOF model, states u,v,r with inputs "
+        "tau_x,tau_y,tau_n (--vessel odin3dof), tau_x,tau_y,tau_n,jet_flow with speed-dependent "
+        "damping (--vessel odin-hs --forces waterjet), throttle,nozzle,bucket through a "
+        "waterjet map (--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel "
+        "kvlcc2)");
+  ChannelFit fit = PrepareChannelFit(data, o, c, log);
+  const std::vector<std::string>& inputs = fit.channels.inputs;
+  if (inputs == kJetForces)
+    fit.model.update(IdentifyFossen<fossen::JetForceModel>(o, data, fit.prepared, log));
+  else if (inputs == kWaterjets)
+    fit.model.update(IdentifyFossen<fossen::WaterjetModel>(o, data, fit.prepared, log));
+  else if (inputs == kRudder)
+    fit.model.update(IdentifyFossen<fossen::RudderModel>(o, data, fit.prepared, log));
+  else
+    fit.model.update(IdentifyFossen<fossen::Odin3DofModel>(o, data, fit.prepared, log));
+  SetTrain(fit, o);
+  return fit.model;
+}
+
+}  // namespace
+
+Method FossenCeresMethod() {
+  Method m;
+  m.name = std::string(fossen::kMethodName);
+  m.summary = "parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map";
+  m.identify = IdentifyFossenModel;
+  m.channel_inputs = true;
+  return m;
+}
+
+}  // namespace usvid

@@ -1,0 +1,76 @@
+// `hybrid`: refit plus the missing terms its residual proposes and held-out simulation keeps
+// (methods/hybrid/hybrid.h), registered in methods/method_list.h.
+#include <cmath>
+
+#include "core/error.h"
+#include "effects/effect.h"
+#include "methods/hybrid/hybrid.h"
+#include "methods/method.h"
+#include "methods/refit/refit_model_json.h"
+#include "simulation/vessel_simulator.h"
+
+namespace usvid {
+namespace {
+
+// hybrid: the vessel refitted with the missing terms its residual proposes and held-out
+// simulation keeps (methods/hybrid/hybrid.h); a vessel model whose effects are those terms.
+nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o,
+                                   const Logger& log) {
+  if (o.vessel.empty()) throw InputError("--method hybrid: needs --vessel");
+  const VesselInfo& info = FindVessel(o.vessel).Info();
+  hybrid::HybridOptions ho;
+  ho.refit = RefitOptionsFor(o);
+  ho.refit.threads = o.threads > 0 ? o.threads : 1;  // proposals in parallel, each one thread
+  ho.max_terms = o.hybrid_terms.value_or(ho.max_terms);
+  const hybrid::HybridResult h = hybrid::IdentifyHybrid(
+      o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, ho);
+  nlohmann::json proposals = nlohmann::json::array(), rounds = nlohmann::json::array();
+  for (const hybrid::TermProposal& p : h.proposals) {
+    nlohmann::json j = EffectToJson(p.term);
+    j["err"] = p.err;
+    proposals.push_back(j);
+  }
+  for (const hybrid::SelectionRound& r : h.rounds) {
+    nlohmann::json errors = nlohmann::json::object();
+    for (size_t j = 0; j < r.heldout_error.size(); ++j)
+      if (std::isfinite(r.heldout_error[j]))
+        errors[EffectLabel(h.proposals[j].term)] = r.heldout_error[j];
+    rounds.push_back({{"heldout_error", errors},
+                      {"likelihood_ratio", r.likelihood_ratio},
+                      {"chosen", r.chosen >= 0 ? EffectLabel(h.proposals[r.chosen].term)
+                                               : std::string("none")}});
+  }
+  nlohmann::json effects = nlohmann::json::array();
+  for (const Effect& e : h.fit.terms) effects.push_back(EffectToJson(e));
+  Log(log, "hybrid: " + std::to_string(h.fit.terms.size()) + " of " +
+               std::to_string(h.proposals.size()) + " proposed terms kept; held-out error " +
+               std::to_string(h.vessel_heldout_error) + " -> " + std::to_string(h.heldout_error));
+  return {{"method", o.method},
+          {"vessel", o.vessel},
+          {"states", h.fit.channels},
+          {"inputs", info.inputs},
+          {"parameters", RefitParameters(h.fit)},
+          {"effects", effects},
+          {"refit", RefitDetails(h.fit, o.prior_sd)},
+          {"hybrid",
+           {{"heldout_fraction", ho.heldout},
+            {"proposals", proposals},
+            {"rounds", rounds},
+            {"vessel_heldout_error", h.vessel_heldout_error},
+            {"effective_samples", h.effective_samples},
+            {"critical_ratio", ho.critical_ratio},
+            {"heldout_error", h.heldout_error}}},
+          {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", h.seconds}}}};
+}
+
+}  // namespace
+
+Method HybridMethod() {
+  Method m;
+  m.name = std::string(hybrid::kMethodName);
+  m.summary = "refit plus the missing terms its residual proposes and held-out simulation keeps";
+  m.identify = IdentifyHybridModel;
+  return m;
+}
+
+}  // namespace usvid

@@ -1,0 +1,44 @@
+// An identification method as the rest of usvid sees it: a name, a line of help, and a function
+// from data to model.json. Registered in one place (methods/method_list.h); `usvid identify`,
+// `compare`'s suites and `--help` find methods there, never by spelling their names
+// (docs/adding-a-method.md).
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/dataset.h"
+#include "methods/identify_request.h"
+
+namespace usvid {
+
+// Receives progress lines (may be empty).
+using Logger = std::function<void(const std::string&)>;
+
+inline void Log(const Logger& log, const std::string& line) {
+  if (log) log(line);
+}
+
+struct Method {
+  std::string name;     // as --method and suites spell it
+  std::string summary;  // one line for --help
+  // model.json of the method fitted to `data` (speed, course and the request's forces already
+  // derived): at least method, vessel, states, inputs, parameters and train. Throws InputError
+  // for options, channels or data the method cannot take.
+  std::function<nlohmann::json(const Dataset& data, const IdentifyRequest& request,
+                               const Logger& log)>
+      identify;
+  // Takes its inputs as channels, so that a waterjet log's jet forces may stand in for the
+  // commands (the suite's default input map). Vessel models take the vessel's own inputs.
+  bool channel_inputs = false;
+  // Takes regime features among its variables (--features).
+  bool regime_features = false;
+  // Its result depends on the seed: on measured data, where the data do not change with the
+  // seed, a suite fits it once per seed, the other methods once.
+  bool seeded = false;
+  // A suite option shown in the row's label, as name[value] (gp[+,-,*,abs]); "" none.
+  std::string label_option;
+};
+
+}  // namespace usvid
