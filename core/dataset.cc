@@ -6,6 +6,7 @@
 #include <limits>
 #include <utility>
 
+#include "core/check.h"
 #include "core/error.h"
 
 namespace usvid {
@@ -34,7 +35,7 @@ void Dataset::Set(const std::string& name, Eigen::VectorXd values) {
 
 void Dataset::Set(const std::string& name, Eigen::VectorXd values,
                   Eigen::Array<bool, Eigen::Dynamic, 1> sampled) {
-  if (values.size() != rows() || sampled.size() != rows()) std::abort();
+  USVID_CHECK(values.size() == rows() && sampled.size() == rows(), "a channel as long as t");
   for (Eigen::Index i = 0; i < rows(); ++i)
     if (!sampled(i)) values(i) = std::numeric_limits<double>::quiet_NaN();
   if (Channel* c = FindMutable(name)) {
@@ -50,7 +51,7 @@ void Dataset::Remove(const std::string& name) {
 }
 
 void Dataset::KeepRows(const std::vector<bool>& keep) {
-  if (static_cast<Eigen::Index>(keep.size()) != rows()) std::abort();
+  USVID_CHECK(static_cast<Eigen::Index>(keep.size()) == rows(), "a keep flag per row");
   std::vector<Eigen::Index> idx;
   for (Eigen::Index i = 0; i < rows(); ++i)
     if (keep[i]) idx.push_back(i);
@@ -71,7 +72,7 @@ void Dataset::KeepRows(const std::vector<bool>& keep) {
 }
 
 Dataset Dataset::Rows(Eigen::Index first, Eigen::Index count) const {
-  if (first < 0 || count < 0 || first + count > rows()) std::abort();
+  USVID_CHECK(first >= 0 && count >= 0 && first + count <= rows(), "rows within the record");
   Dataset out(t_.segment(first, count));
   out.metadata_ = metadata_;
   for (const Channel& c : channels_)
@@ -80,7 +81,7 @@ Dataset Dataset::Rows(Eigen::Index first, Eigen::Index count) const {
 }
 
 void Dataset::SetTime(Eigen::VectorXd t) {
-  if (t.size() != rows() && !channels_.empty()) std::abort();
+  USVID_CHECK(t.size() == rows() || channels_.empty(), "a time base as long as the channels");
   t_ = std::move(t);
 }
 

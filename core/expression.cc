@@ -7,6 +7,7 @@
 #include <limits>
 #include <string_view>
 
+#include "core/check.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/expression_terms.h"
@@ -391,7 +392,7 @@ double ApplyOperator(OpCode op, double x, double y) {
     case OpCode::kSqrt:
       return ProtectedSqrt(x);
   }
-  std::abort();
+  USVID_UNREACHABLE("every function is handled above");
 }
 
 Expression::Expression() : program_{{OpCode::kConstant, 0, 0.0}} {}
@@ -416,7 +417,7 @@ Expression Expression::Parse(const std::string& text, const std::string& where) 
 }
 
 double Expression::Evaluate(std::span<const double> variables) const {
-  if (variables.size() < variables_.size()) std::abort();
+  USVID_CHECK(variables.size() >= variables_.size(), "a value for every variable");
   return EvaluateT(variables.data());
 }
 

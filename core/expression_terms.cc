@@ -6,6 +6,7 @@
 #include <iterator>
 #include <map>
 
+#include "core/check.h"
 #include "core/parse_number.h"
 
 namespace usvid {
@@ -164,7 +165,7 @@ std::vector<std::pair<std::string, double>> ExpandTerms(std::span<const Instruct
         break;
     }
   }
-  if (stack.size() != 1) std::abort();
+  USVID_CHECK(stack.size() == 1, "a parsed program leaves one value");
   std::map<std::string, double> merged;
   for (const auto& [m, c] : stack.back()) merged[MonomialText(m)] += c;
   std::vector<std::pair<std::string, double>> terms;

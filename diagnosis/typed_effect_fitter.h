@@ -11,6 +11,7 @@
 #include <nlopt.hpp>
 #include <numbers>
 
+#include "core/check.h"
 #include "diagnosis/effect_fitter.h"
 #include "diagnosis/reset_rollout.h"
 #include "diagnosis/segment_cost.h"
@@ -95,7 +96,7 @@ class TypedEffectFitter : public EffectFitter {
   }
 
   static Params ToParams(const std::vector<double>& v) {
-    if (static_cast<int>(v.size()) != V::kParams) std::abort();
+    USVID_CHECK(static_cast<int>(v.size()) == V::kParams, "one value per vessel parameter");
     Params p;
     std::copy(v.begin(), v.end(), p.begin());
     return p;

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "core/check.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
 
@@ -14,13 +15,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     const usvid::Dataset d = usvid::ParseDatasetCsv(text, "fuzz.csv");
     for (Eigen::Index k = 1; k < d.rows(); ++k)
-      if (!(d.t()(k) > d.t()(k - 1))) std::abort();
+      USVID_CHECK(d.t()(k) > d.t()(k - 1), "accepted time stamps must increase");
     for (const usvid::Channel& c : d.channels())
       for (Eigen::Index k = 0; k < d.rows(); ++k)
-        if (c.sampled(k) && !std::isfinite(c.values(k))) std::abort();
+        USVID_CHECK(!c.sampled(k) || std::isfinite(c.values(k)), "accepted samples are finite");
     // What was read writes back and reads again to the same values.
     const usvid::Dataset again = usvid::ParseDatasetCsv(usvid::FormatDatasetCsv(d), "again.csv");
-    if (again.rows() != d.rows()) std::abort();
+    USVID_CHECK(again.rows() == d.rows(), "a written file reads back with its rows");
   } catch (const usvid::InputError&) {
   }
   return 0;

@@ -11,6 +11,7 @@
 #include "diagnosis/diagnosis_json.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/identify.h"
+#include "methods/refit/refit.h"
 #include "methods/registry.h"
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
@@ -47,7 +48,8 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
   if (!model.contains("equations")) {
     // A vessel model: its complexity is what was fitted (refit's parameters, and diagnose's
     // effects or hybrid's missing terms).
-    if (model.contains("refit")) row.terms = static_cast<int>(model["refit"]["free"].size());
+    if (const std::string refit(kRefitMethodName); model.contains(refit))
+      row.terms = static_cast<int>(model[refit]["free"].size());
     if (model.contains("effects")) row.terms += static_cast<int>(model["effects"].size());
     return;
   }

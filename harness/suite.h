@@ -2,10 +2,11 @@
 // maneuvers x methods x noise levels x seeds. Every score is on data the model was not fitted
 // on: another maneuver, or the same maneuver with another seed. JSON form:
 //   {"name": "...", "vessels": ["odin3dof"], "train_maneuvers": ["random-steps"],
-//    "test_maneuvers": ["multisine"], "methods": [{"method": "gp", "operators": "+,-,*,abs"}],
-//    (method options: gp's operators, population, generations, max_depth, ols_threshold;
-//    fossen-ceres' fit and segment_s; any method's rate, the Hz its data are resampled to)
+//    "test_maneuvers": ["multisine"], "methods": [NAME, or {"method": NAME, options...}],
 //    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180}
+// (method options: gp's operators, population, generations, max_depth, ols_threshold;
+// fossen-ceres' fit and segment_s; any method's rate, the Hz its data are resampled to;
+// harness/suites/default.json is an example).
 // Or, on measured data (suite_data.h), the training and test files instead of maneuvers:
 //   {"name": "kvlcc2-marin", "vessels": ["kvlcc2"], "data": {"train": [{"name": ...,
 //    "file": ..., "format": "marin-dat"}], "test": [...]}, "methods": [...]}

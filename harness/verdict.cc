@@ -234,7 +234,7 @@ nlohmann::json VerdictJson(const std::vector<VerdictEntry>& verdict) {
                         {"friedman_p", e.friedman_p},
                         {"ranking", ranking},
                         {"failing", e.failing}};
-    if (e.ceiling) j["nominal"] = std::isfinite(*e.ceiling) ? nlohmann::json(*e.ceiling) : nullptr;
+    if (e.ceiling) j[std::string(kNominalMethodName)] = std::isfinite(*e.ceiling) ? nlohmann::json(*e.ceiling) : nullptr;
     out.push_back(j);
   }
   return out;

@@ -56,7 +56,7 @@ struct VerdictEntry {
 std::vector<VerdictEntry> Verdict(const Suite& suite, const std::vector<ResultRow>& rows);
 nlohmann::json VerdictJson(const std::vector<VerdictEntry>& verdict);
 // Per vessel and training maneuver a table: metric | ranking | Friedman p | cells | nominal.
-// The JSON's "nominal" is the ceiling.
+// The JSON names the ceiling after the nominal method (kNominalMethodName).
 std::string VerdictMarkdown(const std::vector<VerdictEntry>& verdict);
 
 }  // namespace usvid

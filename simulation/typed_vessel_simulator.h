@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/check.h"
 #include "core/error.h"
 #include "simulation/closed_loop.h"
 #include "simulation/open_loop.h"
@@ -97,7 +98,7 @@ class TypedVesselSimulator : public VesselSimulator {
  private:
   template <int M>
   static std::array<double, M> ToArray(const std::vector<double>& v) {
-    if (static_cast<int>(v.size()) != M) std::abort();
+    USVID_CHECK(static_cast<int>(v.size()) == M, "a vector of the vessel's size");
     std::array<double, M> a{};
     std::copy(v.begin(), v.end(), a.begin());
     return a;

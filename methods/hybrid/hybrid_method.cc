@@ -51,7 +51,7 @@ nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o
           {"inputs", info.inputs},
           {"parameters", RefitParameters(h.fit)},
           {"effects", effects},
-          {"refit", RefitDetails(h.fit, o.prior_sd)},
+          {std::string(kRefitMethodName), RefitDetails(h.fit, o.prior_sd)},
           {"hybrid",
            {{"heldout_fraction", ho.heldout},
             {"proposals", proposals},

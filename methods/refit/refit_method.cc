@@ -23,7 +23,7 @@ nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, cons
           {"states", fit.channels},
           {"inputs", info.inputs},
           {"parameters", RefitParameters(fit)},
-          {"refit", RefitDetails(fit, o.prior_sd)},
+          {o.method, RefitDetails(fit, o.prior_sd)},
           {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", fit.seconds}}}};
 }
 

@@ -25,9 +25,18 @@ struct Malformed {
   const char* says;  // expected on stderr
 };
 
+// A folder removed when the process ends.
+struct OwnedFolder {
+  fs::path path;
+  ~OwnedFolder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
 // The inputs every case may use, made once per process in a folder of their own.
 const fs::path& Inputs() {
-  static const fs::path dir = [] {
+  static const OwnedFolder dir{[] {
     // One folder per process: ctest runs the cases as separate processes, in parallel.
     const fs::path d =
         fs::temp_directory_path() / ("usvid_malformed_inputs_" + std::to_string(::getpid()));
@@ -63,8 +72,8 @@ const fs::path& Inputs() {
     WriteText(d / "empty.csv", "");
     fs::create_directories(d / "a_folder");
     return d;
-  }();
-  return dir;
+  }()};
+  return dir.path;
 }
 
 std::string Expand(std::string text, const fs::path& out) {

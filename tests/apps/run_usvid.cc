@@ -4,7 +4,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <vector>
 #include <fstream>
 #include <sstream>
 
@@ -18,14 +20,44 @@ std::string Slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
+// Removes the folders FreshTempDir made for a test once it has passed (a failed test's stay, to
+// be looked at).
+class TempDirCleaner : public ::testing::EmptyTestEventListener {
+ public:
+  void Add(const std::filesystem::path& dir) { dirs_.push_back(dir); }
+  void OnTestEnd(const ::testing::TestInfo& info) override {
+    if (info.result()->Passed())
+      for (const auto& dir : dirs_) {
+        std::error_code ignored;
+        std::filesystem::remove_all(dir, ignored);
+      }
+    dirs_.clear();
+  }
+
+ private:
+  std::vector<std::filesystem::path> dirs_;
+};
+
+TempDirCleaner& Cleaner() {
+  // Owned by gtest's listener list once appended.
+  static TempDirCleaner* cleaner = [] {
+    auto* c = new TempDirCleaner;
+    ::testing::UnitTest::GetInstance()->listeners().Append(c);
+    return c;
+  }();
+  return *cleaner;
+}
+
 }  // namespace
 
 std::filesystem::path FreshTempDir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("usvid_e2e_" + std::string(info->test_suite_name()) + "_" + info->name());
+  std::string name = "usvid_e2e_" + std::string(info->test_suite_name()) + "_" + info->name();
+  std::replace(name.begin(), name.end(), '/', '_');
+  const auto dir = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  Cleaner().Add(dir);
   return dir;
 }
 

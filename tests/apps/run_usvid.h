@@ -23,7 +23,8 @@ int WaitUsvid(int pid);
 // The built binary's path (for commands that wrap it, such as mpirun).
 std::string UsvidBinary();
 
-// A fresh empty directory under the system temp dir, named after the running test.
+// A fresh empty directory under the system temp dir, named after the running test; removed when
+// the test passes, kept when it fails.
 std::filesystem::path FreshTempDir();
 
 void WriteText(const std::filesystem::path& path, const std::string& text);

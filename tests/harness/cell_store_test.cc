@@ -70,6 +70,9 @@ class CellStoreTest : public ::testing::Test {
             std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(out_);
   }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(out_);
+  }
   fs::path out_;
   Suite suite_ = SmallSuite();
   std::vector<FitJob> jobs_ = FitJobs(suite_);

@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "maneuvers/maneuver_factory.h"
 #include "core/expression.h"
+#include "methods/gp/gp_identify.h"
 #include "methods/identify.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
@@ -77,7 +78,7 @@ int Run(int argc, char** argv) {
     const Dataset train = Simulate("random-steps", seconds, noise, static_cast<uint64_t>(seed));
     const Dataset held = Simulate("multisine", 300, 0.0, 1000 + static_cast<uint64_t>(seed));
     IdentifyRequest r;
-    r.method = "gp";
+    r.method = gp::kMethodName;
     r.vessel = "odin3dof";
     r.preset = preset;
     r.operators = operators;
