@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "methods/nominal/nominal.h"
+
 namespace usvid::diagnosis {
 namespace {
 
@@ -76,7 +78,7 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
                 {"heldout_s", d.heldout_s},
                 {"segment_s", d.segment_s},
                 {"scored_channels", d.channels}};
-  j["nominal"] = {{"fit_percent", Fits(d.nominal_fit_percent)},
+  j[std::string(kNominalMethodName)] = {{"fit_percent", Fits(d.nominal_fit_percent)},
                   {"heldout_fit_percent", Fits(d.nominal_fit_percent)},
                   {"free_run_fit_percent", Fits(d.nominal_free_run_fit_percent)},
                   {"heldout_error", Number(d.nominal_error)},
@@ -155,7 +157,7 @@ nlohmann::json ExtendedModelJson(const Diagnosis& d) {
           {"effects", effects},
           {"train", {{"data", d.source}, {"seconds", d.train_s}}},
           {"heldout_fit_percent",
-           {{"nominal", Fits(d.nominal_fit_percent)}, {"extended", Fits(d.extended_fit_percent)}}}};
+           {{std::string(kNominalMethodName), Fits(d.nominal_fit_percent)}, {"extended", Fits(d.extended_fit_percent)}}}};
 }
 
 }  // namespace usvid::diagnosis

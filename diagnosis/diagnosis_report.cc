@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "methods/nominal/nominal.h"
 #include "plot/figure_grid.h"
 #include "plot/svg_text.h"
 
@@ -46,7 +47,7 @@ std::string HeldoutFigure(const Diagnosis& d) {
     LinePlot p;
     p.SetYLabel(c)
         .AddSeries("measured", d.series.t, d.series.measured.at(c))
-        .AddSeries("nominal", d.series.t, d.series.nominal.at(c));
+        .AddSeries(std::string(kNominalMethodName), d.series.t, d.series.nominal.at(c));
     if (d.cause_effect) p.AddSeries("extended", d.series.t, d.series.extended.at(c));
     grid.Add(std::move(p));
   }

@@ -1,11 +1,23 @@
 #!/usr/bin/env bash
-# Installs what usvid needs to build and test on Debian 12, all from Debian's packages.
+# Installs what usvid needs from Debian 12's packages.
+#   tools/install-deps.sh          what the build needs (the README's first command)
+#   tools/install-deps.sh --test   that, and the test command's tools: clang 14 with its
+#                                  sanitizers, libFuzzer and OpenMP, and OpenMPI (some 500 MB more)
 set -euo pipefail
 packages=(g++ cmake ninja-build ccache git
   libeigen3-dev libceres-dev libnlopt-cxx-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev nlohmann-json3-dev
-  clang-14 libclang-rt-14-dev libomp-14-dev  # clang's sanitizers, libFuzzer and OpenMP
-  openmpi-bin libopenmpi-dev)  # the optional MPI build (-DUSVID_WITH_MPI=ON)
+  libcli11-dev nlohmann-json3-dev)
+case "${1:-}" in
+  --test)
+    packages+=(clang-14 libclang-rt-14-dev libomp-14-dev  # clang's sanitizers, libFuzzer, OpenMP
+               openmpi-bin libopenmpi-dev)                 # the MPI build (-DUSVID_WITH_MPI=ON)
+    ;;
+  "") ;;
+  *)
+    echo "usage: tools/install-deps.sh [--test]" >&2
+    exit 2
+    ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

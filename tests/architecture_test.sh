@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# The architecture's rules (docs/architecture.md), checked on the source tree:
+#  1. a folder includes only the folders before it in the layer order;
+#  2. typed_*.h headers are included only inside their own folder;
+#  3. no bare std::abort() (USVID_CHECK instead, core/check.h);
+#  4. nothing cites a document outside the repository for its meaning;
+#  5. a method's name is spelled, as a string, in at most two source files (its registration and
+#     its implementation; docs/adding-a-method.md).
+set -euo pipefail
+root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
+cd "$root"
+layers=(core plot importers maneuvers simulators effects sensors simulation preprocessing methods
+        metrics diagnosis design harness apps)
+sources=(core plot importers maneuvers simulators effects sensors simulation preprocessing methods
+         metrics diagnosis design harness apps bench fuzz tools)
+fail=0
+
+for ((i = 0; i < ${#layers[@]}; i++)); do
+  folder=${layers[i]}
+  allowed=" ${layers[*]:0:i} $folder "
+  while IFS= read -r line; do
+    file=${line%%:*}
+    used=$(sed -E 's/.*#include "([a-z_]+)\/.*/\1/' <<<"$line")
+    if [[ $allowed != *" $used "* ]]; then
+      echo "layer: $file includes $used/, which comes after $folder/ (docs/architecture.md)"
+      fail=1
+    fi
+  done < <(grep -rHE '^#include "[a-z_]+/' "$folder" --include='*.h' --include='*.cc' || true)
+done
+
+while IFS= read -r header; do
+  folder=$(dirname "$header")
+  while IFS= read -r user; do
+    if [[ $(dirname "$user") != "$folder" ]]; then
+      echo "interface: $user includes $header, internal to $folder/"
+      fail=1
+    fi
+  done < <(grep -rlF "#include \"$header\"" "${sources[@]}" tests --include='*.h' --include='*.cc' || true)
+done < <(find "${layers[@]}" -name 'typed_*.h' | sort)
+
+if grep -rnF 'std::abort()' "${sources[@]}" --include='*.h' --include='*.cc' | grep -v '^core/check.cc:'; then
+  echo "abort: use USVID_CHECK(condition, reason) (core/check.h)"
+  fail=1
+fi
+
+if grep -rnE 'domain\.md|contract section|contract\.md' "${sources[@]}" tests docs README.md \
+     --include='*.h' --include='*.cc' --include='*.md' --include='*.sh' --include='*.txt' --exclude=architecture_test.sh; then
+  echo "citation: the repository explains itself (docs/model.md, docs/data.md)"
+  fail=1
+fi
+
+while IFS= read -r name; do
+  files=$(grep -rlF "\"$name\"" "${sources[@]}" --include='*.h' --include='*.cc' | sort)
+  count=$(grep -c . <<<"$files" || true)
+  if ((count > 2)); then
+    echo "method name \"$name\" is spelled in $count files:" $files
+    fail=1
+  fi
+done < <(grep -rhoE 'kMethodName = "[^"]+"|kRefitMethodName = "[^"]+"|kNominalMethodName = "[^"]+"' methods |
+           sed -E 's/.*"([^"]+)"/\1/' | sort -u)
+
+exit $fail
