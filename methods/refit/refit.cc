@@ -2,11 +2,18 @@
 
 #include "core/error.h"
 #include "methods/refit/typed_refit.h"
-#include "simulators/eb2dof.h"
-#include "simulators/kvlcc2.h"
-#include "simulators/msd.h"
-#include "simulators/odin3dof.h"
-#include "simulators/odin_hs.h"
+#include "simulators/vessel_types.h"
+
+// The typed code is compiled once a vessel, in the generated refit_instance_*.cc.
+#define USVID_REFIT_EXTERN(V)                                                                  \
+  extern template usvid::RefitResult usvid::refit::RefitTyped<usvid::V>(                      \
+      const usvid::VesselInfo&, const usvid::Dataset&, const std::vector<double>&,            \
+      const usvid::RefitOptions&);                                                             \
+  extern template std::map<std::string, Eigen::VectorXd>                                       \
+  usvid::refit::DerivativeResidualTyped<usvid::V>(const usvid::VesselInfo&, const usvid::Dataset&, \
+                                                  const std::vector<double>&);
+USVID_VESSEL_TYPES(USVID_REFIT_EXTERN)
+#undef USVID_REFIT_EXTERN
 
 namespace usvid {
 namespace {
@@ -15,13 +22,10 @@ namespace {
 // dynamic state of the vessel: for odin-hs, the jets' rpm, nozzle angle and bucket position too
 // (a simulated record has them; a log without them is refused, naming the column).
 template <typename F>
-auto WithVesselType(const std::string& vessel, const std::string& what, F&& f) {
-  if (vessel == "kvlcc2") return f.template operator()<Kvlcc2>();
-  if (vessel == "odin3dof") return f.template operator()<Odin3Dof>();
-  if (vessel == "odin-hs") return f.template operator()<OdinHs>();
-  if (vessel == "eb2dof") return f.template operator()<Eb2Dof>();
-  if (vessel == "msd") return f.template operator()<Msd>();
-  throw InputError(what + ": not available for vessel " + vessel);
+auto WithVessel(const std::string& vessel, const std::string& what, F&& f) {
+  auto out = WithVesselType(vessel, std::forward<F>(f));
+  if (!out) throw InputError(what + ": not available for vessel " + vessel);
+  return std::move(*out);
 }
 
 const VesselInfo& InfoWithParams(const std::string& vessel, size_t params, const char* what) {
@@ -37,7 +41,7 @@ const VesselInfo& InfoWithParams(const std::string& vessel, size_t params, const
 RefitResult RefitVessel(const std::string& vessel, const Dataset& data,
                         const std::vector<double>& start, const RefitOptions& options) {
   const VesselInfo& info = InfoWithParams(vessel, start.size(), kRefitMethodName.data());
-  return WithVesselType(vessel, "--method refit", [&]<Vessel V>() {
+  return WithVessel(vessel, "--method refit", [&]<Vessel V>() {
     return refit::RefitTyped<V>(info, data, start, options);
   });
 }
@@ -50,7 +54,7 @@ std::map<std::string, Eigen::VectorXd> DerivativeResidual(const std::string& ves
                                                           const Dataset& prepared,
                                                           const std::vector<double>& params) {
   const VesselInfo& info = InfoWithParams(vessel, params.size(), "derivative residual");
-  return WithVesselType(vessel, "the derivative residual", [&]<Vessel V>() {
+  return WithVessel(vessel, "the derivative residual", [&]<Vessel V>() {
     return refit::DerivativeResidualTyped<V>(info, prepared, params);
   });
 }
