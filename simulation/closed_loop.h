@@ -13,6 +13,7 @@
 
 #include "maneuvers/maneuver.h"
 #include "simulation/input_track.h"
+#include "simulation/plant_stepper.h"
 #include "simulation/run_options.h"
 
 namespace usvid {

@@ -5,12 +5,11 @@
 #include <array>
 
 #include "effects/plant.h"
+#include "simulation/integrator.h"
 #include "simulators/dormand_prince.h"
 #include "simulators/rk4.h"
 
 namespace usvid {
-
-enum class Integrator { kRk4, kDormandPrince };
 
 template <Vessel V, typename T>
 struct PlantStepper {

@@ -1,7 +1,7 @@
 // How a simulation runs: integration step, output (and control) rate, run-in to steady state.
 #pragma once
 
-#include "simulation/plant_stepper.h"
+#include "simulation/integrator.h"
 
 namespace usvid {
 
