@@ -5,12 +5,6 @@
 #include "diagnosis/typed_effect_fitter.h"
 #include "simulators/vessel_types.h"
 
-// The fitters are compiled once a vessel, in the generated effect_fitter_instance_*.cc.
-#define USVID_EFFECT_FITTER_EXTERN(V) \
-  extern template class usvid::diagnosis::TypedEffectFitter<usvid::V>;
-USVID_VESSEL_TYPES(USVID_EFFECT_FITTER_EXTERN)
-#undef USVID_EFFECT_FITTER_EXTERN
-
 namespace usvid::diagnosis {
 
 const EffectFitter& FindEffectFitter(const std::string& vessel) {

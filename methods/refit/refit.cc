@@ -4,17 +4,6 @@
 #include "methods/refit/typed_refit.h"
 #include "simulators/vessel_types.h"
 
-// The typed code is compiled once a vessel, in the generated refit_instance_*.cc.
-#define USVID_REFIT_EXTERN(V)                                                                  \
-  extern template usvid::RefitResult usvid::refit::RefitTyped<usvid::V>(                      \
-      const usvid::VesselInfo&, const usvid::Dataset&, const std::vector<double>&,            \
-      const usvid::RefitOptions&);                                                             \
-  extern template std::map<std::string, Eigen::VectorXd>                                       \
-  usvid::refit::DerivativeResidualTyped<usvid::V>(const usvid::VesselInfo&, const usvid::Dataset&, \
-                                                  const std::vector<double>&);
-USVID_VESSEL_TYPES(USVID_REFIT_EXTERN)
-#undef USVID_REFIT_EXTERN
-
 namespace usvid {
 namespace {
 
