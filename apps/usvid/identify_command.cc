@@ -14,7 +14,11 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/parse_number.h"
+#include "methods/gp/gp_identify.h"
+#include "methods/gp/search.h"
 #include "methods/identify.h"
+#include "methods/regime_features.h"
 #include "methods/registry.h"
 #include "simulation/vessel_simulator.h"
 
@@ -83,26 +87,37 @@ void AddIdentifyCommand(CLI::App& app) {
                   "sindy), froude (Fn "
                   "alone), none")
       ->check(CLI::IsMember({"auto", "hinges", "froude", "none"}));
-  cmd->add_option("--population", o->request.population, "GP population (2000, the report's)");
-  cmd->add_option("--generations", o->request.generations, "Most GP generations (50)");
-  cmd->add_option("--max-depth", o->request.max_depth, "Deepest tree (6, the report's)");
+  // GP's defaults are its options' (methods/gp/search.h, gp_identify.h), not spelled here.
+  const gp::GpOptions gp_defaults;
+  const gp::GpIdentifyOptions gp_identify_defaults;
+  auto n = [](auto v) { return FormatNumber(static_cast<double>(v)); };
+  cmd->add_option("--population", o->request.population,
+                  "GP population (" + n(gp_defaults.population) + ")");
+  cmd->add_option("--generations", o->request.generations,
+                  "Most GP generations (" + n(gp_defaults.generations) + ")");
+  cmd->add_option("--max-depth", o->request.max_depth,
+                  "Deepest tree (" + n(gp_defaults.max_depth) + ")");
   cmd->add_option("--ols-threshold", o->request.ols_threshold,
                   "Cut terms whose error reduction ratio is below this (the report's 0.05; "
                   "default: the number of terms chosen by held-out error)");
   cmd->add_option("--validation-fraction", o->request.validation_fraction,
                   "gp: the last share of the record, in [0, 0.5], on which the model is chosen "
-                  "among the Pareto candidates by short-horizon simulation (0.2; 0: none)");
+                  "among the Pareto candidates by short-horizon simulation (" +
+                      n(gp_identify_defaults.validation_fraction) + "; 0: none)");
   cmd->add_option("--horizon", o->request.horizon_s,
                   "gp: seconds of each short-horizon simulation that chooses the model and "
-                  "refits its weights (10; 30 on a record with regime features)");
+                  "refits its weights (" + n(gp_identify_defaults.horizon_s) + "; " +
+                      n(kRegimeHorizonS) + " on a record with regime features)");
   cmd->add_option("--constant-iterations", o->request.constant_iterations,
                   "gp: Levenberg-Marquardt iterations on the constants inside terms, per elite "
-                  "(5; 0: none)");
+                  "(" + n(gp_defaults.constant_iterations) + "; 0: none)");
   cmd->add_option("--restarts", o->request.restarts,
-                  "gp: restarts on stagnation before the search stops (2)");
+                  "gp: restarts on stagnation before the search stops (" +
+                      n(gp_defaults.restarts) + ")");
   cmd->add_option("--fitness", o->request.fitness, "r2 (with a size penalty) or mse")
       ->check(CLI::IsMember({"r2", "mse"}));
-  cmd->add_option("--fit-rows", o->request.fit_rows, "Rows the search scores on (4000; 0: all)");
+  cmd->add_option("--fit-rows", o->request.fit_rows,
+                  "Rows the search scores on (" + n(gp_defaults.fit_rows) + "; 0: all)");
   cmd->add_option("--seed", o->request.seed, "Seed of the search");
   cmd->add_option("--threads", o->request.threads, "OpenMP threads (0: all cores)");
   cmd->add_option("--fit", o->request.fit_mode,

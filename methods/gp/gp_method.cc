@@ -1,5 +1,6 @@
 // `gp`: GP-SR with orthogonal least squares (methods/gp/gp_identify.h), registered in
 // methods/method_list.h.
+#include <algorithm>
 #include <cstdio>
 
 #include "core/error.h"
@@ -40,20 +41,19 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& o) {
   g.horizon_s = o.horizon_s.value_or(g.horizon_s);
   g.weight_fit = o.fit_mode == "equation" || o.preset == "report" ? gp::WeightFit::kEquation
                                                                   : gp::WeightFit::kSimulation;
-  if (s.population < 4 || s.generations < 1 || s.max_depth < 2 || s.max_depth > 17)
-    throw InputError("identify: --population >= 4, --generations >= 1, --max-depth in [2, 17]");
-  if (s.ols_threshold && !(*s.ols_threshold >= 0 && *s.ols_threshold < 1))
-    throw InputError("--ols-threshold: must be in [0, 1)");
+  if (std::string error; !s.IsValid(&error)) {
+    // IsValid names the field (max_depth ...); the command line spells it --max-depth.
+    const size_t space = error.find(' ');
+    std::string flag = error.substr(0, space);
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    throw InputError("--" + flag + ":" + error.substr(space));
+  }
   if (!(g.validation_fraction >= 0 && g.validation_fraction <= 0.5))
     throw InputError(
         "--validation-fraction: must be in [0, 0.5] (the share of the record kept "
         "to choose the model by simulation; 0: none)");
   if (!(g.horizon_s > 0 && g.horizon_s <= 600))
     throw InputError("--horizon: must be in (0, 600] seconds, got " + FormatNumber(g.horizon_s));
-  if (s.constant_iterations < 0)
-    throw InputError("--constant-iterations: must be >= 0 (0: no constant optimisation)");
-  if (s.restarts < 0) throw InputError("--restarts: must be >= 0");
-  if (s.fit_rows < 0) throw InputError("--fit-rows: must be >= 0 (0: every row)");
   return g;
 }
 

@@ -344,15 +344,34 @@ Eigen::VectorXd Predict(const Model& model, const std::vector<Eigen::VectorXd>& 
   return out;
 }
 
+bool GpOptions::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& why) {
+    *error = why;
+    return false;
+  };
+  if (population < 4) return fail("population must be >= 4, got " + std::to_string(population));
+  if (generations < 1)
+    return fail("generations must be >= 1, got " + std::to_string(generations));
+  if (max_depth < 2 || max_depth > 17)
+    return fail("max_depth must be in [2, 17], got " + std::to_string(max_depth));
+  if (ols_threshold && !(*ols_threshold >= 0 && *ols_threshold < 1))
+    return fail("ols_threshold must be in [0, 1), got " + FormatNumber(*ols_threshold));
+  if (restarts < 0) return fail("restarts must be >= 0, got " + std::to_string(restarts));
+  if (constant_iterations < 0)
+    return fail("constant_iterations must be >= 0 (0: no constant optimisation), got " +
+                std::to_string(constant_iterations));
+  if (constant_elites < 0)
+    return fail("constant_elites must be >= 0, got " + std::to_string(constant_elites));
+  if (fit_rows < 0) return fail("fit_rows must be >= 0 (0: every row), got " + std::to_string(fit_rows));
+  return true;
+}
+
 GpResult RunGp(const GpProblem& problem, const GpOptions& options,
                const std::function<void(const GenerationLog&)>& progress) {
   if (problem.names.empty() || problem.variables.size() != problem.names.size() ||
       problem.target.size() < 10)
     throw InputError("gp: needs named variables and at least 10 rows");
-  if (options.population < 4 || options.generations < 1 || options.max_depth < 2)
-    throw InputError("gp: population >= 4, generations >= 1 and max depth >= 2");
-  if (options.restarts < 0 || options.constant_iterations < 0 || options.constant_elites < 0)
-    throw InputError("gp: restarts, constant iterations and constant elites must be >= 0");
+  if (std::string error; !options.IsValid(&error)) throw InputError("gp: " + error);
   return options.single_precision ? Run<float>(problem, options, progress)
                                   : Run<double>(problem, options, progress);
 }

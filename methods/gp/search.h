@@ -47,6 +47,12 @@ struct GpOptions {
   bool single_precision = true;  // evaluate the search in float (the refit is double)
   uint64_t seed = 1;
   int threads = 0;  // 0: OpenMP's default
+
+  // The one check of these options (Ceres's Solver::Options::IsValid): false, with `error`
+  // naming the option and its rule, for population < 4, generations < 1, max_depth outside
+  // [2, 17], ols_threshold outside [0, 1), or a negative restarts, constant_iterations,
+  // constant_elites or fit_rows.
+  bool IsValid(std::string* error) const;
 };
 
 // The reference report's Table 3.1 and nothing added: crossover 0.9, mutation 0.1, population
