@@ -56,15 +56,6 @@ std::vector<double> SmoothedEndError(const Dataset& trial, const Dataset& noisy,
   return out;
 }
 
-// Trapezoid sum of f(k) (x_{k+1} - x_k) over the span (eb-lr's integral rows).
-template <typename F>
-double Stieltjes(const Eigen::VectorXd& x, const Span& span, F f) {
-  double sum = 0.0;
-  for (Eigen::Index k = span.first; k < span.last; ++k)
-    sum += 0.5 * (f(k) + f(k + 1)) * (x(k + 1) - x(k));
-  return sum;
-}
-
 // How eb-lr's masses follow an error in its sigma (relative units; rows the masses, columns
 // sigma's terms, in eb2dof's order). For equation i, the mass rows are int m dx_i = int (tau_i -
 // sigma_i) dt over the transient pieces, A c = b with A_pj = int mu_j dx_i; an error ds of sigma
@@ -98,13 +89,13 @@ Eigen::MatrixXd MassOnSigma(const Dataset& trial, const std::vector<Span>& windo
     const auto ns = static_cast<Eigen::Index>(sigma_basis[i]->size());
     Eigen::MatrixXd a(rows, nm), g(rows, ns);
     for (Eigen::Index p = 0; p < rows; ++p) {
-      const Span span{pieces[p].first, pieces[p].last};
+      const eb_lr::SteadyWindow& span = pieces[p];
       for (Eigen::Index j = 0; j < nm; ++j)
-        a(p, j) = Stieltjes(x, span, [&](Eigen::Index n) {
+        a(p, j) = eb_lr::Stieltjes(x, span, [&](Eigen::Index n) {
           return (*mass_basis[i])[j].Evaluate(speed(n), rate(n));
         });
       for (Eigen::Index j = 0; j < ns; ++j)
-        g(p, j) = Stieltjes(t, span, [&](Eigen::Index n) {
+        g(p, j) = eb_lr::Stieltjes(t, span, [&](Eigen::Index n) {
           return (*sigma_basis[i])[j].Evaluate(speed(n), rate(n));
         });
     }

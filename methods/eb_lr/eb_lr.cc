@@ -95,15 +95,6 @@ Eigen::VectorXd Solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
   return qr.solve(b).cwiseQuotient(scale);
 }
 
-// Trapezoid sum of f(k) (x_{k+1} - x_k) over the span.
-template <typename F>
-double Stieltjes(const Eigen::VectorXd& x, const Span& span, F f) {
-  double sum = 0.0;
-  for (Eigen::Index k = span.first; k < span.last; ++k)
-    sum += 0.5 * (f(k) + f(k + 1)) * (x(k + 1) - x(k));
-  return sum;
-}
-
 // sigma from the steady windows, each corrected by what it still accelerates under the mass.
 // With the thrust's loss, k is one more column, the window's mean of q U: at a held command
 // the windows of a step grid reach several speeds (straight and in turns of each yaw step), so

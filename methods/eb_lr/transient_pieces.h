@@ -17,4 +17,14 @@ std::vector<SteadyWindow> TransientRuns(Eigen::Index n, const std::vector<Steady
 
 std::vector<SteadyWindow> TransientPieces(const std::vector<SteadyWindow>& runs, Eigen::Index piece);
 
+// The integral rows' sum over a span: the trapezoid sum of f(k) (x_{k+1} - x_k), f evaluated at
+// sample indices.
+template <typename F>
+double Stieltjes(const Eigen::VectorXd& x, const SteadyWindow& span, F f) {
+  double sum = 0.0;
+  for (Eigen::Index k = span.first; k < span.last; ++k)
+    sum += 0.5 * (f(k) + f(k + 1)) * (x(k + 1) - x(k));
+  return sum;
+}
+
 }  // namespace usvid::eb_lr
