@@ -1,5 +1,6 @@
 #include "design/method_problem.h"
 
+#include "core/check.h"
 #include "core/error.h"
 #include "methods/eb_lr/eb_lr.h"
 #include "methods/fossen_ceres/fossen_fit.h"
@@ -43,8 +44,7 @@ MethodProblem MethodProblemOf(const std::string& vessel, const std::string& meth
     p.refit.prior_sd = 1e9;      // none
     if (method == fossen::kMethodName) p.refit.segment_s = 10.0;  // its shooting segments
     p.names = method == eb_lr::kMethodName ? EbLrNames() : info.params;
-    if (p.names.size() != info.params.size())
-      throw std::logic_error("design: eb-lr's default basis is not eb2dof's form");
+    USVID_CHECK(p.names.size() == info.params.size(), "eb-lr's default basis is eb2dof's form");
     return p;
   }
   const std::string known = std::string(kRefitMethodName) + ", " +
