@@ -15,6 +15,7 @@
 #include "diagnosis/effect_fitter.h"
 #include "diagnosis/reset_rollout.h"
 #include "diagnosis/segment_cost.h"
+#include "methods/parameter_sd.h"
 
 namespace usvid::diagnosis {
 
@@ -206,9 +207,7 @@ class TypedEffectFitter : public EffectFitter {
       if (covariance.Compute(blocks, &problem)) {
         double c[K * K];
         covariance.GetCovarianceBlock(theta.data(), theta.data(), c);
-        const double dof = std::max(1, summary.num_residuals - summary.num_effective_parameters);
-        const double s2 = 2.0 * summary.final_cost / dof;
-        for (int i = 0; i < K; ++i) fit.sd.push_back(std::sqrt(std::max(0.0, c[i * K + i] * s2)));
+        fit.sd = ParameterSds(c, K, summary);
       }
     }
     EffectValues<double> e = data.base;

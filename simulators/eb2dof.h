@@ -37,6 +37,9 @@ struct Eb2Dof {
   static constexpr std::array<double, kInputs> kInputMax = {1.0, 0.4712};
   static constexpr int kYawInput = 1, kThrustInput = 0, kRateState = 4, kHeadingState = 2;
 
+  // Parameter indices, in kParamNames order.
+  enum Param { kMU0, kMU1, kMr0, kMr1, kSU1, kSU2, kSU3, kSUr, kSr1, kSrU, kSr3 };
+
   template <typename T>
   static void Derivative(const T* x, const T* tau, const T* p, const Environment<T>& env, T* dx) {
     using std::cos;
@@ -47,10 +50,11 @@ struct Eb2Dof {
     const T c = cos(chi);
     const T s = sin(chi);
     const T U_r = U - (c * env.current_north + s * env.current_east);
-    const T m_U = p[0] + p[1] * U;
-    const T m_r = p[2] + p[3] * U;
-    const T sigma_U = p[4] * U_r + p[5] * U_r * U_r + p[6] * U_r * U_r * U_r + p[7] * r * r;
-    const T sigma_r = p[8] * r + p[9] * U * r + p[10] * r * r * r;
+    const T m_U = p[kMU0] + p[kMU1] * U;
+    const T m_r = p[kMr0] + p[kMr1] * U;
+    const T sigma_U =
+        p[kSU1] * U_r + p[kSU2] * U_r * U_r + p[kSU3] * U_r * U_r * U_r + p[kSUr] * r * r;
+    const T sigma_r = p[kSr1] * r + p[kSrU] * U * r + p[kSr3] * r * r * r;
     dx[0] = U * c;
     dx[1] = U * s;
     dx[2] = r;

@@ -22,10 +22,12 @@ struct Msd {
   static constexpr std::array<double, kInputs> kInputMax = {100.0};
   static constexpr int kYawInput = 0, kThrustInput = -1, kRateState = 1, kHeadingState = -1;
 
+  enum Param { kMass, kDamping, kStiffness };  // indices, in kParamNames order
+
   template <typename T>
   static void Derivative(const T* x, const T* u, const T* p, const Environment<T>& env, T* dx) {
     dx[0] = x[1];
-    dx[1] = (u[0] - p[1] * (x[1] - env.current_north) - p[2] * x[0]) / p[0];
+    dx[1] = (u[0] - p[kDamping] * (x[1] - env.current_north) - p[kStiffness] * x[0]) / p[kMass];
   }
 };
 

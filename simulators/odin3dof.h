@@ -36,9 +36,23 @@ struct Odin3Dof {
   static constexpr std::array<double, kInputs> kInputMax = {50000.0, 5000.0, 40000.0};
   static constexpr int kYawInput = 2, kThrustInput = 0, kRateState = 5, kHeadingState = 2;
 
+  // Parameter indices, in kParamNames order.
+  enum Param { kM11, kM22, kM33, kXu, kXuu, kYv, kYvv, kNv, kNr, kNrr };
+
+  // The hull's forces h = C(nu) nu + D(nu_r) nu_r, so that M nu' = tau - h: Coriolis on the
+  // velocities u, v, r over ground, damping on u_r, v_r through the water. The one right-hand
+  // side of this form, used by the simulator and by fossen-ceres's models.
+  template <typename T>
+  static void Hull(const T* p, const T& u, const T& v, const T& r, const T& u_r, const T& v_r,
+                   T* h) {
+    using std::abs;
+    h[0] = -p[kM22] * v * r + (p[kXu] + p[kXuu] * abs(u_r)) * u_r;
+    h[1] = p[kM11] * u * r + (p[kYv] + p[kYvv] * abs(v_r)) * v_r;
+    h[2] = (p[kM22] - p[kM11]) * u * v + p[kNv] * v_r + (p[kNr] + p[kNrr] * abs(r)) * r;
+  }
+
   template <typename T>
   static void Derivative(const T* x, const T* tau, const T* p, const Environment<T>& env, T* dx) {
-    using std::abs;
     using std::cos;
     using std::sin;
     const T& psi = x[2];
@@ -49,13 +63,14 @@ struct Odin3Dof {
     const T s = sin(psi);
     const T u_r = u - (c * env.current_north + s * env.current_east);
     const T v_r = v - (-s * env.current_north + c * env.current_east);
-    const T &m11 = p[0], &m22 = p[1], &m33 = p[2];
+    T h[3];
+    Hull(p, u, v, r, u_r, v_r, h);
     dx[0] = c * u - s * v;
     dx[1] = s * u + c * v;
     dx[2] = r;
-    dx[3] = (tau[0] + m22 * v * r - (p[3] + p[4] * abs(u_r)) * u_r) / m11;
-    dx[4] = (tau[1] - m11 * u * r - (p[5] + p[6] * abs(v_r)) * v_r) / m22;
-    dx[5] = (tau[2] - (m22 - m11) * u * v - p[7] * v_r - (p[8] + p[9] * abs(r)) * r) / m33;
+    dx[3] = (tau[0] - h[0]) / p[kM11];
+    dx[4] = (tau[1] - h[1]) / p[kM22];
+    dx[5] = (tau[2] - h[2]) / p[kM33];
   }
 };
 

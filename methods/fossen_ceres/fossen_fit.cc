@@ -9,6 +9,7 @@
 #include "core/parse_number.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/fossen_ceres/jet_force_model.h"
+#include "methods/parameter_sd.h"
 #include "simulation/input_track.h"
 #include "simulation/open_loop.h"
 #include "simulators/odin3dof.h"
@@ -205,15 +206,12 @@ void Solve(ceres::Problem& problem, const FossenOptions& o, double* p,
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(normal);
   if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0).all()) return;
   const Eigen::MatrixXd c = ldlt.solve(Eigen::MatrixXd::Identity(n, n));
-  // Scaled by the residual variance per degree of freedom (the residuals are normalised).
-  const double dof = std::max(1, summary.num_residuals - summary.num_effective_parameters);
-  const double s2 = 2.0 * summary.final_cost / dof;
   const bool tangent = n == kParams - (Model::kFixedParam >= 0 ? 1 : 0);
   if (!tangent && n != kParams) return;
   for (int i = 0, column = 0; i < kParams; ++i) {
     if (tangent && i == Model::kFixedParam) continue;  // held: no column, sd 0
-    fit.sd[i] =
-        i == Model::kFixedParam ? 0.0 : scale[i] * std::sqrt(std::max(0.0, c(column, column) * s2));
+    // Scaled by the residual variance per degree of freedom (the residuals are normalised).
+    fit.sd[i] = i == Model::kFixedParam ? 0.0 : scale[i] * ParameterSd(c(column, column), summary);
     ++column;
   }
   fit.covariance_ok = true;
@@ -361,14 +359,17 @@ nlohmann::json EquationsOf(const std::array<double, Model::kParams>& p) {
             {"v", Model::EquationText(1, p.data())},
             {"r", Model::EquationText(2, p.data())}};
   } else {
-    auto n = [](double v) { return FormatNumber(v); };
+    // Odin3Dof::Hull in channel names, M nu' = tau - h.
+    using P = Odin3Dof;
+    auto n = [&](int i) { return FormatNumber(p[i]); };
     const auto f = [&](int i) { return Model::ForceText(i, p.data()); };
-    return {{"u", "(" + f(0) + " + " + n(p[1]) + "*v*r - (" + n(p[3]) + " + " + n(p[4]) +
-                      "*abs(u))*u) / " + n(p[0])},
-            {"v", "(" + f(1) + " - " + n(p[0]) + "*u*r - (" + n(p[5]) + " + " + n(p[6]) +
-                      "*abs(v))*v) / " + n(p[1])},
-            {"r", "(" + f(2) + " - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - " + n(p[7]) +
-                      "*v - (" + n(p[8]) + " + " + n(p[9]) + "*abs(r))*r) / " + n(p[2])}};
+    return {{"u", "(" + f(0) + " + " + n(P::kM22) + "*v*r - (" + n(P::kXu) + " + " + n(P::kXuu) +
+                      "*abs(u))*u) / " + n(P::kM11)},
+            {"v", "(" + f(1) + " - " + n(P::kM11) + "*u*r - (" + n(P::kYv) + " + " + n(P::kYvv) +
+                      "*abs(v))*v) / " + n(P::kM22)},
+            {"r", "(" + f(2) + " - (" + n(P::kM22) + " - " + n(P::kM11) + ")*u*v - " +
+                      n(P::kNv) + "*v - (" + n(P::kNr) + " + " + n(P::kNrr) + "*abs(r))*r) / " +
+                      n(P::kM33)}};
   }
 }
 

@@ -38,6 +38,8 @@ struct FossenModelBase {
   static constexpr bool kNormaliseParams = false;  // fit p_i / |start_i| instead of p_i
   static constexpr std::array<std::string_view, kStates> kStateNames = Odin3Dof::kStateNames;
   static constexpr int kThrustInput = 0, kRateState = 5, kHeadingState = 2;
+  // The thrust gains after odin3dof's parameters (Odin3Dof::Param), in the models that have them.
+  enum ThrustGain { kTx = Odin3Dof::kParams, kTy, kTn };
 
   static constexpr bool kLinearEquationError = false;  // solve the equation error unbounded
   static constexpr double kFunctionTolerance = 0.0;     // Ceres stops no earlier than this
@@ -56,10 +58,7 @@ struct FossenModelBase {
   // C(nu) nu + D(nu) nu of odin3dof's form, in calm water: M nu' = tau - h.
   template <typename T>
   static void Hull(const T* p, const T& u, const T& v, const T& r, const T* /*in*/, T* h) {
-    using std::abs;
-    h[0] = -p[1] * v * r + (p[3] + p[4] * abs(u)) * u;
-    h[1] = p[0] * u * r + (p[5] + p[6] * abs(v)) * v;
-    h[2] = (p[1] - p[0]) * u * v + p[7] * v + (p[8] + p[9] * abs(r)) * r;
+    Odin3Dof::Hull(p, u, v, r, u, v, h);
   }
   template <typename T>
   static void Penalty(const T* /*p*/, T* /*res*/) {}
@@ -92,7 +91,7 @@ struct WaterjetModel : FossenModelBase<WaterjetModel> {
   static constexpr int kInputs = 3;
   static constexpr int kParams = 13, kYawInput = 1;
   static constexpr bool kAccelerationResidual = true;  // tau is not measured
-  static constexpr int kFixedParam = 0;                // m11 fixes the scale
+  static constexpr int kFixedParam = Odin3Dof::kM11;  // m11 fixes the scale
   static constexpr std::array<std::string_view, kInputs> kInputNames = {"throttle", "nozzle",
                                                                         "bucket"};
   static constexpr std::array<std::string_view, kParams> kParamNames = {
@@ -112,15 +111,15 @@ struct WaterjetModel : FossenModelBase<WaterjetModel> {
   static void Forces(const T* p, const T* in, T* tau) {
     const T rpm = T(0.2) + T(0.8) * in[0];
     const T thrust = rpm * rpm;
-    tau[0] = p[10] * thrust * in[2];
-    tau[1] = -p[11] * thrust * in[1];
-    tau[2] = p[12] * thrust * in[1];
+    tau[0] = p[kTx] * thrust * in[2];
+    tau[1] = -p[kTy] * thrust * in[1];
+    tau[2] = p[kTn] * thrust * in[1];
   }
   static std::string ForceText(int i, const double* p) {
     const std::string thrust = "(0.2 + 0.8*throttle)*(0.2 + 0.8*throttle)";
-    if (i == 0) return FormatNumber(p[10]) + "*" + thrust + "*bucket";
-    if (i == 1) return "-" + FormatNumber(p[11]) + "*" + thrust + "*nozzle";
-    return FormatNumber(p[12]) + "*" + thrust + "*nozzle";
+    if (i == 0) return FormatNumber(p[kTx]) + "*" + thrust + "*bucket";
+    if (i == 1) return "-" + FormatNumber(p[kTy]) + "*" + thrust + "*nozzle";
+    return FormatNumber(p[kTn]) + "*" + thrust + "*nozzle";
   }
 };
 
@@ -128,8 +127,8 @@ struct RudderModel : FossenModelBase<RudderModel> {
   static constexpr std::string_view kName = "fossen-rudder";
   static constexpr int kInputs = 2, kParams = 13, kYawInput = 0;
   static constexpr bool kAccelerationResidual = true;  // tau is not measured
-  static constexpr int kFixedParam = 0;                // m11 fixes the scale
-  static constexpr int kSignedParam = 7;               // Nv
+  static constexpr int kFixedParam = Odin3Dof::kM11;  // m11 fixes the scale
+  static constexpr int kSignedParam = Odin3Dof::kNv;  // Nv
   // Parameters span 1e4 to 1e13: fitted relative to their starts.
   static constexpr bool kNormaliseParams = true;
   static constexpr std::array<std::string_view, kInputs> kInputNames = {"delta", "rev"};
@@ -147,15 +146,15 @@ struct RudderModel : FossenModelBase<RudderModel> {
   static void Forces(const T* p, const T* in, T* tau) {
     const T n = in[1] / 60.0;
     const T n2 = n * n;
-    tau[0] = p[10] * n2;
-    tau[1] = p[11] * n2 * in[0];
-    tau[2] = -p[12] * n2 * in[0];
+    tau[0] = p[kTx] * n2;
+    tau[1] = p[kTy] * n2 * in[0];
+    tau[2] = -p[kTn] * n2 * in[0];
   }
   static std::string ForceText(int i, const double* p) {
     const std::string n2 = "(rev/60)*(rev/60)";
-    if (i == 0) return FormatNumber(p[10]) + "*" + n2;
-    if (i == 1) return FormatNumber(p[11]) + "*" + n2 + "*delta";
-    return "-" + FormatNumber(p[12]) + "*" + n2 + "*delta";
+    if (i == 0) return FormatNumber(p[kTx]) + "*" + n2;
+    if (i == 1) return FormatNumber(p[kTy]) + "*" + n2 + "*delta";
+    return "-" + FormatNumber(p[kTn]) + "*" + n2 + "*delta";
   }
 };
 

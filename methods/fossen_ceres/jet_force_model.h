@@ -63,6 +63,11 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
       "c5_5",  "c6",  "c6_5",  "c7",  "c7_5",  "c8",  "c8_5",  "c9",  "c9_5",  "c10",
       "c10_5", "c11", "c11_5", "c12", "c12_5", "c13", "c13_5", "c14", "c14_5", "c15",
       "c15_5", "c16", "c16_5", "c17", "c17_5", "c18", "c18_5", "c19", "c19_5", "c20"};
+  // Parameter indices, in kParamNames order, up to the resistance knots (kFirstKnot on).
+  enum Param {
+    kM11, kM22, kM33, kXQ, kYv, kYUv, kYvv, kYr, kYUr, kYQv,
+    kYQr, kNv, kNUv, kNr, kNUr, kNrr, kNQv, kNQr, kXvr};
+  static_assert(kXvr + 1 == kFirstKnot);
   // The equation-error fit is linear in the parameters, so any start converges; these are of the
   // right order for a 5 t boat.
   static constexpr std::array<double, kParams> kStart = [] {
@@ -75,7 +80,7 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   static constexpr std::array<ParamGroup, kParams> kParamGroups = [] {
     std::array<ParamGroup, kParams> g{};
     g.fill(ParamGroup::kDamping);
-    g[0] = g[1] = g[2] = ParamGroup::kInertia;
+    g[kM11] = g[kM22] = g[kM33] = ParamGroup::kInertia;
     return g;
   }();
   static constexpr std::array<double, kInputs> kInputMin = {-3e4, -3e4, -1.2e5, 0.0};
@@ -83,12 +88,13 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
 
   // Cross-coupling and inlet terms whose sign the physics does not fix.
   static constexpr bool Signed(int i) {
-    return i == 7 || i == 8 || i == 10 || i == 11 || i == 12 || i == 16 || i == 17 || i == 18;
+    return i == kYr || i == kYUr || i == kYQr || i == kNv || i == kNUv || i == kNQv || i == kNQr ||
+           i == kXvr;
   }
 
   // The inertias are at least a tenth of a 5 t boat's: a record at one throttle (a zig-zag) lets
   // the equation error trade inertia for damping down to no mass at all.
-  static constexpr double MinValue(int i) { return i < 3 ? 0.1 * kStart[i] : 0.0; }
+  static constexpr double MinValue(int i) { return i <= kM33 ? 0.1 * kStart[i] : 0.0; }
 
   // c(U): the piecewise-linear resistance coefficient [kg/m] through the knots, held at the last
   // knot's value above it. Only the two hats around U are non-zero, so only they are evaluated.
@@ -113,11 +119,11 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
     using std::sqrt;
     const T speed = sqrt(u * u + v * v + kSpeedEps * kSpeedEps);
     const T& q = in[3];
-    h[0] = -p[18] * v * r + (p[3] * q + Resistance(p, speed) * speed) * u;
-    h[1] = p[0] * u * r + (p[4] + p[5] * speed + p[9] * q) * v + p[6] * abs(v) * v +
-           (p[7] + p[8] * speed + p[10] * q) * r;
-    h[2] = (p[1] - p[0]) * u * v + (p[11] + p[12] * speed + p[16] * q) * v +
-           (p[13] + p[14] * speed + p[17] * q) * r + p[15] * abs(r) * r;
+    h[0] = -p[kXvr] * v * r + (p[kXQ] * q + Resistance(p, speed) * speed) * u;
+    h[1] = p[kM11] * u * r + (p[kYv] + p[kYUv] * speed + p[kYQv] * q) * v + p[kYvv] * abs(v) * v +
+           (p[kYr] + p[kYUr] * speed + p[kYQr] * q) * r;
+    h[2] = (p[kM22] - p[kM11]) * u * v + (p[kNv] + p[kNUv] * speed + p[kNQv] * q) * v +
+           (p[kNr] + p[kNUr] * speed + p[kNQr] * q) * r + p[kNrr] * abs(r) * r;
   }
 
   template <typename T>
@@ -163,15 +169,15 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
            ")/" + FormatNumber(2.0 * h);
     }
     if (i == 0)
-      return "(tau_x + " + n(p[18]) + "*v*r - (" + n(p[3]) + "*jet_flow + (" + c + ")*" + speed +
-             ")*u) / " + n(p[0]);
+      return "(tau_x + " + n(p[kXvr]) + "*v*r - (" + n(p[kXQ]) + "*jet_flow + (" + c + ")*" + speed +
+             ")*u) / " + n(p[kM11]);
     if (i == 1)
-      return "(tau_y - " + n(p[0]) + "*u*r - (" + n(p[4]) + " + " + n(p[5]) + "*" + speed + " + " +
-             n(p[9]) + "*jet_flow)*v - " + n(p[6]) + "*abs(v)*v - (" + n(p[7]) + " + " + n(p[8]) +
-             "*" + speed + " + " + n(p[10]) + "*jet_flow)*r) / " + n(p[1]);
-    return "(tau_n - (" + n(p[1]) + " - " + n(p[0]) + ")*u*v - (" + n(p[11]) + " + " + n(p[12]) +
-           "*" + speed + " + " + n(p[16]) + "*jet_flow)*v - (" + n(p[13]) + " + " + n(p[14]) + "*" +
-           speed + " + " + n(p[17]) + "*jet_flow)*r - " + n(p[15]) + "*abs(r)*r) / " + n(p[2]);
+      return "(tau_y - " + n(p[kM11]) + "*u*r - (" + n(p[kYv]) + " + " + n(p[kYUv]) + "*" + speed + " + " +
+             n(p[kYQv]) + "*jet_flow)*v - " + n(p[kYvv]) + "*abs(v)*v - (" + n(p[kYr]) + " + " + n(p[kYUr]) +
+             "*" + speed + " + " + n(p[kYQr]) + "*jet_flow)*r) / " + n(p[kM22]);
+    return "(tau_n - (" + n(p[kM22]) + " - " + n(p[kM11]) + ")*u*v - (" + n(p[kNv]) + " + " + n(p[kNUv]) +
+           "*" + speed + " + " + n(p[kNQv]) + "*jet_flow)*v - (" + n(p[kNr]) + " + " + n(p[kNUr]) + "*" +
+           speed + " + " + n(p[kNQr]) + "*jet_flow)*r - " + n(p[kNrr]) + "*abs(r)*r) / " + n(p[kM33]);
   }
 };
 

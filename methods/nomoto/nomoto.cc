@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
+#include "methods/parameter_sd.h"
 
 namespace usvid::nomoto {
 namespace {
@@ -175,12 +176,11 @@ NomotoFit FitNomoto(const PreparedData& prepared, const std::string& rate,
   if (covariance.Compute(blocks, &problem)) {
     double c[9];
     covariance.GetCovarianceBlock(p, p, c);
-    // The residuals are in units of sd(r): scale by the residual variance per degree of freedom.
-    const double dof = std::max(1, summary.num_residuals - summary.num_effective_parameters);
-    const double s2 = 2.0 * summary.final_cost / dof;
-    fit.sd_K = std::sqrt(std::max(0.0, c[0] * s2));
-    fit.sd_T = std::sqrt(std::max(0.0, c[4] * s2));
-    fit.sd_delta0 = std::sqrt(std::max(0.0, c[8] * s2));
+    // The residuals are in units of sd(r): scaled by the residual variance per degree of freedom.
+    const std::vector<double> sd = ParameterSds(c, 3, summary);
+    fit.sd_K = sd[0];
+    fit.sd_T = sd[1];
+    fit.sd_delta0 = sd[2];
   } else {
     fit.notes.push_back("output error: covariance not available (standard deviations 0)");
   }
