@@ -84,6 +84,9 @@ std::map<size_t, std::vector<ResultRow>> CellStore::Load(const std::vector<FitJo
 }
 
 void CellStore::Save(size_t job, const FitJob& fit, const std::vector<ResultRow>& rows) const {
+  // An external command's failed fit is not kept: the command lies outside the build that the
+  // cells are tied to, and may be fixed (or its timeout pass) before the run is resumed.
+  if (fit.method.method == kExternalMethod && !rows.empty() && rows.front().model.is_null()) return;
   WriteFileAtomically(CellFile(job), CellJson(fit, rows).dump() + "\n");
 }
 

@@ -28,7 +28,8 @@ class CellStore {
   // The finished cells: job index -> rows. Throws InputError naming a cell file that cannot be
   // read or belongs to another job.
   std::map<size_t, std::vector<ResultRow>> Load(const std::vector<FitJob>& jobs) const;
-  // Thread-safe for different jobs.
+  // Thread-safe for different jobs. An external method's failed fit is not saved, so that a
+  // resumed run tries its command again.
   void Save(size_t job, const FitJob& fit, const std::vector<ResultRow>& rows) const;
 
   const std::string& Directory() const { return dir_; }

@@ -10,6 +10,8 @@
 #include "diagnosis/diagnose.h"
 #include "diagnosis/diagnosis_json.h"
 #include "maneuvers/maneuver_factory.h"
+#include "harness/external_method.h"
+#include "methods/channel_fit.h"
 #include "methods/identify.h"
 #include "methods/refit/refit.h"
 #include "methods/registry.h"
@@ -85,7 +87,7 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
 std::string ForcesFor(const FitJob& job) {
   const nlohmann::json& o = job.method.options;
   if (o.contains("forces")) return o["forces"] == "none" ? "" : o["forces"].get<std::string>();
-  if (job.vessel.empty() || o.contains("inputs") || job.method.method == kDiagnoseMethod ||
+  if (job.vessel.empty() || o.contains("inputs") || !job.method.Registered() ||
       !FindMethod(job.method.method).channel_inputs)
     return "";
   return HasWaterjetStates(FindVessel(job.vessel).Info().states) ? "waterjet" : "";
@@ -154,6 +156,14 @@ nlohmann::json DiagnosedModel(const FitJob& job, const Dataset& train) {
   return model;
 }
 
+// The suite's external method: its command run on the training record, with the job's channels
+// (the method's "states" and "inputs", else the vessel's).
+nlohmann::json ExternalModel(const FitJob& job, const Dataset& train) {
+  const ExternalCommand command = ParseExternalCommand(job.method.options, "suite");
+  const Channels channels = DefaultChannels(RequestFor(job));
+  return IdentifyExternal(command, train, channels.states, channels.inputs);
+}
+
 // The states a model is scored on: those it has equations for, or a vessel model's states.
 std::vector<std::string> ScoredStates(const nlohmann::json& model) {
   std::vector<std::string> states;
@@ -202,8 +212,9 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                               ? train_sets.at(job.train_maneuver)
                               : SimulateForSuite(job.vessel, job.train_maneuver,
                                                  suite.train_seconds, job.noise, job.seed);
-    model = job.method.method == kDiagnoseMethod ? DiagnosedModel(job, train)
-                                            : Identify(train, RequestFor(job));
+    model = job.method.method == kDiagnoseMethod   ? DiagnosedModel(job, train)
+            : job.method.method == kExternalMethod ? ExternalModel(job, train)
+                                                   : Identify(train, RequestFor(job));
   } catch (const std::exception& e) {
     failure = std::string("failed: ") + e.what();
   }

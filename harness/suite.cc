@@ -104,12 +104,28 @@ void CheckMethodOptions(const nlohmann::json& options, const std::string& where)
 
 // A suite's methods: the registered ones, and the nominal simulator's diagnosis.
 bool KnownSuiteMethod(const std::string& name) {
-  if (name == kDiagnoseMethod) return true;
+  if (name == kDiagnoseMethod || name == kExternalMethod) return true;
   const auto& all = Methods();
   return std::any_of(all.begin(), all.end(), [&](const Method& m) { return m.name == name; });
 }
 
-std::string KnownSuiteMethods() { return MethodNames() + ", " + std::string(kDiagnoseMethod); }
+std::string KnownSuiteMethods() {
+  return MethodNames() + ", " + std::string(kDiagnoseMethod) + ", " + std::string(kExternalMethod);
+}
+
+// An external method's own fields, checked; the rest of its options as any method's.
+nlohmann::json ExternalOptions(const nlohmann::json& options, const std::string& where) {
+  const ExternalCommand c = ParseExternalCommand(options, where);
+  if (KnownSuiteMethod(c.name))
+    throw InputError(where + ": external name '" + c.name + "' is a usvid method's; choose another");
+  nlohmann::json rest = options;
+  for (const char* key : {"name", "command", "timeout_s"}) rest.erase(key);
+  for (const auto& [key, _] : rest.items())
+    if (key != "states" && key != "inputs")
+      throw InputError(where + ": external '" + c.name + "': option '" + key +
+                       "' does not apply (known: name, command, timeout_s, states, inputs)");
+  return rest;
+}
 
 std::vector<SuiteData> DataList(const nlohmann::json& v, const std::string& file,
                                 const std::string& where) {
@@ -168,7 +184,9 @@ std::vector<SuiteMethod> ParseMethods(const nlohmann::json& list, const std::str
     if (!KnownSuiteMethod(sm.method))
       throw InputError(file + ": methods: unknown method '" + sm.method +
                        "' (known: " + KnownSuiteMethods() + ")");
-    CheckMethodOptions(sm.options, file + ": methods: " + sm.method);
+    const std::string where = file + ": methods: " + sm.method;
+    CheckMethodOptions(sm.method == kExternalMethod ? ExternalOptions(sm.options, where) : sm.options,
+                       where);
     if (sm.options.contains("forces") && sm.options["forces"] != "none")
       ForceChannels(sm.options["forces"].get<std::string>());  // throws for an unknown map
     methods.push_back(sm);
@@ -180,6 +198,7 @@ std::vector<SuiteMethod> ParseMethods(const nlohmann::json& list, const std::str
 
 std::string SuiteMethod::Label() const {
   if (method == kDiagnoseMethod) return method;
+  if (method == kExternalMethod) return options.at("name").get<std::string>();
   const std::string& option = FindMethod(method).label_option;
   if (!option.empty() && options.contains(option))
     return method + "[" + options.at(option).get<std::string>() + "]";
@@ -301,7 +320,7 @@ std::vector<FitJob> FitJobs(const Suite& s) {
         for (double noise : s.noise)
           for (uint64_t seed : s.seeds) {
             jobs.push_back({vessel, train, m, noise, seed});
-            if (m.method == kDiagnoseMethod || !FindMethod(m.method).seeded) break;
+            if (!m.Registered() || !FindMethod(m.method).seeded) break;
           }
     return jobs;
   }

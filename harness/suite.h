@@ -12,8 +12,10 @@
 //    "file": ..., "format": "marin-dat"}], "test": [...]}, "methods": [...]}
 // with at most one vessel (whose channels the files hold; none when the methods name their
 // "states" and "inputs"), maneuver names taken from the data names, no added noise.
-// Methods: every registered method (methods/method_list.h), and diagnose (kDiagnoseMethod: the
-// nominal vessel extended by the causes `usvid diagnose` names on the training data).
+// Methods: every registered method (methods/method_list.h), diagnose (kDiagnoseMethod: the
+// nominal vessel extended by the causes `usvid diagnose` names on the training data), and
+// external commands ({"method": "external", "name": ..., "command": [...]};
+// harness/external_method.h).
 // Unknown fields, wrong types and unknown names are errors naming the file and field.
 #pragma once
 
@@ -23,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "harness/external_method.h"
 #include "harness/suite_data.h"
 
 namespace usvid {
@@ -31,9 +34,11 @@ namespace usvid {
 inline constexpr std::string_view kDiagnoseMethod = "diagnose";
 
 struct SuiteMethod {
-  std::string method;      // a registered method's name, or kDiagnoseMethod
+  std::string method;      // a registered method's name, kDiagnoseMethod or kExternalMethod
   nlohmann::json options;  // method options (gp: operators, population, generations, ...)
   std::string Label() const;
+  // A method of the registry (methods/method_list.h), not one of the suite's own.
+  bool Registered() const { return method != kDiagnoseMethod && method != kExternalMethod; }
 };
 
 struct Suite {

@@ -55,6 +55,24 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
   s = Small();
   s["methods"] = {"magic"};
   expect(s, "unknown method 'magic'");
+  // External commands: a name, a command, a positive timeout, and no other method's options.
+  auto external = [](nlohmann::json fields) {
+    fields["method"] = "external";
+    nlohmann::json suite = Small();
+    suite["methods"] = {fields};
+    return suite;
+  };
+  expect(external({{"command", {"python3", "m.py"}}}), "needs \"name\"");
+  expect(external({{"name", "sindy"}, {"command", {"python3"}}}), "is a usvid method's");
+  expect(external({{"name", "mine"}, {"command", nlohmann::json::array()}}), "needs \"command\"");
+  expect(external({{"name", "mine"}, {"command", {"python3"}}, {"timeout_s", 0}}),
+         "timeout_s must be a positive number");
+  expect(external({{"name", "mine"}, {"command", {"python3"}}, {"population", 3}}),
+         "option 'population' does not apply");
+  EXPECT_EQ(ParseSuite(external({{"name", "mine"}, {"command", {"python3", "m.py"}}}), "s.json")
+                .methods.at(0)
+                .Label(),
+            "mine");
   s = Small();
   s["noise"] = {"high"};
   expect(s, "noise");
