@@ -25,6 +25,44 @@
 
 namespace usvid {
 
+namespace {
+std::string ForcesFor(const SuiteMethod& method, const std::string& vessel);
+}  // namespace
+
+IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vessel,
+                              uint64_t seed) {
+  IdentifyRequest r;
+  r.method = method.method;
+  r.vessel = vessel;
+  r.seed = seed;
+  const nlohmann::json& o = method.options;
+  r.operators = o.value("operators", r.operators);
+  r.preset = o.value("preset", r.preset);
+  r.features = o.value("features", r.features);
+  auto set = [&](const char* key, auto& field) {
+    if (o.contains(key)) field = o[key].get<typename std::decay_t<decltype(field)>::value_type>();
+  };
+  set("population", r.population);
+  set("generations", r.generations);
+  set("max_depth", r.max_depth);
+  set("ols_threshold", r.ols_threshold);
+  set("validation_fraction", r.validation_fraction);
+  set("horizon_s", r.horizon_s);
+  set("constant_iterations", r.constant_iterations);
+  set("restarts", r.restarts);
+  set("max_terms", r.hybrid_terms);
+  r.fit_mode = o.value("fit", r.fit_mode);
+  r.segment_s = o.value("segment_s", r.segment_s);
+  r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
+  r.preprocess.forces = ForcesFor(method, vessel);
+  r.prior_sd = o.value("prior_sd", r.prior_sd);
+  if (o.contains("refit_params"))
+    r.refit_params = o["refit_params"].get<std::vector<std::string>>();
+  if (o.contains("states")) r.states = o["states"].get<std::vector<std::string>>();
+  if (o.contains("inputs")) r.inputs = o["inputs"].get<std::vector<std::string>>();
+  return r;
+}
+
 Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
                          double noise, uint64_t seed) {
   const VesselSimulator& sim = FindVessel(vessel);
@@ -84,13 +122,13 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
 // else the waterjet forces when the vessel logs its jets' states and the method takes inputs
 // as channels (not a vessel model, nor the inputs named by hand; eb-lr finds its steady windows
 // where the commands are held).
-std::string ForcesFor(const FitJob& job) {
-  const nlohmann::json& o = job.method.options;
+std::string ForcesFor(const SuiteMethod& method, const std::string& vessel) {
+  const nlohmann::json& o = method.options;
   if (o.contains("forces")) return o["forces"] == "none" ? "" : o["forces"].get<std::string>();
-  if (job.vessel.empty() || o.contains("inputs") || !job.method.Registered() ||
-      !FindMethod(job.method.method).channel_inputs)
+  if (vessel.empty() || o.contains("inputs") || !method.Registered() ||
+      !FindMethod(method.method).channel_inputs)
     return "";
-  return HasWaterjetStates(FindVessel(job.vessel).Info().states) ? "waterjet" : "";
+  return HasWaterjetStates(FindVessel(vessel).Info().states) ? "waterjet" : "";
 }
 
 // What a row's model was driven by: its inputs, and the force map that derived them.
@@ -106,37 +144,9 @@ std::string InputsOf(const nlohmann::json& model) {
 }
 
 IdentifyRequest RequestFor(const FitJob& job) {
-  IdentifyRequest r;
-  r.method = job.method.method;
-  r.vessel = job.vessel;
-  r.seed = job.seed;
+  IdentifyRequest r = MethodRequest(job.method, job.vessel, job.seed);
   r.threads = 1;  // the suite runs jobs in parallel
   r.data_name = job.vessel + "/" + job.train_maneuver;
-  const nlohmann::json& o = job.method.options;
-  r.operators = o.value("operators", r.operators);
-  r.preset = o.value("preset", r.preset);
-  r.features = o.value("features", r.features);
-  auto set = [&](const char* key, auto& field) {
-    if (o.contains(key)) field = o[key].get<typename std::decay_t<decltype(field)>::value_type>();
-  };
-  set("population", r.population);
-  set("generations", r.generations);
-  set("max_depth", r.max_depth);
-  set("ols_threshold", r.ols_threshold);
-  set("validation_fraction", r.validation_fraction);
-  set("horizon_s", r.horizon_s);
-  set("constant_iterations", r.constant_iterations);
-  set("restarts", r.restarts);
-  set("max_terms", r.hybrid_terms);
-  r.fit_mode = o.value("fit", r.fit_mode);
-  r.segment_s = o.value("segment_s", r.segment_s);
-  r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
-  r.preprocess.forces = ForcesFor(job);
-  r.prior_sd = o.value("prior_sd", r.prior_sd);
-  if (o.contains("refit_params"))
-    r.refit_params = o["refit_params"].get<std::vector<std::string>>();
-  if (o.contains("states")) r.states = o["states"].get<std::vector<std::string>>();
-  if (o.contains("inputs")) r.inputs = o["inputs"].get<std::vector<std::string>>();
   return r;
 }
 

@@ -14,8 +14,13 @@
 #include "core/dataset.h"
 #include "harness/result_row.h"
 #include "harness/suite.h"
+#include "methods/identify_request.h"
 
 namespace usvid {
+
+// The request a suite method's options make (harness/suite.h) on `vessel`'s data ("" when the
+// options name the channels), at `seed`; threads and the data's name are the caller's.
+IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vessel, uint64_t seed);
 
 // The data a suite trains or tests on: `maneuver` on `vessel` (step grids run to the end of
 // their grid), noise on every measured channel, all from `seed`.

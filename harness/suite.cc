@@ -68,6 +68,8 @@ const std::map<std::string, OptionKind>& MethodOptions() {
   return options;
 }
 
+}  // namespace
+
 void CheckMethodOptions(const nlohmann::json& options, const std::string& where) {
   for (const auto& [key, value] : options.items()) {
     const auto known = MethodOptions().find(key);
@@ -101,6 +103,8 @@ void CheckMethodOptions(const nlohmann::json& options, const std::string& where)
                                                                : "a list of names"));
   }
 }
+
+namespace {
 
 // A suite's methods: the registered ones, and the nominal simulator's diagnosis.
 bool KnownSuiteMethod(const std::string& name) {

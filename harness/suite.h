@@ -64,6 +64,10 @@ struct FitJob {
   std::string Id() const;
 };
 
+// A method's options checked against the options a suite may give (names, types, ranges);
+// InputError naming `where` and the option otherwise.
+void CheckMethodOptions(const nlohmann::json& options, const std::string& where);
+
 // Relative data paths are taken from the folder of `file`.
 Suite ParseSuite(const nlohmann::json& value, const std::string& file);
 // The embedded default (harness/suites/default.json): odin3dof and odin-hs; trained on zig-zag

@@ -10,9 +10,9 @@ set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root"
 layers=(core plot importers maneuvers simulators effects sensors simulation preprocessing methods
-        metrics diagnosis design harness apps)
+        metrics diagnosis design harness python apps)
 sources=(core plot importers maneuvers simulators effects sensors simulation preprocessing methods
-         metrics diagnosis design harness apps bench fuzz tools)
+         metrics diagnosis design harness python apps bench fuzz tools)
 fail=0
 
 for ((i = 0; i < ${#layers[@]}; i++)); do

@@ -6,7 +6,8 @@
 set -euo pipefail
 packages=(g++ cmake ninja-build ccache git
   libeigen3-dev libceres-dev libnlopt-cxx-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev nlohmann-json3-dev)
+  libcli11-dev nlohmann-json3-dev
+  pybind11-dev python3-dev python3-numpy)  # the Python module
 case "${1:-}" in
   --test)
     packages+=(clang-14 libclang-rt-14-dev libomp-14-dev  # clang's sanitizers, libFuzzer, OpenMP

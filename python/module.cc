@@ -1,0 +1,192 @@
+// The Python module `usvid` (docs/python.md): the library's simulate, identify, evaluate,
+// diagnose and compare, with numpy arrays for data and dicts for JSON. Every call converts its
+// arguments while it holds the GIL, then releases it for the work; InputError becomes
+// ValueError with the same message as the command line's.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include <chrono>
+
+#include "core/error.h"
+#include "core/json_file.h"
+#include "diagnosis/diagnose.h"
+#include "diagnosis/diagnosis_json.h"
+#include "effects/effect.h"
+#include "effects/effect_values.h"
+#include "harness/results.h"
+#include "harness/run_suite.h"
+#include "harness/suite.h"
+#include "maneuvers/maneuver_factory.h"
+#include "methods/identify.h"
+#include "metrics/evaluation.h"
+#include "python/python_data.h"
+#include "sensors/noise.h"
+#include "simulation/vessel_simulator.h"
+
+namespace py = pybind11;
+
+namespace usvid::python {
+namespace {
+
+// `effects`: None, a list of "NAME=VALUE" strings as `usvid simulate --effect` takes, or a dict
+// of name to value.
+std::vector<std::string> EffectSpecs(const py::object& effects) {
+  std::vector<std::string> specs;
+  if (effects.is_none()) return specs;
+  if (py::isinstance<py::dict>(effects)) {
+    for (const auto& [name, value] : effects.cast<py::dict>())
+      specs.push_back(py::str(name).cast<std::string>() + "=" + py::str(value).cast<std::string>());
+    return specs;
+  }
+  for (const auto& item : effects) specs.push_back(py::str(item).cast<std::string>());
+  return specs;
+}
+
+py::dict Simulate(const std::string& vessel, const py::object& maneuver, const py::object& inputs,
+                  const py::object& effects, double noise, uint64_t seed,
+                  const py::object& duration) {
+  if (maneuver.is_none() == inputs.is_none())
+    throw InputError("simulate: give exactly one of maneuver and inputs");
+  if (!(noise >= 0)) throw InputError("simulate: noise must be >= 0");
+  const double seconds = duration.is_none() ? 0.0 : duration.cast<double>();
+  if (!(seconds >= 0)) throw InputError("simulate: duration must be >= 0 (0: the maneuver's)");
+  const std::vector<std::string> specs = EffectSpecs(effects);
+  const std::string spec = maneuver.is_none() ? "" : maneuver.cast<std::string>();
+  const Dataset recorded = inputs.is_none() ? Dataset() : ToDataset(inputs.cast<py::dict>());
+  Dataset data;
+  {
+    py::gil_scoped_release release;
+    const VesselSimulator& sim = FindVessel(vessel);
+    const VesselInfo& info = sim.Info();
+    const EffectValues<double> values = ValuesOf(ParseEffects(specs, seed), info.inputs, info.states);
+    SimulationResult result;
+    if (!spec.empty()) {
+      auto m = MakeManeuver(spec, info.actuation, seconds, seed);
+      result = sim.RunManeuver(*m, info.default_params, values, RunOptions{});
+    } else {
+      result = sim.RunInputs(recorded, info.default_params, values, RunOptions{});
+    }
+    if (result.diverged)
+      throw InputError("simulate: the " + info.name + " simulation diverged at t = " +
+                       std::to_string(result.diverged_at_s) + " s");
+    data = std::move(result.data);
+    std::vector<std::string> measured = info.states;
+    measured.insert(measured.end(), info.derived.begin(), info.derived.end());
+    AddGaussianNoise(data, measured, noise, seed);
+  }
+  return ToDict(data);
+}
+
+// identify's keyword options: the suite's method options (harness/suite.h), plus threads.
+py::dict Identify(const py::dict& data, const std::string& method, const py::object& vessel,
+                  const py::object& states, const py::object& inputs, const py::kwargs& kwargs) {
+  nlohmann::json options = ToJson(kwargs);
+  int threads = 0;
+  if (options.contains("threads")) {
+    if (!options["threads"].is_number_integer() || options["threads"].get<int>() < 0)
+      throw InputError("identify: threads must be a whole number >= 0 (0: all cores)");
+    threads = options["threads"].get<int>();
+    options.erase("threads");
+  }
+  if (!states.is_none()) options["states"] = states.cast<std::vector<std::string>>();
+  if (!inputs.is_none()) options["inputs"] = inputs.cast<std::vector<std::string>>();
+  CheckMethodOptions(options, "identify: " + method);
+  const std::string vessel_name = vessel.is_none() ? "" : vessel.cast<std::string>();
+  IdentifyRequest request = MethodRequest({method, options}, vessel_name,
+                                          options.value("seed", uint64_t{1}));
+  request.threads = threads;
+  request.data_name = "python";
+  const Dataset d = ToDataset(data);
+  nlohmann::json model;
+  {
+    py::gil_scoped_release release;
+    model = usvid::Identify(d, request);
+  }
+  return FromJson(model);
+}
+
+py::dict Evaluate(const py::dict& model, const py::dict& data) {
+  const nlohmann::json m = ToJson(model);
+  const Dataset d = ToDataset(data);
+  nlohmann::json metrics;
+  {
+    py::gil_scoped_release release;
+    metrics = EvaluateModel(m, d).metrics;
+  }
+  return FromJson(metrics);
+}
+
+py::dict Diagnose(const py::dict& data, const std::string& vessel, int causes, bool discover) {
+  if (causes < 1) throw InputError("diagnose: causes must be at least 1");
+  const Dataset d = ToDataset(data);
+  nlohmann::json out;
+  {
+    py::gil_scoped_release release;
+    diagnosis::DiagnoseOptions options;
+    options.max_causes = causes;
+    options.discover = discover;
+    const diagnosis::Diagnosis result =
+        diagnosis::Diagnose(d, vessel, FindVessel(vessel).Info().default_params, options);
+    out = diagnosis::DiagnosisToJson(result);
+    out["model"] = diagnosis::ExtendedModelJson(result);
+  }
+  return FromJson(out);
+}
+
+// `suite`: a suite as a dict, or the path of a suite file.
+py::dict Compare(const py::object& suite, int threads) {
+  if (threads < 0) throw InputError("compare: threads must be >= 0 (0: all cores)");
+  const bool path = py::isinstance<py::str>(suite);
+  const std::string file = path ? suite.cast<std::string>() : "suite";
+  const Suite s = ParseSuite(path ? ReadJsonFile(file) : ToJson(suite), file);
+  nlohmann::json results;
+  {
+    py::gil_scoped_release release;
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<ResultRow> rows = RunSuite(s, threads);
+    results = ResultsJson(
+        s, rows, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return FromJson(results);
+}
+
+}  // namespace
+}  // namespace usvid::python
+
+PYBIND11_MODULE(_usvid, m) {
+  using namespace usvid::python;
+  using py::arg;
+  m.doc() = "usvid: identification of high-speed surface vessels (docs/python.md)";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const usvid::InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  m.def("simulate", &Simulate, arg("vessel"), arg("maneuver") = py::none(),
+        arg("inputs") = py::none(), arg("effects") = py::none(), arg("noise") = 0.0,
+        arg("seed") = 0, arg("duration") = py::none(),
+        "A maneuver (or recorded inputs, a dict with 't') on a vessel: a dict of numpy arrays.");
+  m.def("identify", &Identify, arg("data"), arg("method"), arg("vessel") = py::none(),
+        arg("states") = py::none(), arg("inputs") = py::none(),
+        "Fit a method to data: model.json as a dict. Options as a suite's (population=..., "
+        "seed=..., threads=...).");
+  m.def("evaluate", &Evaluate, arg("model"), arg("data"),
+        "Free-run a model on data: metrics.json as a dict.");
+  m.def("diagnose", &Diagnose, arg("data"), arg("vessel"), arg("causes") = 3,
+        arg("discover") = true,
+        "What the vessel's simulation gets wrong on data: diagnosis.json as a dict, with the "
+        "extended model under 'model'.");
+  m.def("compare", &Compare, arg("suite"), arg("threads") = 0,
+        "Run a suite (a dict, or a suite file's path): results.json as a dict.");
+  m.def("vessels", [] {
+    std::vector<std::string> names;
+    for (const auto& name : usvid::VesselNames()) names.push_back(name);
+    return names;
+  }, "The registered vessels' names.");
+}
