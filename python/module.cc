@@ -85,19 +85,22 @@ py::dict Simulate(const std::string& vessel, const py::object& maneuver, const p
 py::dict Identify(const py::dict& data, const std::string& method, const py::object& vessel,
                   const py::object& states, const py::object& inputs, const py::kwargs& kwargs) {
   nlohmann::json options = ToJson(kwargs);
-  int threads = 0;
-  if (options.contains("threads")) {
-    if (!options["threads"].is_number_integer() || options["threads"].get<int>() < 0)
-      throw InputError("identify: threads must be a whole number >= 0 (0: all cores)");
-    threads = options["threads"].get<int>();
-    options.erase("threads");
-  }
+  // threads and seed, as `usvid identify --threads --seed`; the rest as a suite's options.
+  auto take = [&](const char* key, int64_t fallback) {
+    if (!options.contains(key)) return fallback;
+    const nlohmann::json value = options[key];
+    if (!value.is_number_integer() || value.get<int64_t>() < 0)
+      throw InputError(std::string("identify: ") + key + " must be a whole number >= 0");
+    options.erase(key);
+    return value.get<int64_t>();
+  };
+  const int threads = static_cast<int>(take("threads", 0));
+  const auto seed = static_cast<uint64_t>(take("seed", 1));
   if (!states.is_none()) options["states"] = states.cast<std::vector<std::string>>();
   if (!inputs.is_none()) options["inputs"] = inputs.cast<std::vector<std::string>>();
   CheckMethodOptions(options, "identify: " + method);
   const std::string vessel_name = vessel.is_none() ? "" : vessel.cast<std::string>();
-  IdentifyRequest request = MethodRequest({method, options}, vessel_name,
-                                          options.value("seed", uint64_t{1}));
+  IdentifyRequest request = MethodRequest({method, options}, vessel_name, seed);
   request.threads = threads;
   request.data_name = "python";
   const Dataset d = ToDataset(data);
