@@ -94,8 +94,9 @@ TEST(ExternalMethodCliTest, ScoresATrueModelAndKeepsTheSuiteWhenCommandsFail) {
     ASSERT_EQ(rows["nominal"][i].at("status"), "ok");
     EXPECT_NEAR(mine.at("mean_fit_percent").get<double>(),
                 rows["nominal"][i].at("mean_fit_percent").get<double>(), 1e-6);
-    if (mine.at("test_maneuver") == "multisine")
+    if (mine.at("test_maneuver") == "multisine") {
       EXPECT_GE(mine.at("mean_fit_percent").get<double>(), 99.0);
+    }
   }
   const std::map<std::string, std::string> why = {
       {"fails", "external 'fails': exited with code 1: no convergence here"},

@@ -59,7 +59,7 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
   auto external = [](nlohmann::json fields) {
     fields["method"] = "external";
     nlohmann::json suite = Small();
-    suite["methods"] = {fields};
+    suite["methods"] = nlohmann::json::array({fields});
     return suite;
   };
   expect(external({{"command", {"python3", "m.py"}}}), "needs \"name\"");
