@@ -12,11 +12,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "core/csv_dataset.h"
 #include "core/error.h"
+#include "core/json_file.h"
 #include "core/parse_number.h"
 
 extern char** environ;
@@ -152,12 +152,14 @@ nlohmann::json IdentifyExternal(const ExternalCommand& command, const Dataset& t
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw InputError(what + ": exited with code " + std::to_string(WEXITSTATUS(status)) +
                      because);
-  std::ifstream in(model);
-  if (!in) throw InputError(what + ": wrote no model.json");
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json m = nlohmann::json::parse(text.str(), nullptr, false);
-  if (m.is_discarded() || !m.is_object())
+  if (!fs::exists(model)) throw InputError(what + ": wrote no model.json");
+  nlohmann::json m;
+  try {
+    m = ReadJsonFile(model.string());
+  } catch (const InputError& e) {  // file:line:column of the syntax error
+    throw InputError(what + ": its model.json is not JSON: " + e.what());
+  }
+  if (!m.is_object())
     throw InputError(what + ": its model.json is not a JSON object");
   if (!(m.contains("equations") && m["equations"].is_object() && !m["equations"].empty()))
     throw InputError(what + ": its model.json has no \"equations\" (state: expression)");
