@@ -1,8 +1,13 @@
 #include "core/csv_dataset.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <optional>
 #include <set>
 
 #include "core/atomic_file.h"
+#include "core/check.h"
 #include "core/csv_tokenizer.h"
 #include "core/error.h"
 #include "core/parse_number.h"
@@ -10,51 +15,80 @@
 namespace usvid {
 namespace {
 
-void CheckHeader(const CsvTable& table) {
-  const CsvRow& header = table.rows.front();
+void CheckHeader(const CsvRow& header, const std::string& file) {
   if (header.fields.size() == 1) {
     for (char sep : {';', '\t', '|'}) {
       const auto at = header.fields[0].text.find(sep);
       if (at != std::string::npos) {
         const std::string name = sep == '\t' ? "a tab" : std::string("'") + sep + "'";
         throw InputError(Located(
-            table.file, header.line, static_cast<int>(at) + 1,
+            file, header.line, static_cast<int>(at) + 1,
             "wrong separator: found " + name + " in the header; data files are comma-separated"));
       }
     }
   }
   std::set<std::string> seen;
   for (const CsvField& f : header.fields) {
-    if (f.text.empty())
-      throw InputError(Located(table.file, header.line, f.column, "empty column name"));
+    if (f.text.empty()) throw InputError(Located(file, header.line, f.column, "empty column name"));
     if (!seen.insert(f.text).second)
       throw InputError(
-          Located(table.file, header.line, f.column, "column '" + f.text + "' appears twice"));
+          Located(file, header.line, f.column, "column '" + f.text + "' appears twice"));
   }
   if (!seen.contains("t"))
-    throw InputError(Located(table.file, header.line, 1, "no column 't' (time in seconds)"));
+    throw InputError(Located(file, header.line, 1, "no column 't' (time in seconds)"));
 }
 
-}  // namespace
+// One column while it is read: its values and mask, sized once for every line of the file.
+// A column whose first value is not a number is text: its storage is freed, its later cells are
+// not parsed, and it keeps where its first text stood.
+struct ColumnBuilder {
+  std::string name;
+  Eigen::VectorXd values;
+  Eigen::Array<bool, Eigen::Dynamic, 1> sampled;
+  bool numeric = false;  // a number seen
+  std::optional<Dataset::TextColumn> text;  // set: a text column
+};
 
-Dataset ParseDatasetCsv(std::string_view text, const std::string& file) {
-  if (text.empty()) throw InputError(Located(file, 0, 0, "the file is empty"));
-  const CsvTable table = TokenizeCsv(text, file);
-  if (table.rows.empty()) throw InputError(Located(file, 0, 0, "the file holds no text"));
-  CheckHeader(table);
-  if (table.rows.size() == 1)
-    throw InputError(Located(file, table.rows[0].line, 0, "header only, no data rows"));
+void ReportProgress(const CsvReadOptions& options, std::uint64_t done, std::uint64_t total,
+                    Eigen::Index rows, std::uint64_t& next) {
+  if (!options.progress || done < next || done >= total) return;  // the end is reported once
+  options.progress(static_cast<double>(done) / static_cast<double>(total), rows);
+  next = done + total / 10;
+}
 
-  const CsvRow& header = table.rows.front();
+template <typename Lines>
+Dataset ParseLines(Lines& lines, const CsvReadOptions& options) {
+  const std::string& file = lines.file();
+  if (lines.size() == 0) throw InputError(Located(file, 0, 0, "the file is empty"));
+  std::string_view line;
+  int line_no = 0;
+  CsvRow row;
+  auto next_row = [&] {
+    while (lines.Next(line, line_no)) {
+      if (line.find_first_not_of(" \t") == std::string_view::npos) continue;  // blank
+      SplitCsvLine(line, file, line_no, ',', row);
+      return true;
+    }
+    return false;
+  };
+  if (!next_row()) throw InputError(Located(file, 0, 0, "the file holds no text"));
+  CheckHeader(row, file);
+  const CsvRow header = row;
   const size_t ncol = header.fields.size();
-  const auto nrow = static_cast<Eigen::Index>(table.rows.size() - 1);
   size_t t_col = 0;
   while (header.fields[t_col].text != "t") ++t_col;
 
-  Eigen::MatrixXd values(nrow, ncol);
-  Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> sampled(nrow, ncol);
-  for (Eigen::Index i = 0; i < nrow; ++i) {
-    const CsvRow& row = table.rows[i + 1];
+  // Every line but the header may be a row: the columns are sized once and trimmed at the end.
+  const Eigen::Index capacity = std::max<std::int64_t>(lines.CountLines() - header.line, 0);
+  std::vector<ColumnBuilder> columns(ncol);
+  for (size_t c = 0; c < ncol; ++c) {
+    columns[c].name = header.fields[c].text;
+    columns[c].values.resize(capacity);
+    columns[c].sampled.resize(capacity);
+  }
+  Eigen::Index n = 0;
+  std::uint64_t next_progress = lines.size() / 10;
+  while (next_row()) {
     if (row.fields.size() != ncol) {
       const bool shorter = row.fields.size() < ncol;
       const int column = shorter ? row.end_column : row.fields[ncol].column;
@@ -63,41 +97,80 @@ Dataset ParseDatasetCsv(std::string_view text, const std::string& file) {
                                    " row: " + std::to_string(row.fields.size()) +
                                    " cells, the header has " + std::to_string(ncol)));
     }
+    USVID_CHECK(n < capacity, "no more rows than lines");
     for (size_t c = 0; c < ncol; ++c) {
+      ColumnBuilder& col = columns[c];
+      if (col.text) continue;
       const CsvField& f = row.fields[c];
       const ParsedNumber p = ParseNumber(f.text);
       const bool is_time = c == t_col;
       if (p.status == NumberStatus::kEmpty && !is_time) {
-        sampled(i, c) = false;
-        values(i, c) = 0.0;
+        col.sampled(n) = false;
+        col.values(n) = std::numeric_limits<double>::quiet_NaN();
         continue;
       }
-      if (p.status != NumberStatus::kOk)
+      if (p.status != NumberStatus::kOk) {
+        // Text where the column has held no number yet: a text column (a mode, a comment),
+        // refused only by a command that needs it as a number (Dataset::Get).
+        if (p.status == NumberStatus::kNotANumber && !col.numeric && !is_time) {
+          const std::string where =
+              file + ":" + std::to_string(row.line) + ":" + std::to_string(f.column);
+          col.text = Dataset::TextColumn{col.name, where, f.text};
+          col.values = Eigen::VectorXd();
+          col.sampled = Eigen::Array<bool, Eigen::Dynamic, 1>();
+          continue;
+        }
         throw InputError(Located(
             file, row.line, f.column,
-            "column '" + header.fields[c].text + "': " + DescribeNumberStatus(p.status, f.text)));
-      sampled(i, c) = true;
-      values(i, c) = p.value;
+            "column '" + col.name + "': " + DescribeNumberStatus(p.status, f.text)));
+      }
+      col.numeric = true;
+      col.sampled(n) = true;
+      col.values(n) = p.value;
     }
-    if (i > 0 && values(i, t_col) <= values(i - 1, t_col)) {
-      const bool equal = values(i, t_col) == values(i - 1, t_col);
+    const Eigen::VectorXd& t = columns[t_col].values;
+    if (n > 0 && t(n) <= t(n - 1)) {
+      const bool equal = t(n) == t(n - 1);
       throw InputError(Located(
           file, row.line, row.fields[t_col].column,
-          "t = " + FormatNumber(values(i, t_col)) + (equal ? " repeats" : " goes back from") +
-              " the previous t = " + FormatNumber(values(i - 1, t_col)) +
+          "t = " + FormatNumber(t(n)) + (equal ? " repeats" : " goes back from") +
+              " the previous t = " + FormatNumber(t(n - 1)) +
               "; t must be strictly increasing (usvid import repairs such logs)"));
     }
+    ++n;
+    ReportProgress(options, lines.bytes_read(), lines.size(), n, next_progress);
   }
+  if (n == 0) throw InputError(Located(file, header.line, 0, "header only, no data rows"));
+  if (options.progress) options.progress(1.0, n);
 
-  Dataset data(values.col(t_col));
-  for (size_t c = 0; c < ncol; ++c)
-    if (c != t_col) data.Set(header.fields[c].text, values.col(c), sampled.col(c));
+  ColumnBuilder& time = columns[t_col];
+  time.values.conservativeResize(n);
+  Dataset data(std::move(time.values));
+  for (size_t c = 0; c < ncol; ++c) {
+    ColumnBuilder& col = columns[c];
+    if (c == t_col) continue;
+    if (col.text) {
+      data.AddTextColumn(std::move(*col.text));
+      continue;
+    }
+    col.values.conservativeResize(n);
+    col.sampled.conservativeResize(n);
+    data.Set(col.name, std::move(col.values), std::move(col.sampled));
+  }
   data.metadata()["source"] = file;
   return data;
 }
 
-Dataset ReadDatasetCsv(const std::string& path) {
-  return ParseDatasetCsv(ReadTextFile(path), path);
+}  // namespace
+
+Dataset ParseDatasetCsv(std::string_view text, const std::string& file) {
+  TextLines lines(text, file);
+  return ParseLines(lines, {});
+}
+
+Dataset ReadDatasetCsv(const std::string& path, const CsvReadOptions& options) {
+  TextFileLines lines(path);
+  return ParseLines(lines, options);
 }
 
 std::string FormatDatasetCsv(const Dataset& data) {

@@ -1,5 +1,6 @@
 #include "core/csv_tokenizer.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -35,7 +36,8 @@ std::string HexByte(unsigned char c) {
   return buf;
 }
 
-// Checks one line (without its line end) for bytes a text file does not hold.
+}  // namespace
+
 void CheckTextLine(std::string_view line, const std::string& file, int line_no) {
   for (size_t i = 0; i < line.size();) {
     const auto c = static_cast<unsigned char>(line[i]);
@@ -50,14 +52,21 @@ void CheckTextLine(std::string_view line, const std::string& file, int line_no) 
   }
 }
 
-CsvRow SplitLine(std::string_view line, const std::string& file, int line_no, char separator) {
-  CsvRow row;
+void SplitCsvLine(std::string_view line, const std::string& file, int line_no, char separator,
+                  CsvRow& row) {
   row.line = line_no;
   row.end_column = static_cast<int>(line.size()) + 1;
+  size_t count = 0;
+  auto next_field = [&](int column) -> CsvField& {
+    if (row.fields.size() <= count) row.fields.emplace_back();
+    CsvField& field = row.fields[count++];
+    field.column = column;
+    field.text.clear();
+    return field;
+  };
   size_t i = 0;
   while (true) {
-    CsvField field;
-    field.column = static_cast<int>(i) + 1;
+    CsvField& field = next_field(static_cast<int>(i) + 1);
     size_t start = i;
     while (start < line.size() && line[start] == ' ') ++start;
     if (start < line.size() && line[start] == '"') {
@@ -84,36 +93,28 @@ CsvRow SplitLine(std::string_view line, const std::string& file, int line_no, ch
       i = j;
     } else {
       const size_t end = line.find(separator, i);
-      field.text = std::string(line.substr(i, end == std::string_view::npos ? end : end - i));
+      field.text.assign(line.substr(i, end == std::string_view::npos ? end : end - i));
       i = end == std::string_view::npos ? line.size() : end;
     }
-    row.fields.push_back(std::move(field));
     if (i >= line.size()) break;
     ++i;  // skip the separator; a trailing separator makes one more (empty) field
     if (i == line.size()) {
-      row.fields.push_back({"", static_cast<int>(i) + 1});
+      next_field(static_cast<int>(i) + 1);
       break;
     }
   }
-  return row;
+  row.fields.resize(count);
 }
+
+namespace {
 
 // Calls visit(line, line_no) for every line after a BOM, with its line end removed.
 template <typename Visit>
 void ForEachLine(std::string_view text, const std::string& file, Visit visit) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  TextLines lines(text, file);
+  std::string_view line;
   int line_no = 0;
-  size_t pos = 0;
-  while (pos < text.size()) {
-    ++line_no;
-    size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(pos, end - pos);
-    pos = end + 1;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    CheckTextLine(line, file, line_no);
-    visit(line, line_no);
-  }
+  while (lines.Next(line, line_no)) visit(line, line_no);
 }
 
 bool IsBlank(std::string_view line) {
@@ -126,7 +127,9 @@ CsvTable TokenizeCsv(std::string_view text, const std::string& file, char separa
   CsvTable table;
   table.file = file;
   ForEachLine(text, file, [&](std::string_view line, int line_no) {
-    if (!IsBlank(line)) table.rows.push_back(SplitLine(line, file, line_no, separator));
+    if (IsBlank(line)) return;
+    table.rows.emplace_back();
+    SplitCsvLine(line, file, line_no, separator, table.rows.back());
   });
   return table;
 }
@@ -150,6 +153,68 @@ CsvTable TokenizeWhitespace(std::string_view text, const std::string& file, int 
     table.rows.push_back(std::move(row));
   });
   return table;
+}
+
+TextLines::TextLines(std::string_view text, std::string file)
+    : text_(text), file_(std::move(file)) {
+  if (text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
+}
+
+bool TextLines::Next(std::string_view& line, int& line_no) {
+  if (pos_ >= text_.size()) return false;
+  size_t end = text_.find('\n', pos_);
+  if (end == std::string_view::npos) end = text_.size();
+  line = text_.substr(pos_, end - pos_);
+  pos_ = std::min(end + 1, text_.size());
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  line_no = ++line_no_;
+  CheckTextLine(line, file_, line_no);
+  return true;
+}
+
+std::int64_t TextLines::CountLines() const {
+  const auto breaks = std::count(text_.begin(), text_.end(), '\n');
+  return breaks + (!text_.empty() && text_.back() != '\n' ? 1 : 0);
+}
+
+TextFileLines::TextFileLines(const std::string& path) : file_(path), buffer_(1 << 20) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": is a directory, not a file");
+  in_.rdbuf()->pubsetbuf(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  in_.open(path, std::ios::binary);
+  if (!in_) throw InputError(path + ": cannot open file for reading");
+  const auto size = std::filesystem::file_size(path, ec);
+  size_ = ec ? 0 : size;
+}
+
+bool TextFileLines::Next(std::string_view& line, int& line_no) {
+  if (!std::getline(in_, line_)) {
+    if (in_.bad()) throw InputError(file_ + ": read error");
+    return false;
+  }
+  bytes_read_ += line_.size() + 1;
+  line = line_;
+  if (line_no_ == 0 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  line_no = ++line_no_;
+  CheckTextLine(line, file_, line_no);
+  return true;
+}
+
+std::int64_t TextFileLines::CountLines() const {
+  std::ifstream in(file_, std::ios::binary);
+  std::vector<char> block(1 << 20);
+  std::int64_t breaks = 0;
+  char last = '\n';
+  while (in) {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    const auto got = static_cast<size_t>(in.gcount());
+    if (got == 0) break;
+    breaks += std::count(block.data(), block.data() + got, '\n');
+    last = block[got - 1];
+  }
+  return breaks + (last != '\n' ? 1 : 0);
 }
 
 std::string ReadTextFile(const std::string& path) {

@@ -23,7 +23,10 @@ Channel* Dataset::FindMutable(const std::string& name) {
 
 const Channel& Dataset::Get(const std::string& name) const {
   const Channel* c = Find(name);
-  if (c == nullptr) throw InputError("no channel '" + name + "' in the data");
+  if (c == nullptr) {
+    CheckNotText(name);
+    throw InputError("no channel '" + name + "' in the data");
+  }
   return *c;
 }
 
@@ -38,6 +41,7 @@ void Dataset::Set(const std::string& name, Eigen::VectorXd values,
   USVID_CHECK(values.size() == rows() && sampled.size() == rows(), "a channel as long as t");
   for (Eigen::Index i = 0; i < rows(); ++i)
     if (!sampled(i)) values(i) = std::numeric_limits<double>::quiet_NaN();
+  std::erase_if(text_columns_, [&](const TextColumn& c) { return c.name == name; });
   if (Channel* c = FindMutable(name)) {
     c->values = std::move(values);
     c->sampled = std::move(sampled);
@@ -75,6 +79,7 @@ Dataset Dataset::Rows(Eigen::Index first, Eigen::Index count) const {
   USVID_CHECK(first >= 0 && count >= 0 && first + count <= rows(), "rows within the record");
   Dataset out(t_.segment(first, count));
   out.metadata_ = metadata_;
+  out.text_columns_ = text_columns_;
   for (const Channel& c : channels_)
     out.channels_.push_back({c.name, c.values.segment(first, count), c.sampled.segment(first, count)});
   return out;
@@ -83,6 +88,17 @@ Dataset Dataset::Rows(Eigen::Index first, Eigen::Index count) const {
 void Dataset::SetTime(Eigen::VectorXd t) {
   USVID_CHECK(t.size() == rows() || channels_.empty(), "a time base as long as the channels");
   t_ = std::move(t);
+}
+
+std::string Dataset::TextColumn::Error() const {
+  return where + ": column '" + name + "': '" + text + "' is not a number";
+}
+
+void Dataset::AddTextColumn(TextColumn column) { text_columns_.push_back(std::move(column)); }
+
+void Dataset::CheckNotText(const std::string& name) const {
+  for (const TextColumn& c : text_columns_)
+    if (c.name == name) throw InputError(c.Error());
 }
 
 std::string Dataset::Source() const {

@@ -31,7 +31,8 @@ class Dataset {
   const std::vector<Channel>& channels() const { return channels_; }
   bool Has(const std::string& name) const { return Find(name) != nullptr; }
   const Channel* Find(const std::string& name) const;
-  // Throws InputError naming the missing channel.
+  // Throws InputError naming the missing channel, or, for a text column, the file:line:column of
+  // its first text.
   const Channel& Get(const std::string& name) const;
   const Eigen::VectorXd& operator[](const std::string& name) const { return Get(name).values; }
 
@@ -48,6 +49,21 @@ class Dataset {
   Dataset Rows(Eigen::Index first, Eigen::Index count) const;
   void SetTime(Eigen::VectorXd t);
 
+  // Columns of the file that held text where a number was expected first (a mode, a comment):
+  // kept aside by name with the located error a command that needs one as a number throws.
+  struct TextColumn {
+    std::string name;
+    std::string where;  // "file:line:column" of its first text
+    std::string text;   // that text
+    // "file:line:column: column 'NAME': 'text' is not a number"
+    std::string Error() const;
+  };
+  void AddTextColumn(TextColumn column);
+  const std::vector<TextColumn>& text_columns() const { return text_columns_; }
+  // Throws the text column's InputError when `name` is one; for the checks that say themselves
+  // what is missing ("no channel 'x' for ...") before they do.
+  void CheckNotText(const std::string& name) const;
+
   // The file the data came from (metadata "source"), or ""; SourcePrefix is "FILE: " or "", to
   // start an error message about the data with.
   std::string Source() const;
@@ -61,6 +77,7 @@ class Dataset {
 
   Eigen::VectorXd t_;
   std::vector<Channel> channels_;
+  std::vector<TextColumn> text_columns_;
   std::map<std::string, std::string> metadata_;
 };
 

@@ -426,8 +426,10 @@ Eigen::VectorXd Expression::Evaluate(const Dataset& data) const {
   channels.reserve(variables_.size());
   for (const std::string& name : variables_) {
     const Channel* channel = data.Find(name);
-    if (channel == nullptr)
+    if (channel == nullptr) {
+      data.CheckNotText(name);
       throw InputError(where_ + ": channel " + Quote(name) + " is not in the data");
+    }
     channels.push_back(channel);
   }
   const Eigen::Index rows = data.rows();

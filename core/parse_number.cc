@@ -13,11 +13,19 @@ std::string_view Trim(std::string_view s) {
   return s;
 }
 
+// nan, inf or infinity (any case, optionally signed; from_chars's nan(chars) too): a number that
+// is not finite. Text that only starts so ("info", "nano") is not a number at all.
 bool LooksNonFinite(std::string_view s) {
   if (!s.empty() && (s.front() == '-' || s.front() == '+')) s.remove_prefix(1);
-  auto lower = [](char c) { return static_cast<char>(c | 0x20); };
-  return s.size() >= 3 && ((lower(s[0]) == 'n' && lower(s[1]) == 'a' && lower(s[2]) == 'n') ||
-                           (lower(s[0]) == 'i' && lower(s[1]) == 'n' && lower(s[2]) == 'f'));
+  auto is = [&](std::string_view word) {
+    if (s.size() != word.size()) return false;
+    for (size_t i = 0; i < s.size(); ++i)
+      if (static_cast<char>(s[i] | 0x20) != word[i]) return false;
+    return true;
+  };
+  const bool nan_chars = s.size() >= 5 && (s.substr(0, 4) == "nan(" || s.substr(0, 4) == "NAN(") &&
+                         s.back() == ')';
+  return is("nan") || is("inf") || is("infinity") || nan_chars;
 }
 
 }  // namespace

@@ -115,11 +115,16 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
   const EquationModel system(model, [&](const std::string& c) { return data.Has(c); });
   const std::vector<std::string>& channels = system.Channels();
   for (const std::string& c : channels)
-    if (c != "north" && c != "east" && !data.Has(c))
+    if (c != "north" && c != "east" && !data.Has(c)) {
+      data.CheckNotText(c);
       throw InputError("data: no channel '" + c + "' for the model's free run");
+    }
   std::vector<const Eigen::VectorXd*> inputs;
   for (const std::string& name : system.Inputs()) {
-    if (!data.Has(name)) throw InputError("data: no channel '" + name + "' used by the model");
+    if (!data.Has(name)) {
+      data.CheckNotText(name);
+      throw InputError("data: no channel '" + name + "' used by the model");
+    }
     inputs.push_back(&data[name]);
   }
   const auto n = static_cast<Eigen::Index>(channels.size());

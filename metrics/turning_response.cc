@@ -92,8 +92,10 @@ TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
                                const std::string& rudder, const std::string& north,
                                const std::string& east) {
   for (const std::string& c : {heading, rudder, north, east})
-    if (!data.Has(c))
+    if (!data.Has(c)) {
+      data.CheckNotText(c);
       throw InputError(data.SourcePrefix() + "turning circle: no channel '" + c + "'");
+    }
   const Eigen::VectorXd& t = data.t();
   const Samples delta = Sampled(t, data[rudder]);
   double largest = 0.0;

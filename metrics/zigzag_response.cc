@@ -11,7 +11,10 @@ ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const st
                              const std::string& rudder) {
   constexpr double kDeg = std::numbers::pi / 180.0;
   for (const std::string& c : {heading, rudder})
-    if (!data.Has(c)) throw InputError(data.SourcePrefix() + "zig-zag: no channel '" + c + "'");
+    if (!data.Has(c)) {
+      data.CheckNotText(c);
+      throw InputError(data.SourcePrefix() + "zig-zag: no channel '" + c + "'");
+    }
   const Eigen::VectorXd& psi = data[heading];
   const Eigen::VectorXd& delta = data[rudder];
   const Eigen::VectorXd& t = data.t();

@@ -302,7 +302,10 @@ double SteepestSlope(const Record& r, double dt) {
 const Channel& Checked(const Dataset& data, const std::string& name, const std::string& what,
                        bool varying) {
   const Channel* c = data.Find(name);
-  if (c == nullptr) throw InputError(what + "the data have no channel '" + name + "'");
+  if (c == nullptr) {
+    data.CheckNotText(name);
+    throw InputError(what + "the data have no channel '" + name + "'");
+  }
   double low = INFINITY, high = -INFINITY;
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
     if (!c->sampled(k)) continue;

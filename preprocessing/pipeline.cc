@@ -26,7 +26,10 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
   if (data.rows() < 10) throw InputError("preprocess: the data need at least 10 rows");
   for (const auto& names : {states, inputs})
     for (const std::string& n : names)
-      if (!data.Has(n)) throw InputError("preprocess: no channel '" + n + "' in the data");
+      if (!data.Has(n)) {
+        data.CheckNotText(n);
+        throw InputError("preprocess: no channel '" + n + "' in the data");
+      }
   PreparedData out;
   ResampleOptions ro;
   ro.rate_hz = options.rate_hz > 0 ? options.rate_hz : NativeRate(data);

@@ -1,21 +1,24 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (preset fuzz: clang 14, ASan + UBSan) and runs each for SECONDS
-# (default 60) on a copy of its seed corpus (tests/fuzz_corpus/NAME); a crash, a sanitizer report
-# or an escaped exception fails the run and leaves the input in OUT (default build-fuzz/runs).
+# Builds the libFuzzer targets in the sanitize preset's tree (clang 14, ASan + UBSan; after
+# `cmake --workflow --preset sanitize` only the three fuzzers are left to link) and runs each for
+# SECONDS (default 60) on a copy of its seed corpus (tests/fuzz_corpus/NAME); a crash, a sanitizer
+# report or an escaped exception fails the run and leaves the input in OUT (default
+# build-sanitize/fuzz-runs).
 #   tools/fuzz.sh [SECONDS] [OUT]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
-out=${2:-$root/build-fuzz/runs}
+out=${2:-$root/build-sanitize/fuzz-runs}
 cd "$root"
-cmake --workflow --preset fuzz >/dev/null
+cmake --preset sanitize >/dev/null
+cmake --build build-sanitize --target csv_fuzzer expression_fuzzer suite_fuzzer >/dev/null
 mkdir -p "$out"
 for name in csv expression suite; do
   corpus="$out/$name-corpus"
   rm -rf "$corpus" && mkdir -p "$corpus"
   cp "$root/tests/fuzz_corpus/$name"/* "$corpus/"
   echo "fuzz: $name for ${seconds} s" >&2
-  "$root/build-fuzz/fuzz/${name}_fuzzer" -max_total_time="$seconds" -max_len=4096 \
+  "$root/build-sanitize/fuzz/${name}_fuzzer" -max_total_time="$seconds" -max_len=4096 \
     -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" 2> "$out/$name.log" ||
     { tail -40 "$out/$name.log" >&2; echo "fuzz: $name FAILED (log $out/$name.log)" >&2; exit 1; }
   grep -E "stat::number_of_executed_units|Done [0-9]+ runs" "$out/$name.log" | tail -2 >&2

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "apps/usvid/commands.h"
+#include "apps/usvid/data_file.h"
 #include "core/atomic_file.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
@@ -34,7 +35,7 @@ bool Varies(const Dataset& data, const std::string& name) {
 }
 
 void RunActuators(const ActuatorsCommandOptions& o) {
-  const Dataset data = ReadDatasetCsv(o.data);
+  const Dataset data = ReadDataFile(o.data, "usvid actuators");
   ActuatorOptions options;
   options.max_delay_s = o.max_delay_s;
   std::vector<ActuatorModel> models;

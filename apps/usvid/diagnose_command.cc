@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "apps/usvid/commands.h"
+#include "apps/usvid/data_file.h"
 #include "core/atomic_file.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
@@ -39,7 +40,7 @@ void RunDiagnose(const DiagnoseCliOptions& o) {
   if (!o.params.empty()) options.base_effects = EffectsOfFile(o.params);
   if (options.max_causes < 1) throw InputError("--causes must be at least 1");
   if (o.threads < 0) throw InputError("--threads must be 0 (all cores) or more");
-  const Dataset data = ReadDatasetCsv(o.data);
+  const Dataset data = ReadDataFile(o.data, "usvid diagnose");
   EnsureOutputDirectory(o.out);
   const diagnosis::Diagnosis d = diagnosis::Diagnose(data, o.vessel, params, options, &std::cerr);
   diagnosis::WriteDiagnosisReport(d, o.out);

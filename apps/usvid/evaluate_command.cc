@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "apps/usvid/commands.h"
+#include "apps/usvid/data_file.h"
 #include "apps/usvid/preprocess_options.h"
 #include "core/atomic_file.h"
 #include "core/csv_dataset.h"
@@ -34,7 +35,7 @@ struct EvaluateOptions {
 void RunEvaluate(const EvaluateOptions& o) {
   const nlohmann::json model = ReadJsonFile(o.model);
   if (!model.is_object()) throw InputError(o.model + ": expected a JSON object");
-  Dataset data = ReadDatasetCsv(o.data);
+  Dataset data = ReadDataFile(o.data, "usvid evaluate");
   SimulateMissingActuators(data, o.actuators);
   Evaluation e;
   try {

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "apps/usvid/commands.h"
+#include "apps/usvid/data_file.h"
 #include "apps/usvid/preprocess_options.h"
 #include "core/atomic_file.h"
 #include "core/csv_dataset.h"
@@ -42,7 +43,7 @@ void RunIdentify(const IdentifyOptions& o) {
     if (r.vessel.empty()) throw InputError("--params: needs --vessel");
     r.start_params = FindVessel(r.vessel).Info().ParamsFromFile(o.params);
   }
-  Dataset data = ReadDatasetCsv(o.data);
+  Dataset data = ReadDataFile(o.data, "usvid identify");
   SimulateMissingActuators(data, o.pre.actuators);
   const nlohmann::json model = Identify(
       data, r, [](const std::string& line) { std::cerr << "usvid identify: " << line << '\n'; });

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "apps/usvid/commands.h"
+#include "apps/usvid/data_file.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "metrics/zigzag_response.h"
@@ -40,7 +41,7 @@ struct InfoOptions {
 
 void RunInfo(const InfoOptions& o) {
   const std::string& path = o.data;
-  const Dataset d = ReadDatasetCsv(path);
+  const Dataset d = ReadDataFile(path, "usvid info");
   std::printf("%s: %ld rows, t from %g to %g s (%g s)\n", path.c_str(), static_cast<long>(d.rows()),
               d.t()(0), d.t()(d.rows() - 1), d.duration());
   std::printf("%-16s %9s %10s %14s %14s\n", "channel", "samples", "rate [Hz]", "min", "max");
@@ -55,6 +56,8 @@ void RunInfo(const InfoOptions& o) {
     std::printf("%-16s %9ld %10.4g %14.6g %14.6g\n", c.name.c_str(), n, gap > 0 ? 1.0 / gap : 0.0,
                 lo, hi);
   }
+  for (const Dataset::TextColumn& c : d.text_columns())
+    std::printf("%-16s %9s\n", c.name.c_str(), "text");
   if (o.zigzag_deg > 0) {
     const ZigzagResponse z = AnalyseZigzag(d, o.zigzag_deg, o.heading, o.rudder);
     std::printf("zig-zag (heading threshold %g deg): executed at %g s, first turn to %s\n",

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "apps/usvid/commands.h"
+#include "apps/usvid/data_file.h"
 #include "apps/usvid/preprocess_options.h"
 #include "core/csv_dataset.h"
 #include "preprocessing/pipeline.h"
@@ -23,7 +24,7 @@ struct PreprocessCommandOptions {
 };
 
 void RunPreprocess(const PreprocessCommandOptions& o) {
-  Dataset data = ReadDatasetCsv(o.data);
+  Dataset data = ReadDataFile(o.data, "usvid preprocess");
   SimulateMissingActuators(data, o.flags.actuators);
   AddForces(data, o.flags.forces);
   const PreparedData prepared = Preprocess(data, o.states, o.inputs, o.flags.Options());

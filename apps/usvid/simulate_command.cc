@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "apps/usvid/commands.h"
+#include "apps/usvid/data_file.h"
 #include "core/atomic_file.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
@@ -89,7 +90,7 @@ void RunSimulate(const SimulateOptions& o) {
               << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
     result = sim.RunManeuver(*maneuver, params, values, run);
   } else {
-    const Dataset in = ReadDatasetCsv(o.inputs);
+    const Dataset in = ReadDataFile(o.inputs, "usvid simulate");
     result = sim.RunInputs(in, params, values, run);
     truth["inputs_file"] = o.inputs;
   }

@@ -118,7 +118,10 @@ void CheckOptions(const SindyOptions& o) {
 }
 
 void CheckChannel(const Dataset& data, const std::string& name) {
-  if (!data.Has(name)) throw InputError("sindy: no channel '" + name + "' in the prepared data");
+  if (!data.Has(name)) {
+    data.CheckNotText(name);
+    throw InputError("sindy: no channel '" + name + "' in the prepared data");
+  }
   if (!data[name].allFinite())
     throw InputError("sindy: channel '" + name + "' has missing or non-finite values");
 }

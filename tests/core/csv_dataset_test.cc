@@ -5,8 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+#include <vector>
 
 #include "core/error.h"
+#include "core/parse_number.h"
 
 namespace usvid {
 namespace {
@@ -52,7 +57,11 @@ INSTANTIATE_TEST_SUITE_P(
         MalformedCase{"LongRow", "t,x\n0,1,2\n", "f.csv:2:5: ", "long row: 3 cells"},
         MalformedCase{"SemicolonSeparator", "t;x\n0;1\n", "f.csv:1:2: ", "wrong separator"},
         MalformedCase{"TabSeparator", "t\tx\n0\t1\n", "f.csv:1:2: ", "wrong separator"},
-        MalformedCase{"DecimalComma", "t,x\n0,\"1,5\"\n", "f.csv:2:3: ", "not a number"},
+        MalformedCase{"DecimalCommaInTime", "t,x\n\"0,5\",1\n", "f.csv:2:1: ", "not a number"},
+        MalformedCase{"TextAfterNumbers", "t,x\n0,1\n1,2\n2,fast\n", "f.csv:4:3: ",
+                      "column 'x': 'fast' is not a number"},
+        MalformedCase{"NanInTextLookingColumn", "t,x\n0,\n1,NaN\n", "f.csv:3:3: ",
+                      "not a finite number"},
         MalformedCase{"BinaryBytes", std::string("t,x\n0,1\n1,\x01\x02\xff\n", 13),
                       "f.csv:3:3: ", "binary byte 0x01"},
         MalformedCase{"NulByte", std::string("t,x\n0,1\0\n", 9), "f.csv:2:4: ", "binary byte 0x00"},
@@ -114,6 +123,107 @@ TEST_F(CsvDatasetTest, RoundTripIsExact) {
   EXPECT_EQ(back.Get("x").sampled.matrix(), s.matrix());
   EXPECT_EQ(back["x"](0), x(0));
   EXPECT_EQ(back["x"](2), x(2));
+}
+
+// A column whose first value is text (a mode, a comment) is kept aside, not refused: the other
+// columns read as numbers, and only asking for it as a number throws, with where its text stood.
+TEST_F(CsvDatasetTest, TextColumnIsKeptAsideAndRefusedOnlyWhenNeeded) {
+  const Dataset d = ParseDatasetCsv(
+      "t,u,mode,comment\n0,1,,start\n1,2,auto,x\n2,3,3,\"1,5\"\n", "f.csv");
+  EXPECT_EQ(d.rows(), 3);
+  EXPECT_DOUBLE_EQ(d["u"](2), 3.0);
+  EXPECT_FALSE(d.Has("mode"));
+  EXPECT_FALSE(d.Has("comment"));
+  ASSERT_EQ(d.text_columns().size(), 2u);
+  EXPECT_EQ(d.text_columns()[0].name, "mode");
+  try {
+    d.Get("mode");
+    FAIL() << "a text column read as a number";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "f.csv:3:5: column 'mode': 'auto' is not a number");
+  }
+  EXPECT_THROW(d.CheckNotText("comment"), InputError);
+  EXPECT_NO_THROW(d.CheckNotText("u"));
+  // A window of the record keeps the note of where the text stood.
+  EXPECT_THROW(d.Rows(1, 2).Get("comment"), InputError);
+}
+
+// Text that only starts like nan or inf ("info", "nano") is text, not a non-finite number.
+TEST_F(CsvDatasetTest, WordsStartingLikeNanOrInfAreText) {
+  EXPECT_EQ(ParseNumber("info").status, NumberStatus::kNotANumber);
+  EXPECT_EQ(ParseNumber("nano").status, NumberStatus::kNotANumber);
+  EXPECT_EQ(ParseNumber("-inf").status, NumberStatus::kNotFinite);
+  EXPECT_EQ(ParseNumber("nan(0x1)").status, NumberStatus::kNotFinite);
+  const Dataset d = ParseDatasetCsv("t,note\n0,info\n1,nano\n", "f.csv");
+  EXPECT_EQ(d.text_columns().size(), 1u);
+}
+
+class CsvFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("usvid_csv_file_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string Write(const std::string& name, const std::string& text) {
+    const auto path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+  }
+  std::filesystem::path dir_;
+};
+
+// The file is streamed, not read whole, and gives what parsing the same text gives: values,
+// masks, text columns and the located errors, with CRLF, a byte-order mark and blank lines.
+TEST_F(CsvFileTest, StreamedFileReadsAsItsText) {
+  const std::string text =
+      "\xEF\xBB\xBFt,u,gps,mode\r\n0,1.5,7,a\r\n\r\n0.5,-2,,b\r\n1,3e2,8,c";
+  const std::string path = Write("good.csv", text);
+  const Dataset file = ReadDatasetCsv(path);
+  const Dataset parsed = ParseDatasetCsv(text, path);
+  ASSERT_EQ(file.rows(), 3);
+  EXPECT_EQ(file.t(), parsed.t());
+  EXPECT_EQ(file["u"], parsed["u"]);
+  EXPECT_EQ(file.Get("gps").sampled.matrix(), parsed.Get("gps").sampled.matrix());
+  ASSERT_EQ(file.text_columns().size(), 1u);
+  EXPECT_EQ(file.text_columns()[0].Error(), parsed.text_columns()[0].Error());
+  for (const std::string bad : {"t,u\n0,1\n0,2\n", "t,u\n0,1\n1,2,3\n", "t,u\n0,1\n1,\x01\n"}) {
+    std::string from_file, from_text;
+    try {
+      ReadDatasetCsv(Write("bad.csv", bad));
+    } catch (const InputError& e) {
+      from_file = e.what();
+    }
+    try {
+      ParseDatasetCsv(bad, (dir_ / "bad.csv").string());
+    } catch (const InputError& e) {
+      from_text = e.what();
+    }
+    EXPECT_FALSE(from_file.empty());
+    EXPECT_EQ(from_file, from_text);
+  }
+  EXPECT_THROW(ReadDatasetCsv(Write("empty.csv", "")), InputError);
+  EXPECT_THROW(ReadDatasetCsv(dir_.string()), InputError);
+}
+
+// A long read reports its progress, in order, ending with every row.
+TEST_F(CsvFileTest, ReportsProgressInOrder) {
+  std::string text = "t,u\n";
+  for (int i = 0; i < 5000; ++i) text += std::to_string(i) + "," + std::to_string(i % 7) + "\n";
+  std::vector<std::pair<double, Eigen::Index>> seen;
+  CsvReadOptions options;
+  options.progress = [&](double f, Eigen::Index rows) { seen.emplace_back(f, rows); };
+  const Dataset d = ReadDatasetCsv(Write("long.csv", text), options);
+  EXPECT_EQ(d.rows(), 5000);
+  ASSERT_GE(seen.size(), 9u);
+  ASSERT_LE(seen.size(), 11u);
+  for (size_t k = 1; k < seen.size(); ++k) {
+    EXPECT_GT(seen[k].first, seen[k - 1].first);
+    EXPECT_GT(seen[k].second, seen[k - 1].second);
+  }
+  EXPECT_NEAR(seen.back().first, 1.0, 1e-9);
+  EXPECT_EQ(seen.back().second, 5000);
 }
 
 }  // namespace
