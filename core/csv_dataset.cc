@@ -45,7 +45,7 @@ struct ColumnBuilder {
   std::string name;
   Eigen::VectorXd values;
   Eigen::Array<bool, Eigen::Dynamic, 1> sampled;
-  bool numeric = false;  // a number seen
+  bool numeric = false;                     // a number seen
   std::optional<Dataset::TextColumn> text;  // set: a text column
 };
 
@@ -120,9 +120,9 @@ Dataset ParseLines(Lines& lines, const CsvReadOptions& options) {
           col.sampled = Eigen::Array<bool, Eigen::Dynamic, 1>();
           continue;
         }
-        throw InputError(Located(
-            file, row.line, f.column,
-            "column '" + col.name + "': " + DescribeNumberStatus(p.status, f.text)));
+        throw InputError(
+            Located(file, row.line, f.column,
+                    "column '" + col.name + "': " + DescribeNumberStatus(p.status, f.text)));
       }
       col.numeric = true;
       col.sampled(n) = true;
@@ -131,11 +131,11 @@ Dataset ParseLines(Lines& lines, const CsvReadOptions& options) {
     const Eigen::VectorXd& t = columns[t_col].values;
     if (n > 0 && t(n) <= t(n - 1)) {
       const bool equal = t(n) == t(n - 1);
-      throw InputError(Located(
-          file, row.line, row.fields[t_col].column,
-          "t = " + FormatNumber(t(n)) + (equal ? " repeats" : " goes back from") +
-              " the previous t = " + FormatNumber(t(n - 1)) +
-              "; t must be strictly increasing (usvid import repairs such logs)"));
+      throw InputError(
+          Located(file, row.line, row.fields[t_col].column,
+                  "t = " + FormatNumber(t(n)) + (equal ? " repeats" : " goes back from") +
+                      " the previous t = " + FormatNumber(t(n - 1)) +
+                      "; t must be strictly increasing (usvid import repairs such logs)"));
     }
     ++n;
     ReportProgress(options, lines.bytes_read(), lines.size(), n, next_progress);

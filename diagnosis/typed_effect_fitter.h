@@ -16,6 +16,7 @@
 #include "diagnosis/reset_rollout.h"
 #include "diagnosis/segment_cost.h"
 #include "methods/parameter_sd.h"
+#include "methods/schur_covariance.h"
 
 namespace usvid::diagnosis {
 
@@ -201,14 +202,8 @@ class TypedEffectFitter : public EffectFitter {
       fit.message = std::string("ceres ") +
                     ceres::TerminationTypeToString(summary.termination_type) + ": " +
                     summary.message;
-      ceres::Covariance::Options co;
-      ceres::Covariance covariance(co);
-      std::vector<std::pair<const double*, const double*>> blocks = {{theta.data(), theta.data()}};
-      if (covariance.Compute(blocks, &problem)) {
-        double c[K * K];
-        covariance.GetCovarianceBlock(theta.data(), theta.data(), c);
-        fit.sd = ParameterSds(c, K, summary);
-      }
+      Eigen::MatrixXd c;  // segment by segment: a long log's Jacobian is never whole
+      if (SchurCovariance(problem, theta.data(), &c)) fit.sd = ParameterSds(c.data(), K, summary);
     }
     EffectValues<double> e = data.base;
     ApplySizes(search, theta.data(), e);

@@ -18,14 +18,13 @@ std::string FeatureMethods() {
 
 }  // namespace
 
-nlohmann::json Identify(const Dataset& recorded, const IdentifyRequest& o, const Logger& log) {
+nlohmann::json Identify(Dataset data, const IdentifyRequest& o, const Logger& log) {
   const Method& method = FindMethod(o.method);
   if (!method.regime_features && o.features != "auto")
     throw InputError("--features: only " + FeatureMethods() + " take regime features");
   if (o.fit_mode != "simulation" && o.fit_mode != "equation")
     throw InputError("--fit '" + o.fit_mode + "': unknown (known: simulation, equation)");
   // Speed and course where only body velocities were logged (the 2-DOF models need them).
-  Dataset data = recorded;
   AddSpeedAndCourse(data);
   AddForces(data, o.preprocess.forces);
   return method.identify(data, o, log);

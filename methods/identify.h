@@ -14,8 +14,8 @@
 namespace usvid {
 
 // Throws InputError for an unknown method or a combination it cannot fit. `log` receives
-// progress lines (may be empty).
-nlohmann::json Identify(const Dataset& data, const IdentifyRequest& request,
-                        const Logger& log = {});
+// progress lines (may be empty). The data are taken by value: a caller done with them moves
+// them in, and a long log is not held twice while derived channels are added.
+nlohmann::json Identify(Dataset data, const IdentifyRequest& request, const Logger& log = {});
 
 }  // namespace usvid

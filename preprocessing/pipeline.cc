@@ -34,6 +34,9 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
   ResampleOptions ro;
   ro.rate_hz = options.rate_hz > 0 ? options.rate_hz : NativeRate(data);
   ro.interpolation = options.interpolation;
+  // Only the channels used: a long log's other channels are not copied onto the grid.
+  ro.channels = states;
+  ro.channels.insert(ro.channels.end(), inputs.begin(), inputs.end());
   ResampleReport report;
   Dataset grid = Resample(data, ro, &report);
   // Rows where any used channel is missing (ends, long gaps) are dropped.

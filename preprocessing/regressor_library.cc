@@ -10,35 +10,31 @@ RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
   const Eigen::Index n = !states.empty()   ? states[0].values.size()
                          : !inputs.empty() ? inputs[0].values.size()
                                            : 0;
+  // The columns are written straight into the matrix, in the order of their names: a long
+  // record's library is held once, not also as a list of columns.
   std::vector<std::string> names;
-  std::vector<Eigen::VectorXd> cols;
-  if (options.constant) {
-    names.push_back("1");
-    cols.push_back(Eigen::VectorXd::Ones(n));
-  }
-  for (const NamedSignal& x : states) {
-    names.push_back(x.name);
-    cols.push_back(x.values);
-  }
-  if (options.products) {
+  if (options.constant) names.push_back("1");
+  for (const NamedSignal& x : states) names.push_back(x.name);
+  if (options.products)
     for (size_t i = 0; i < states.size(); ++i)
-      for (size_t k = i; k < states.size(); ++k) {
+      for (size_t k = i; k < states.size(); ++k)
         names.push_back(states[i].name + "*" + states[k].name);
-        cols.push_back(states[i].values.cwiseProduct(states[k].values));
-      }
-  }
-  if (options.abs_terms) {
-    for (const NamedSignal& x : states) {
-      names.push_back("abs(" + x.name + ")*" + x.name);
-      cols.push_back(x.values.cwiseAbs().cwiseProduct(x.values));
-    }
-  }
-  for (const NamedSignal& u : inputs) {
-    names.push_back(u.name);
-    cols.push_back(u.values);
-  }
-  RegressorLibrary lib{names, Eigen::MatrixXd(n, static_cast<Eigen::Index>(cols.size()))};
-  for (size_t c = 0; c < cols.size(); ++c) lib.columns.col(static_cast<Eigen::Index>(c)) = cols[c];
+  if (options.abs_terms)
+    for (const NamedSignal& x : states) names.push_back("abs(" + x.name + ")*" + x.name);
+  for (const NamedSignal& u : inputs) names.push_back(u.name);
+
+  RegressorLibrary lib{names, Eigen::MatrixXd(n, static_cast<Eigen::Index>(names.size()))};
+  Eigen::Index c = 0;
+  if (options.constant) lib.columns.col(c++).setOnes();
+  for (const NamedSignal& x : states) lib.columns.col(c++) = x.values;
+  if (options.products)
+    for (size_t i = 0; i < states.size(); ++i)
+      for (size_t k = i; k < states.size(); ++k)
+        lib.columns.col(c++) = states[i].values.cwiseProduct(states[k].values);
+  if (options.abs_terms)
+    for (const NamedSignal& x : states)
+      lib.columns.col(c++) = x.values.cwiseAbs().cwiseProduct(x.values);
+  for (const NamedSignal& u : inputs) lib.columns.col(c++) = u.values;
   return lib;
 }
 

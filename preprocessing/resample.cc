@@ -40,6 +40,10 @@ Dataset Resample(const Dataset& data, const ResampleOptions& options, ResampleRe
   out.metadata() = data.metadata();
 
   for (const Channel& c : data.channels()) {
+    if (!options.channels.empty() &&
+        std::find(options.channels.begin(), options.channels.end(), c.name) ==
+            options.channels.end())
+      continue;
     std::vector<double> ts, ys;
     for (Eigen::Index i = 0; i < data.rows(); ++i)
       if (c.sampled(i)) {

@@ -19,6 +19,8 @@ struct ResampleOptions {
   // Longest stretch between two samples that is interpolated across; <= 0: four times the
   // channel's median sample interval.
   double max_gap_s = 0.0;
+  // The channels to resample; empty: every channel. The others are left out of the result.
+  std::vector<std::string> channels;
 };
 
 struct ChannelResampling {

@@ -103,11 +103,11 @@ py::dict Identify(const py::dict& data, const std::string& method, const py::obj
   IdentifyRequest request = MethodRequest({method, options}, vessel_name, seed);
   request.threads = threads;
   request.data_name = "python";
-  const Dataset d = ToDataset(data);
+  Dataset d = ToDataset(data);
   nlohmann::json model;
   {
     py::gil_scoped_release release;
-    model = usvid::Identify(d, request);
+    model = usvid::Identify(std::move(d), request);
   }
   return FromJson(model);
 }

@@ -45,8 +45,9 @@ void RunIdentify(const IdentifyOptions& o) {
   }
   Dataset data = ReadDataFile(o.data, "usvid identify");
   SimulateMissingActuators(data, o.pre.actuators);
-  const nlohmann::json model = Identify(
-      data, r, [](const std::string& line) { std::cerr << "usvid identify: " << line << '\n'; });
+  const nlohmann::json model = Identify(std::move(data), r, [](const std::string& line) {
+    std::cerr << "usvid identify: " << line << '\n';
+  });
   WriteJsonFile(o.out, model);
   if (model.contains("equations"))
     for (const auto& [state, eq] : model.at("equations").items())
@@ -107,14 +108,16 @@ void AddIdentifyCommand(CLI::App& app) {
                       n(gp_identify_defaults.validation_fraction) + "; 0: none)");
   cmd->add_option("--horizon", o->request.horizon_s,
                   "gp: seconds of each short-horizon simulation that chooses the model and "
-                  "refits its weights (" + n(gp_identify_defaults.horizon_s) + "; " +
-                      n(kRegimeHorizonS) + " on a record with regime features)");
+                  "refits its weights (" +
+                      n(gp_identify_defaults.horizon_s) + "; " + n(kRegimeHorizonS) +
+                      " on a record with regime features)");
   cmd->add_option("--constant-iterations", o->request.constant_iterations,
                   "gp: Levenberg-Marquardt iterations on the constants inside terms, per elite "
-                  "(" + n(gp_defaults.constant_iterations) + "; 0: none)");
-  cmd->add_option("--restarts", o->request.restarts,
-                  "gp: restarts on stagnation before the search stops (" +
-                      n(gp_defaults.restarts) + ")");
+                  "(" +
+                      n(gp_defaults.constant_iterations) + "; 0: none)");
+  cmd->add_option(
+      "--restarts", o->request.restarts,
+      "gp: restarts on stagnation before the search stops (" + n(gp_defaults.restarts) + ")");
   cmd->add_option("--fitness", o->request.fitness, "r2 (with a size penalty) or mse")
       ->check(CLI::IsMember({"r2", "mse"}));
   cmd->add_option("--fit-rows", o->request.fit_rows,

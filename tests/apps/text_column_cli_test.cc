@@ -15,8 +15,8 @@ namespace usvid {
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using testing::FreshTempDir;
+using ::testing::HasSubstr;
 using testing::RunUsvid;
 
 // Appends a column `mode` (text: "auto", "manual") to every row of a data CSV.
@@ -40,8 +40,10 @@ class TextColumnCliTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = FreshTempDir();
-    const auto sim = RunUsvid("simulate --vessel odin3dof --maneuver zigzag:20/20 --duration 60 "
-                              "--out " + (dir_ / "plain.csv").string());
+    const auto sim = RunUsvid(
+        "simulate --vessel odin3dof --maneuver zigzag:20/20 --duration 60 "
+        "--out " +
+        (dir_ / "plain.csv").string());
     ASSERT_EQ(sim.exit_code, 0) << sim.err;
     AddModeColumn(dir_ / "plain.csv", dir_ / "log.csv");
     log_ = (dir_ / "log.csv").string();
@@ -58,10 +60,10 @@ TEST_F(TextColumnCliTest, CommandsThatDoNotUseItAcceptTheLogWithOneNote) {
       "info --data " + log_,
       "identify --method sindy --vessel odin3dof --data " + log_ + " --out " + model,
       "evaluate --model " + model + " --data " + log_ + " --out " + (dir_ / "eval").string(),
-      "preprocess --data " + log_ + " --states u v r --inputs tau_x tau_y tau_n --out " + (dir_ / "pre.csv").string(),
+      "preprocess --data " + log_ + " --states u v r --inputs tau_x tau_y tau_n --out " +
+          (dir_ / "pre.csv").string(),
       "simulate --vessel odin3dof --inputs " + log_ + " --out " + (dir_ / "replay.csv").string(),
-      "diagnose --vessel odin3dof --causes 1 --data " + log_ + " --out " +
-          (dir_ / "diag").string(),
+      "diagnose --vessel odin3dof --causes 1 --data " + log_ + " --out " + (dir_ / "diag").string(),
   };
   for (const std::string& args : commands) {
     SCOPED_TRACE(args);
@@ -70,22 +72,22 @@ TEST_F(TextColumnCliTest, CommandsThatDoNotUseItAcceptTheLogWithOneNote) {
     std::istringstream err(r.err);
     int notes = 0;
     for (std::string line; std::getline(err, line);)
-      if (line.find("note: column 'mode' is text ('auto' at " + log_ + ":2:") !=
-          std::string::npos)
+      if (line.find("note: column 'mode' is text ('auto' at " + log_ + ":2:") != std::string::npos)
         ++notes;
     EXPECT_EQ(notes, 1) << r.err;
   }
   // The text column changes nothing in what is fitted.
-  const auto plain = RunUsvid("identify --method sindy --vessel odin3dof --data " +
-                              (dir_ / "plain.csv").string() + " --out " +
-                              (dir_ / "plain_model.json").string());
+  const auto plain =
+      RunUsvid("identify --method sindy --vessel odin3dof --data " + (dir_ / "plain.csv").string() +
+               " --out " + (dir_ / "plain_model.json").string());
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   const auto equations = [](const fs::path& p) {
     std::ifstream in(p);
     std::stringstream s;
     s << in.rdbuf();
     const std::string text = s.str();
-    return text.substr(text.find("\"equations\""), text.find("\"inputs\"") - text.find("\"equations\""));
+    return text.substr(text.find("\"equations\""),
+                       text.find("\"inputs\"") - text.find("\"equations\""));
   };
   EXPECT_EQ(equations(dir_ / "model.json"), equations(dir_ / "plain_model.json"));
 }
