@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "core/correlation_time.h"
 #include "core/expression.h"
+#include "core/parse_number.h"
 #include "diagnosis/residual_discovery.h"
 #include "simulation/vessel_simulator.h"
 
@@ -103,7 +105,7 @@ std::vector<Candidate> FitCandidates(const MeasuredData& d, const EffectFitter& 
     const auto t0 = std::chrono::steady_clock::now();
     Candidate& c = candidates[i];
     const EffectSearch& search = searches[i];
-    c.fit = fitter.Fit(d, d.train, params, search);
+    c.fit = fitter.Fit(d, d.fit, params, search);
     const Eigen::VectorXd held = fitter.Residuals(d, d.heldout, params, c.fit.effect);
     c.heldout_error = MeanSquaredError(d, d.heldout, held);
     c.heldout_fit_percent = FitPercentOf(d, d.heldout, held);
@@ -198,6 +200,7 @@ Diagnosis Describe(const Dataset& data, const std::string& vessel, const Context
   out.channels = d.channels;
   out.segment_s = d.segment_s;
   out.train_s = d.times[d.train.end - 1] - d.times[d.train.begin];
+  out.fit_s = d.times[d.fit.end - 1] - d.times[d.fit.begin];
   out.heldout_s = d.times[d.heldout.end - 1] - d.times[d.heldout.begin];
   return out;
 }
@@ -257,12 +260,11 @@ void NameFurtherCauses(const Context& cx, const std::vector<EffectSearch>& searc
   }
 }
 
-// The extended model's held-out error and fit, and the held-out series: measured, nominal and
-// extended.
-void MeasureExtended(const Context& cx, const MeasuredData& d, const MeasuredData& extended,
-                     const Eigen::VectorXd& nominal_held, Diagnosis& out) {
-  const Eigen::VectorXd extended_held =
-      cx.fitter.Residuals(extended, extended.heldout, cx.params, std::nullopt);
+// The extended model's held-out error and fit (d: the data with the extended model's base
+// effects), and the held-out series: measured, nominal and extended.
+void MeasureExtended(const Context& cx, const MeasuredData& d, const Eigen::VectorXd& nominal_held,
+                     Diagnosis& out) {
+  const Eigen::VectorXd extended_held = cx.fitter.Residuals(d, d.heldout, cx.params, std::nullopt);
   out.extended_error = MeanSquaredError(d, d.heldout, extended_held);
   out.extended_fit_percent = FitPercentOf(d, d.heldout, extended_held);
   out.heldout_error_reduction =
@@ -294,12 +296,13 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   Diagnosis out = Describe(data, vessel, cx, d);
 
   // 1. Show.
-  const Eigen::VectorXd nominal_all = fitter.ResetResiduals(d, d.all, params, d.base);
   const Eigen::VectorXd nominal_held = fitter.Residuals(d, d.heldout, params, std::nullopt);
   out.nominal_error = MeanSquaredError(d, d.heldout, nominal_held);
   out.nominal_fit_percent = FitPercentOf(d, d.heldout, nominal_held);
   out.noise_floor = NoiseFloor(d);
-  out.residuals = AnalyseResiduals(d, nominal_all, sim.Info().inputs, d.fallback_states);
+  // The whole record's residual is a temporary: on a long log it is gone before the fits.
+  out.residuals = AnalyseResiduals(d, fitter.ResetResiduals(d, d.all, params, d.base),
+                                   sim.Info().inputs, d.fallback_states);
   for (const ChannelResidual& r : out.residuals)
     out.nominal_free_run_fit_percent[r.channel] = r.free_run_fit_percent;
   // The same candidates in every round: the extended model has the same inputs.
@@ -307,7 +310,11 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   if (log)
     *log << "diagnose: " << vessel << ", " << d.rows() << " rows, train " << out.train_s
          << " s, held out " << out.heldout_s << " s; fitting " << searches.size()
-         << " candidate effects\n";
+         << " candidate effects"
+         << (d.fit.begin > d.train.begin
+                 ? " on the training part's last " + FormatNumber(out.fit_s) + " s (--fit-rows)"
+                 : std::string())
+         << "\n";
 
   // 2. Name.
   out.correlation_time = CorrelationTime(d, d.heldout, nominal_held);
@@ -325,12 +332,14 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   const bool found = Passes(best, out.nominal_error, options);
 
   // 3. Extend and measure; name further causes on the extended model while much is left.
-  Extension ext{d, out.nominal_error, 0.0};
+  // The extension takes the measured data over (the copy was the largest block on a long log):
+  // only its base effects change, and the measurements it scores against are the same.
+  Extension ext{std::move(d), out.nominal_error, 0.0};
   if (found) {
     AdoptCause(cx, best, ext, out);
     NameFurtherCauses(cx, searches, ext, out);
   }
-  MeasureExtended(cx, d, ext.model, nominal_held, out);
+  MeasureExtended(cx, ext.model, nominal_held, out);
 
   // What is left: the residual is well above the noise and the causes named leave much of it.
   out.unexplained = visible && (!found || ext.explained < options.min_explained);

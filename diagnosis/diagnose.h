@@ -95,6 +95,8 @@ struct Diagnosis {
   std::vector<double> params;
   std::vector<std::string> channels;
   double train_s = 0.0, heldout_s = 0.0, segment_s = 0.0;
+  double fit_s =
+      0.0;  // the training part's last fit_s seconds fitted the effects (MeasuredData::fit)
 
   FitPercent nominal_fit_percent;  // held-out, segments from estimated initial states
   FitPercent nominal_free_run_fit_percent;

@@ -75,17 +75,19 @@ nlohmann::json DiagnosisToJson(const Diagnosis& d) {
   j["vessel"] = d.vessel;
   j["data"] = d.source;
   j["split"] = {{"train_s", d.train_s},
+                {"fit_s", d.fit_s},
                 {"heldout_s", d.heldout_s},
                 {"segment_s", d.segment_s},
                 {"scored_channels", d.channels}};
-  j[std::string(kNominalMethodName)] = {{"fit_percent", Fits(d.nominal_fit_percent)},
-                  {"heldout_fit_percent", Fits(d.nominal_fit_percent)},
-                  {"free_run_fit_percent", Fits(d.nominal_free_run_fit_percent)},
-                  {"heldout_error", Number(d.nominal_error)},
-                  {"noise_floor_error", Number(d.noise_floor)},
-                  {"correlation_time_samples", Number(d.correlation_time)},
-                  {"effective_samples", Number(d.effective_samples)},
-                  {"effects", Effects(d.base_effects)}};
+  j[std::string(kNominalMethodName)] = {
+      {"fit_percent", Fits(d.nominal_fit_percent)},
+      {"heldout_fit_percent", Fits(d.nominal_fit_percent)},
+      {"free_run_fit_percent", Fits(d.nominal_free_run_fit_percent)},
+      {"heldout_error", Number(d.nominal_error)},
+      {"noise_floor_error", Number(d.noise_floor)},
+      {"correlation_time_samples", Number(d.correlation_time)},
+      {"effective_samples", Number(d.effective_samples)},
+      {"effects", Effects(d.base_effects)}};
   nlohmann::json residuals = nlohmann::json::object();
   for (const ChannelResidual& r : d.residuals) residuals[r.channel] = Residual(r);
   j["residuals"] = residuals;
@@ -157,7 +159,8 @@ nlohmann::json ExtendedModelJson(const Diagnosis& d) {
           {"effects", effects},
           {"train", {{"data", d.source}, {"seconds", d.train_s}}},
           {"heldout_fit_percent",
-           {{std::string(kNominalMethodName), Fits(d.nominal_fit_percent)}, {"extended", Fits(d.extended_fit_percent)}}}};
+           {{std::string(kNominalMethodName), Fits(d.nominal_fit_percent)},
+            {"extended", Fits(d.extended_fit_percent)}}}};
 }
 
 }  // namespace usvid::diagnosis

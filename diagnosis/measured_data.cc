@@ -106,7 +106,8 @@ void SmoothResets(const VesselInfo& info, MeasuredData& d) {
 
 // Split by time: the last heldout_fraction of the record is held out. Throws InputError when
 // either part has fewer than 20 rows.
-void SplitParts(const Dataset& data, double heldout_fraction, MeasuredData& d) {
+void SplitParts(const Dataset& data, double heldout_fraction, Eigen::Index max_fit_rows,
+                MeasuredData& d) {
   const auto n = data.rows();
   const double split_t = d.times.front() + (1.0 - heldout_fraction) * data.duration();
   Eigen::Index split = 0;
@@ -118,6 +119,9 @@ void SplitParts(const Dataset& data, double heldout_fraction, MeasuredData& d) {
   d.all = MakePart(d, 0, n, d.segment_s);
   d.train = MakePart(d, 0, split, d.segment_s);
   d.heldout = MakePart(d, split, n, d.segment_s);
+  const Eigen::Index fit_begin =
+      max_fit_rows > 0 ? std::max<Eigen::Index>(0, split - max_fit_rows) : 0;
+  d.fit = fit_begin == 0 ? d.train : MakePart(d, fit_begin, split, d.segment_s);
 }
 
 // Scale: the RMS change of each channel from its segment's first row.
@@ -194,7 +198,8 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
   if (info.actuation.rate_state >= 0) d.rate_channel = d.state_channel[info.actuation.rate_state];
   if (info.actuation.heading_state >= 0)
     d.heading_channel = d.state_channel[info.actuation.heading_state];
-  SplitParts(data, options.heldout_fraction, d);
+  if (options.max_fit_rows < 0) throw InputError("--fit-rows: must be 0 (all) or more");
+  SplitParts(data, options.heldout_fraction, options.max_fit_rows, d);
   ComputeScales(d);
   FallbackStates(data, sim, nominal_params, d);
   return d;

@@ -30,6 +30,10 @@ struct SimulationRefitOptions {
   double horizon_s = 10.0;  // of each segment
   int max_iterations = 30;
   long fit_rows = 0;  // the weights are fitted on rows [0, fit_rows), checked on the rest
+  // Most rows the fitted segments hold in all: on a long record the segments are spread evenly
+  // over the fit part, so the dense Jacobian (rows x states x weights) stays bounded (a 2-hour
+  // 50 Hz log's took 400 MB). 30000 rows are 25 minutes at 20 Hz: shorter records fit them all.
+  long max_rows = 30000;
 };
 
 struct SimulationRefit {
