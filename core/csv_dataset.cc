@@ -7,7 +7,6 @@
 #include <set>
 
 #include "core/atomic_file.h"
-#include "core/check.h"
 #include "core/csv_tokenizer.h"
 #include "core/error.h"
 #include "core/parse_number.h"
@@ -97,7 +96,8 @@ Dataset ParseLines(Lines& lines, const CsvReadOptions& options) {
                                    " row: " + std::to_string(row.fields.size()) +
                                    " cells, the header has " + std::to_string(ncol)));
     }
-    USVID_CHECK(n < capacity, "no more rows than lines");
+    if (n >= capacity)  // a log still being written
+      throw InputError(Located(file, row.line, 0, "the file grew while it was read"));
     for (size_t c = 0; c < ncol; ++c) {
       ColumnBuilder& col = columns[c];
       if (col.text) continue;
