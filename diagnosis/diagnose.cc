@@ -7,7 +7,6 @@
 
 #include "core/correlation_time.h"
 #include "core/expression.h"
-#include "core/parse_number.h"
 #include "diagnosis/residual_discovery.h"
 #include "simulation/vessel_simulator.h"
 
@@ -312,7 +311,8 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
          << " s, held out " << out.heldout_s << " s; fitting " << searches.size()
          << " candidate effects"
          << (d.fit.begin > d.train.begin
-                 ? " on the training part's last " + FormatNumber(out.fit_s) + " s (--fit-rows)"
+                 ? " on the training part's last " + std::to_string(std::lround(out.fit_s)) +
+                       " s (--fit-rows)"
                  : std::string())
          << "\n";
 

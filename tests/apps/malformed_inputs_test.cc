@@ -173,6 +173,8 @@ const Malformed kCatalogue[] = {
      "/proc/usvid"},
     {"output_is_a_folder", "simulate --vessel odin3dof --maneuver zigzag --out {D}/a_folder",
      "a_folder"},
+    {"diagnose_negative_fit_rows",
+     "diagnose --data {D}/good.csv --vessel odin3dof --fit-rows -1 --out {OUT}", "--fit-rows"},
     {"negative_threads", "diagnose --data {D}/good.csv --vessel odin3dof --threads -1 --out {OUT}",
      "--threads"},
     {"unknown_option", "info --data {D}/good.csv --colour blue", "--colour"},
