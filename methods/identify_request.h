@@ -12,6 +12,13 @@
 
 namespace usvid {
 
+// The most rows a Ceres fit of fossen-ceres, refit or hybrid uses unless --fit-rows says: 20
+// minutes at 50 Hz. Ceres holds the Jacobian of every residual twice over (its block-sparse
+// matrix and a copy with the Levenberg-Marquardt rows appended), about 600 bytes a row for the
+// shooting fits, so a 10-hour log would take gigabytes; 60000 rows are far more than the ten or
+// so parameters need, and shorter records are fitted whole.
+inline constexpr long kCeresFitRows = 60000;
+
 struct IdentifyRequest {
   std::string method;  // a registered method's name (methods/registry.h)
   std::string vessel;  // states and inputs from it (when not given)
@@ -31,6 +38,8 @@ struct IdentifyRequest {
   std::string fitness = "r2";
   // Regime features for gp and sindy (regime_features.h): auto, hinges, froude or none.
   std::string features = "auto";
+  // gp: the rows the search scores on (GpOptions::fit_rows); fossen-ceres, refit and hybrid: the
+  // most rows their Ceres fits use, spread over a longer record (kCeresFitRows); 0: all.
   std::optional<long> fit_rows;
   uint64_t seed = 1;
   int threads = 0;

@@ -36,6 +36,8 @@ struct IdentifyOptions {
 
 void RunIdentify(const IdentifyOptions& o) {
   CheckOutputFile(o.out);
+  if (o.request.fit_rows && *o.request.fit_rows < 0)
+    throw InputError("--fit-rows: must be 0 (all) or more");
   IdentifyRequest r = o.request;
   r.preprocess = o.pre.Options();
   r.data_name = o.data;
@@ -121,7 +123,10 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--fitness", o->request.fitness, "r2 (with a size penalty) or mse")
       ->check(CLI::IsMember({"r2", "mse"}));
   cmd->add_option("--fit-rows", o->request.fit_rows,
-                  "Rows the search scores on (" + n(gp_defaults.fit_rows) + "; 0: all)");
+                  "gp: rows the search scores on (" + n(gp_defaults.fit_rows) +
+                      "); fossen-ceres, refit, hybrid: the most rows the Ceres fits use, spread "
+                      "over a longer record (" +
+                      n(kCeresFitRows) + "); 0: all");
   cmd->add_option("--seed", o->request.seed, "Seed of the search");
   cmd->add_option("--threads", o->request.threads, "OpenMP threads (0: all cores)");
   cmd->add_option("--fit", o->request.fit_mode,

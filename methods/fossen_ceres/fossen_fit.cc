@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/evenly_spread.h"
 #include "core/parse_number.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/fossen_ceres/jet_force_model.h"
@@ -114,7 +115,7 @@ struct SegmentResidual {
   std::vector<double> times;
   Eigen::MatrixXd measured;  // rows x 3 (u, v, r)
   std::array<double, 3> scale;
-  double continuity;  // 0 for the last segment
+  double continuity;  // 0 for the last segment, or one whose successor is not fitted
   std::array<double, Model::kParams> param_scale;
 
   int Residuals() const { return static_cast<int>((times.size() - 1) * 3 + 3); }
@@ -189,20 +190,25 @@ void Solve(ceres::Problem& problem, const FossenOptions& o, double* p,
   for (int i = 0; i < kParams; ++i) fit.params[i] = p[i] * scale[i];
   // Covariance (J^T J)^-1 s^2 from the Jacobian at the solution with respect to the parameters
   // alone (their tangent space: a held parameter has no column; for multiple shooting it is
-  // conditional on the segments' initial states). Dense and O(residuals x parameters^2):
-  // ceres::Covariance went through a sparse QR of the whole problem, the fit's largest cost on
-  // long records.
-  ceres::Problem::EvaluateOptions eo;
-  eo.parameter_blocks = {p};
-  ceres::CRSMatrix jacobian;
-  double cost = 0.0;
-  if (!problem.Evaluate(eo, &cost, nullptr, nullptr, &jacobian)) return;
-  const int n = jacobian.num_cols;
+  // conditional on the segments' initial states), summed a residual block at a time:
+  // ceres::Covariance's sparse QR of the whole problem was the fit's largest cost on long
+  // records, and the whole Jacobian as a CRSMatrix (with Ceres' own copy) 70 MB on 100000 rows.
+  const int n = problem.ParameterBlockTangentSize(p);
   Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(n, n);
-  for (int row = 0; row < jacobian.num_rows; ++row)
-    for (int a = jacobian.rows[row]; a < jacobian.rows[row + 1]; ++a)
-      for (int b = jacobian.rows[row]; b < jacobian.rows[row + 1]; ++b)
-        normal(jacobian.cols[a], jacobian.cols[b]) += jacobian.values[a] * jacobian.values[b];
+  std::vector<ceres::ResidualBlockId> ids;
+  problem.GetResidualBlocksForParameterBlock(p, &ids);
+  for (const ceres::ResidualBlockId id : ids) {
+    std::vector<double*> blocks;
+    problem.GetParameterBlocksForResidualBlock(id, &blocks);
+    const int m = problem.GetCostFunctionForResidualBlock(id)->num_residuals();
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> j(m, n);
+    std::vector<double*> jacobians(blocks.size(), nullptr);  // only p's (the others held)
+    for (size_t b = 0; b < blocks.size(); ++b)
+      if (blocks[b] == p) jacobians[b] = j.data();
+    double cost = 0.0;
+    if (!problem.EvaluateResidualBlock(id, true, &cost, nullptr, jacobians.data())) return;
+    normal.noalias() += j.transpose() * j;
+  }
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(normal);
   if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0).all()) return;
   const Eigen::MatrixXd c = ldlt.solve(Eigen::MatrixXd::Identity(n, n));
@@ -265,7 +271,12 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
   // acts on a block's squared norm). Ceres' cost per block, not per residual, made 100k blocks
   // of 3 residuals cost 15 times 10k.
   const Eigen::Index batch = options.robust ? 1 : EquationBatch<Model>::kBatch;
-  for (Eigen::Index first = 0; first < d.rows(); first += batch) {
+  const long batches = static_cast<long>((d.rows() + batch - 1) / batch);
+  long rows = 0;
+  for (const long b : EvenlySpread(batches, options.max_rows > 0
+                                                ? std::max<long>(1, options.max_rows / batch)
+                                                : 0)) {
+    const Eigen::Index first = b * batch;
     auto* functor = new EquationBatch<Model>;
     for (Eigen::Index k = first; k < std::min(d.rows(), first + batch); ++k) {
       std::array<double, Model::kInputs> input;
@@ -273,6 +284,7 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
       functor->samples.push_back({d["u"](k), d["v"](k), d["r"](k), d["u_dot"](k), d["v_dot"](k),
                                   d["r_dot"](k), input, scale, param_scale});
     }
+    rows += static_cast<long>(functor->samples.size());
     const int residuals = static_cast<int>(3 * functor->samples.size());
     problem.AddResidualBlock(
         new ceres::AutoDiffCostFunction<EquationBatch<Model>, ceres::DYNAMIC, kParams>(functor,
@@ -285,6 +297,7 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
   // shooting fit that follows starts from the solution moved inside them.
   if constexpr (!Model::kLinearEquationError) Bound<Model>(problem, p.data(), param_scale);
   BasicFossenFit<kParams> fit;
+  fit.rows = rows;
   Solve<Model>(problem, options, p.data(), param_scale, fit);
   if constexpr (Model::kLinearEquationError)
     for (int i = 0; i < kParams; ++i)
@@ -328,7 +341,20 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
   for (int i = 0; i < kParams; ++i) p[i] = start[i] / param_scale[i];
   ceres::Problem problem;
   ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;
+  // The segments fitted: all, or on a record longer than max_rows a share spread over it.
+  const double rows_per_segment =
+      static_cast<double>(d.rows()) / static_cast<double>(std::max<size_t>(1, segments));
+  std::vector<bool> fitted(segments + 1, false);
+  for (const long j : EvenlySpread(
+           static_cast<long>(segments),
+           options.max_rows > 0
+               ? std::max<long>(1, std::lround(static_cast<double>(options.max_rows) /
+                                               rows_per_segment))
+               : 0))
+    fitted[static_cast<size_t>(j)] = true;
+  long rows = 0;
   for (size_t j = 0; j < segments; ++j) {
+    if (!fitted[j]) continue;
     auto* seg = new SegmentResidual<Model>;
     seg->track = &track;
     for (Eigen::Index k = bounds[j]; k <= bounds[j + 1]; ++k) seg->times.push_back(d.t()(k));
@@ -336,18 +362,21 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
     for (Eigen::Index k = bounds[j]; k <= bounds[j + 1]; ++k)
       seg->measured.row(k - bounds[j]) << d["u_raw"](k), d["v_raw"](k), d["r_raw"](k);
     seg->scale = scale;
-    seg->continuity = j + 1 < segments ? options.continuity_weight : 0.0;
+    seg->continuity = fitted[j + 1] ? options.continuity_weight : 0.0;
     seg->param_scale = param_scale;
+    rows += static_cast<long>(seg->times.size()) - 1;
     const int residuals = seg->Residuals();
     auto* cost =
         new ceres::AutoDiffCostFunction<SegmentResidual<Model>, ceres::DYNAMIC, kParams, 3, 3>(
             seg, residuals);
     problem.AddResidualBlock(cost, loss, p.data(), x0[j].data(), x0[j + 1].data());
+    // The end of the record, or a start that is not fitted: no residual of its own.
+    if (!fitted[j + 1]) problem.SetParameterBlockConstant(x0[j + 1].data());
   }
-  problem.SetParameterBlockConstant(x0[segments].data());
   AddPenalty<Model>(problem, p.data(), param_scale, Sd(d[std::string(Model::kInputNames[0])]));
   Bound<Model>(problem, p.data(), param_scale);
   BasicFossenFit<kParams> fit;
+  fit.rows = rows;
   Solve<Model>(problem, options, p.data(), param_scale, fit);
   return fit;
 }

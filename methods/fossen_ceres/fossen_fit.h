@@ -13,6 +13,9 @@
 //    free initial velocities, residuals are the simulated minus measured u, v, r (divided by
 //    their standard deviations), and segments are tied by continuity residuals (end of one minus
 //    start of the next, weighted). Ceres differentiates whole rollouts with Jets.
+// On a record longer than max_rows, both fit a share of it spread evenly over the whole: the
+// equation error every k-th batch of consecutive samples, the shooting every k-th segment (a
+// segment whose successor is left out has no continuity residual).
 // Parameters are bounded below (positive, but for those a model says are signed), a Huber loss is
 // optional, and their standard deviations come from (J^T J)^-1 s^2 at the solution. The
 // simulation-error fit starts from the equation-error one.
@@ -43,6 +46,10 @@ struct FossenOptions {
   int max_iterations = 100;
   double function_tolerance = 1e-12;  // Ceres: stop when |cost change| / cost falls below
   int threads = 1;
+  // Most rows the fits use (0: all). On a longer record the equation error's batches and the
+  // shooting segments are spread evenly over it: Ceres holds the Jacobian of every residual, and
+  // a 2-hour 50 Hz log's took 400 MB. Records of this length or shorter are fitted whole.
+  long max_rows = 0;
 };
 
 template <int N>
@@ -54,6 +61,7 @@ struct BasicFossenFit {
   bool converged = false;
   double initial_cost = 0.0, final_cost = 0.0;
   int iterations = 0;
+  long rows = 0;  // the samples fitted (all, or a share of a record longer than max_rows)
   double seconds = 0.0;
 };
 using FossenFit = BasicFossenFit<10>;  // odin3dof: m11 .. Nrr

@@ -27,6 +27,12 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
   fossen::FossenOptions fo;
   fo.segment_s = o.segment_s > 0 ? o.segment_s : 10.0;
   fo.robust = o.robust;
+  fo.max_rows = o.fit_rows.value_or(kCeresFitRows);
+  if (fo.max_rows < 0) throw InputError("--fit-rows: must be 0 (all) or more");
+  if (fo.max_rows > 0 && prepared.data.rows() > fo.max_rows)
+    Log(log, "fitting " + std::to_string(fo.max_rows) + " of " +
+                 std::to_string(prepared.data.rows()) +
+                 " rows, spread over the record (--fit-rows)");
   // One thread for Ceres: its parallel evaluation sums the cost in a thread-dependent order, and
   // the last digits of the fit would differ between 1 and 2 threads.
   fo.threads = 1;
@@ -71,6 +77,8 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
            {{"model", std::string(Model::kName)},
             {"mode", o.fit_mode},
             {"segment_s", fo.segment_s},
+            {"fit_rows", fo.max_rows},
+            {"rows_fitted", fit.rows},
             {"robust", o.robust},
             {"parameter_sd", sd},
             {"covariance_ok", fit.covariance_ok},

@@ -176,18 +176,37 @@ std::vector<Model> FitChosen(const PreparedData& prepared, const std::vector<std
   return bests;
 }
 
+// The simulations' view of the variables, which it holds until the simulations are done and
+// then gives back: on a long log a copy of every variable would be one of the largest blocks.
+class LentVariables {
+ public:
+  LentVariables(const PreparedData& prepared, GpProblem* all, long validation_begin,
+                double horizon_s, const std::vector<DerivedColumn>& derived)
+      : all_(all),
+        data_{prepared.data.t(), all->names, std::move(all->variables), validation_begin,
+              horizon_s, derived} {}
+  ~LentVariables() { all_->variables = std::move(data_.variables); }
+  LentVariables(const LentVariables&) = delete;
+  LentVariables& operator=(const LentVariables&) = delete;
+  const SelectionData& data() const { return data_; }
+
+ private:
+  GpProblem* all_;
+  SelectionData data_;
+};
+
 // The weights of `bests` refitted by simulation error (simulation_refit.h); every state must be
 // among the variables.
 SimulationRefit RefineBySimulation(const PreparedData& prepared,
-                                   const std::vector<std::string>& states, const GpProblem& all,
+                                   const std::vector<std::string>& states, GpProblem* all,
                                    const std::vector<DerivedColumn>& derived, long train_rows,
                                    double horizon_s, std::vector<Model>* bests) {
-  SelectionData data{prepared.data.t(), all.names, all.variables, 0, horizon_s, derived};
   std::vector<int> state_vars;
   for (const std::string& s : states)
     state_vars.push_back(
-        static_cast<int>(std::find(all.names.begin(), all.names.end(), s) - all.names.begin()));
-  return RefitBySimulation(data, state_vars, *bests, {horizon_s, 30, train_rows});
+        static_cast<int>(std::find(all->names.begin(), all->names.end(), s) - all->names.begin()));
+  const LentVariables lent(prepared, all, 0, horizon_s, derived);
+  return RefitBySimulation(lent.data(), state_vars, *bests, {horizon_s, 30, train_rows});
 }
 
 // The equation error's r^2 of the refitted weights, on every row.
@@ -303,9 +322,8 @@ GpIdentification IdentifyWithGp(
   selection.chosen.assign(states.size(), 0);
   const bool select = f > 0 && AllAmong(states, all.names);
   if (select) {
-    SelectionData data{prepared.data.t(), all.names,         all.variables,
-                       train_rows,        options.horizon_s, derived};
-    selection = SelectModels(data, candidates);
+    const LentVariables lent(prepared, &all, train_rows, options.horizon_s, derived);
+    selection = SelectModels(lent.data(), candidates);
   }
 
   // The chosen terms refitted on every row by equation error, then (when asked) by simulation.
@@ -315,7 +333,7 @@ GpIdentification IdentifyWithGp(
   const bool refine = select && options.weight_fit == WeightFit::kSimulation;
   if (refine)
     refit =
-        RefineBySimulation(prepared, states, all, derived, train_rows, options.horizon_s, &bests);
+        RefineBySimulation(prepared, states, &all, derived, train_rows, options.horizon_s, &bests);
 
   for (size_t i = 0; i < states.size(); ++i) {
     const std::string& state = states[i];

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/evenly_spread.h"
 #include "core/parse_number.h"
 #include "methods/gp/constant_fit.h"
 #include "methods/gp/interpreter.h"
@@ -90,13 +91,6 @@ Model Score(const Tree& tree, const Columns<T>& data, Interpreter<T>& interp,
                               : fit.r2_heldout - opt.parsimony * static_cast<double>(m.tree.size());
   if (!std::isfinite(m.fitness)) m.fitness = -1.0;
   return m;
-}
-
-std::vector<long> SpreadRows(long total, long wanted) {
-  std::vector<long> index;
-  const long n = wanted > 0 ? std::min(total, wanted) : total;
-  for (long i = 0; i < n; ++i) index.push_back(i * total / n);
-  return index;
 }
 
 // The front of held-out error (1 - r2_heldout) against size.
@@ -258,7 +252,7 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
              const std::function<void(const GenerationLog&)>& progress) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  const std::vector<long> rows = SpreadRows(p.target.size(), opt.fit_rows);
+  const std::vector<long> rows = EvenlySpread(p.target.size(), opt.fit_rows);
   const Columns<T> data(p, rows);
   const Columns<double> exact(p, rows);  // for the constant optimisation
   PrimitiveSet set{opt.functions, static_cast<int>(p.names.size()), opt.constant_probability};
@@ -311,7 +305,7 @@ std::string Model::Equation(const std::vector<std::string>& names) const {
 }
 
 Model FitTree(const Tree& tree, const GpProblem& problem, const GpOptions& options) {
-  const Columns<double> data(problem, SpreadRows(problem.target.size(), 0));
+  const Columns<double> data(problem, EvenlySpread(problem.target.size(), 0));
   Interpreter<double> interp(data.Pointers());
   return Score(tree, data, interp, options);
 }

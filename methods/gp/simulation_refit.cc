@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/evenly_spread.h"
+
 namespace usvid::gp {
 namespace {
 
@@ -68,14 +70,11 @@ SimulationRefit RefitBySimulation(const SelectionData& data, const std::vector<i
   const double dt = (data.t(rows - 1) - data.t(0)) / static_cast<double>(rows - 1);
   const long steps = std::clamp<long>(std::lround(options.horizon_s / dt), 1, rows - 1);
   const long fit_rows = std::clamp<long>(options.fit_rows, 0, rows);
-  std::vector<long> starts = SegmentSimulator::Starts(0, fit_rows, steps);
-  const auto max_segments = static_cast<size_t>(std::max<long>(1, options.max_rows / steps));
-  if (starts.size() > max_segments) {
-    std::vector<long> spread;
-    for (size_t i = 0; i < max_segments; ++i)
-      spread.push_back(starts[i * starts.size() / max_segments]);
-    starts = std::move(spread);
-  }
+  const std::vector<long> all = SegmentSimulator::Starts(0, fit_rows, steps);
+  std::vector<long> starts;
+  for (const long i :
+       EvenlySpread(static_cast<long>(all.size()), std::max<long>(1, options.max_rows / steps)))
+    starts.push_back(all[static_cast<size_t>(i)]);
   const std::vector<long> check = SegmentSimulator::Starts(fit_rows, rows, steps);
   out.segments = static_cast<int>(starts.size());
   out.validation_segments = static_cast<int>(check.size());

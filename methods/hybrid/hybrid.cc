@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/evenly_spread.h"
 #include "preprocessing/pipeline.h"
 #include "simulation/segment_length.h"
 #include "simulation/vessel_simulator.h"
@@ -17,11 +18,15 @@ constexpr double kNoScore = std::numeric_limits<double>::infinity();
 
 // Rows [0, split) or [split, end) of `data`.
 Dataset Part(const Dataset& data, Eigen::Index split, bool first) {
-  std::vector<bool> keep(static_cast<size_t>(data.rows()));
-  for (Eigen::Index k = 0; k < data.rows(); ++k) keep[k] = (k < split) == first;
-  Dataset part = data;
-  part.KeepRows(keep);
-  return part;
+  return first ? data.Rows(0, split) : data.Rows(split, data.rows() - split);
+}
+
+// At most max_rows rows of `data` (all when max_rows is 0), spread evenly over it.
+void ThinRows(Dataset& data, long max_rows) {
+  if (max_rows <= 0 || data.rows() <= max_rows) return;
+  std::vector<bool> keep(static_cast<size_t>(data.rows()), false);
+  for (const long k : EvenlySpread(data.rows(), max_rows)) keep[static_cast<size_t>(k)] = true;
+  data.KeepRows(keep);
 }
 
 // The held-out multiple-shooting score of the vessel with `fit`'s parameters and terms.
@@ -77,7 +82,11 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   result.effective_samples = vessel_score.residuals / vessel_score.correlation_time;
 
   // Proposals from the derivative residual on the first part.
-  const PreparedData prepared = Preprocess(first, states, info.inputs, PreprocessOptions{});
+  // The derivative residual is regressed on the library at rows spread over the first part (at
+  // most the refits' max_rows): the library has tens of columns, and on a long log it was the
+  // largest block held.
+  PreparedData prepared = Preprocess(first, states, info.inputs, PreprocessOptions{});
+  ThinRows(prepared.data, refit.max_rows);
   // A speed-scaled model's hull and rudder forces are U^2 f(v', r', rudder angle); its
   // propeller has a model of its own (thrust from the advance ratio), so the propeller's
   // revolutions are not in the library.

@@ -35,6 +35,9 @@ struct RefitOptions {
   std::vector<std::string> free;
   double segment_s = 0.0;  // 0: automatic (simulation/segment_length.h)
   double prior_sd = 0.5;   // relative to the starting value
+  // Most rows the segments hold (0: all): on a longer record, segments spread evenly over it
+  // (Ceres holds the Jacobian of every residual).
+  long max_rows = 0;
   int max_iterations = 100;
   int threads = 1;
   std::vector<Effect> terms;  // missing_term effects, their coefficients fitted

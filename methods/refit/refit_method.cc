@@ -13,11 +13,13 @@ namespace {
 nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
   if (o.vessel.empty()) throw InputError("--method refit: needs --vessel");
   const VesselInfo& info = FindVessel(o.vessel).Info();
+  const RefitOptions options = RefitOptionsFor(o);
   const RefitResult fit = RefitVessel(
-      o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params,
-      RefitOptionsFor(o));
+      o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, options);
+  const bool spread = options.max_rows > 0 && data.rows() > options.max_rows;
   Log(log, "refit of " + std::to_string(fit.free.size()) + " parameters on " +
-               std::to_string(fit.segments) + " segments: " + fit.termination);
+               std::to_string(fit.segments) + " segments" +
+               (spread ? " spread over the record (--fit-rows)" : "") + ": " + fit.termination);
   return {{"method", o.method},
           {"vessel", o.vessel},
           {"states", fit.channels},

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/error.h"
+
 namespace usvid {
 
 nlohmann::json RefitParameters(const RefitResult& fit) {
@@ -23,6 +25,7 @@ nlohmann::json RefitDetails(const RefitResult& fit, double prior_sd) {
           {"segment_s", fit.segment_s},
           {"prior_sd", prior_sd},
           {"segments", fit.segments},
+          {"residuals", fit.residuals},
           {"termination", fit.termination},
           {"converged", fit.converged},
           {"initial_cost", fit.initial_cost},
@@ -35,6 +38,8 @@ RefitOptions RefitOptionsFor(const IdentifyRequest& o) {
   ro.free = o.refit_params;
   ro.segment_s = o.segment_s;
   ro.prior_sd = o.prior_sd;
+  ro.max_rows = o.fit_rows.value_or(kCeresFitRows);
+  if (ro.max_rows < 0) throw InputError("--fit-rows: must be 0 (all) or more");
   ro.threads = 1;  // deterministic, as for fossen-ceres
   return ro;
 }

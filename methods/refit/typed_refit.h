@@ -12,6 +12,7 @@
 
 #include "core/correlation_time.h"
 #include "core/error.h"
+#include "core/evenly_spread.h"
 #include "methods/refit/refit.h"
 #include "preprocessing/smoothing_spline.h"
 #include "simulation/input_track.h"
@@ -249,6 +250,20 @@ inline std::vector<std::pair<Eigen::Index, Eigen::Index>> SegmentBounds(const Da
   return bounds;
 }
 
+// At most max_rows rows' worth of `bounds` (all when max_rows is 0), spread evenly over them.
+inline std::vector<std::pair<Eigen::Index, Eigen::Index>> SpreadSegments(
+    std::vector<std::pair<Eigen::Index, Eigen::Index>> bounds, long max_rows) {
+  if (max_rows <= 0) return bounds;
+  const Eigen::Index rows = bounds.back().second - bounds.front().first + 1;
+  const double per_segment = static_cast<double>(rows) / static_cast<double>(bounds.size());
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> kept;
+  for (const long j :
+       EvenlySpread(static_cast<long>(bounds.size()),
+                    std::max<long>(1, std::lround(static_cast<double>(max_rows) / per_segment))))
+    kept.push_back(bounds[static_cast<size_t>(j)]);
+  return kept;
+}
+
 // The segment of rows [a, b]: its times, measurements and first row, with the scales.
 template <Vessel V>
 RefitSegment<V>* NewSegment(const Dataset& data, const InputTrack& track, Eigen::Index a,
@@ -356,7 +371,7 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   }
   detail::MissingTerms missing = detail::ResolveMissingTerms(info, o.terms);
   const double dt = data.rows() > 1 ? data.duration() / static_cast<double>(data.rows() - 1) : 1.0;
-  const auto bounds = detail::SegmentBounds(data, segment_s);
+  const auto bounds = detail::SpreadSegments(detail::SegmentBounds(data, segment_s), o.max_rows);
   std::vector<std::array<double, C>> x0(bounds.size());
   ceres::Problem problem;
   for (size_t j = 0; j < bounds.size(); ++j) {

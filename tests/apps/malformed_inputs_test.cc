@@ -175,6 +175,10 @@ const Malformed kCatalogue[] = {
      "a_folder"},
     {"diagnose_negative_fit_rows",
      "diagnose --data {D}/good.csv --vessel odin3dof --fit-rows -1 --out {OUT}", "--fit-rows"},
+    {"fossen_negative_fit_rows",
+     "identify --method fossen-ceres --data {D}/good.csv --vessel odin3dof --fit-rows -1 --out "
+     "{OUT}.json",
+     "--fit-rows"},
     {"negative_threads", "diagnose --data {D}/good.csv --vessel odin3dof --threads -1 --out {OUT}",
      "--threads"},
     {"unknown_option", "info --data {D}/good.csv --colour blue", "--colour"},

@@ -120,6 +120,27 @@ TEST_F(FossenFitTest, WaterjetMapFitsOdinHsFromThrottleNozzleAndBucket) {
   }
 }
 
+// On a record longer than max_rows, both fits use a bounded share of it spread over the whole
+// (Ceres holds the Jacobian of every residual it is given), and that share still recovers every
+// parameter of the noise-free hull.
+TEST_F(FossenFitTest, ABoundedShareOfALongRecordRecoversEveryParameter) {
+  const PreparedData prep = Prepare(Simulate("random-steps", 1800, 0.0, 6));
+  ASSERT_GT(prep.data.rows(), 30000);
+  fossen::FossenOptions o;
+  o.max_rows = 6000;
+  const fossen::FossenFit eq = fossen::FitEquationErrorFor<fossen::Odin3DofModel>(prep, o);
+  const fossen::FossenFit sim =
+      fossen::FitSimulationErrorFor<fossen::Odin3DofModel>(prep, eq.params, o);
+  for (const fossen::FossenFit* f : {&eq, &sim}) {
+    EXPECT_LE(f->rows, 6000 + 200);  // at most one segment's rows over
+    EXPECT_GE(f->rows, 6000 - 200);
+  }
+  EXPECT_TRUE(sim.converged) << sim.termination;
+  EXPECT_LE(WorstError(sim.params), 0.005);
+  o.max_rows = 0;  // all
+  EXPECT_EQ(fossen::FitEquationErrorFor<fossen::Odin3DofModel>(prep, o).rows, prep.data.rows());
+}
+
 // A fit that Ceres stops before it converges says so and why (issue 11): not converged, the
 // termination type and Ceres' message in the result, the parameters finite.
 TEST_F(FossenFitTest, AFitStoppedEarlySaysWhy) {

@@ -66,6 +66,24 @@ TEST(RefitTest, FitsTheNamedParameterOfAnotherVessel) {
   EXPECT_NEAR(Param(r, "Nv"), 3000.0, 90.0);
 }
 
+// On a record longer than max_rows the segments fitted are a share spread over it: as many
+// residuals as max_rows rows hold (within a segment), and Nv still found.
+TEST(RefitTest, ABoundedShareOfALongRecordFindsTheParameter) {
+  const VesselInfo& info = FindVessel("odin3dof").Info();
+  std::vector<double> truth = info.default_params;
+  truth[7] = 3000.0;  // Nv
+  const Dataset data = Simulate("odin3dof", "random-steps", 800, truth, 2);
+  RefitOptions options;
+  options.free = {"Nv"};
+  options.max_rows = 4000;
+  ASSERT_GT(data.rows(), 3 * options.max_rows);
+  const RefitResult r = RefitVessel("odin3dof", data, info.default_params, options);
+  const double rows = static_cast<double>(r.residuals) / 3.0;  // u, v, r at each row
+  const double per_segment = rows / r.segments;
+  EXPECT_NEAR(rows, 4000.0, per_segment);
+  EXPECT_NEAR(Param(r, "Nv"), 3000.0, 90.0);
+}
+
 TEST(RefitTest, RefusesWhatItCannotFit) {
   const VesselInfo& info = FindVessel("odin3dof").Info();
   const Dataset data = Simulate("odin3dof", "random-steps", 30, info.default_params, 3);
