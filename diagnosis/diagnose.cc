@@ -210,7 +210,17 @@ Diagnosis Describe(const Dataset& data, const std::string& vessel, const Context
 void AddDiscoveredTerms(const Context& cx, const Dataset& data, const MeasuredData& d,
                         Diagnosis& out) {
   if (cx.log) *cx.log << "diagnose: the catalogue leaves much of the residual; searching terms\n";
-  out.discovered = DiscoverMissingTerms(data, cx.sim, cx.fitter, cx.params, d);
+  if (d.fit.begin > d.train.begin) {
+    // A long log: the terms are searched on the rows the effects are fitted on (--fit-rows), so
+    // that SINDy's library and GP's columns stay bounded as the fits' Jacobians do.
+    const Eigen::VectorXd& t = data.t();
+    const double* first = std::lower_bound(t.data(), t.data() + t.size(), d.times[d.fit.begin]);
+    const double* last = std::upper_bound(first, t.data() + t.size(), d.times[d.fit.end - 1]);
+    out.discovered = DiscoverMissingTerms(data.Rows(first - t.data(), last - first), cx.sim,
+                                          cx.fitter, cx.params, d);
+  } else {
+    out.discovered = DiscoverMissingTerms(data, cx.sim, cx.fitter, cx.params, d);
+  }
   std::vector<Candidate> all = std::move(out.candidates);
   for (Candidate& c : FitCandidates(d, cx.fitter, cx.params, TermSearches(out.discovered, cx.sim),
                                     out.nominal_error, out.noise_floor, out.effective_samples))
@@ -312,7 +322,8 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
          << " candidate effects"
          << (d.fit.begin > d.train.begin
                  ? " on the training part's last " + std::to_string(std::lround(out.fit_s)) +
-                       " s (--fit-rows)"
+                       " s, scored on the " + std::to_string(std::lround(out.heldout_s)) +
+                       " s after it (--fit-rows)"
                  : std::string())
          << "\n";
 

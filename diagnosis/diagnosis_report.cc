@@ -83,7 +83,7 @@ void WriteDiagnosisReport(const Diagnosis& d, const std::string& dir) {
     << " %. Trained on the first " << Fixed(d.train_s, 0) << " s"
     << (d.fit_s < d.train_s - 1e-9 ? " (the effects fitted on its last " + Fixed(d.fit_s, 0) + " s)"
                                    : std::string())
-    << ", scored on the last " << Fixed(d.heldout_s, 0) << " s, in segments of "
+    << ", scored on the " << Fixed(d.heldout_s, 0) << " s that follow, in segments of "
     << Fixed(d.segment_s, 0)
     << " s, each from an initial state estimated from the data. Noise floor E = "
     << std::setprecision(3) << d.noise_floor << ", nominal E = " << d.nominal_error << ".</p>\n";

@@ -104,8 +104,9 @@ void SmoothResets(const VesselInfo& info, MeasuredData& d) {
   }
 }
 
-// Split by time: the last heldout_fraction of the record is held out. Throws InputError when
-// either part has fewer than 20 rows.
+// Split by time: the last heldout_fraction of the record is held out. On a record longer than
+// max_fit_rows, the fits use the training part's last max_fit_rows and the scores the held-out
+// part's first. Throws InputError when either part has fewer than 20 rows.
 void SplitParts(const Dataset& data, double heldout_fraction, Eigen::Index max_fit_rows,
                 MeasuredData& d) {
   const auto n = data.rows();
@@ -118,7 +119,8 @@ void SplitParts(const Dataset& data, double heldout_fraction, Eigen::Index max_f
                      "): need at least " + std::to_string(2 * kMinRows));
   d.all = MakePart(d, 0, n, d.segment_s);
   d.train = MakePart(d, 0, split, d.segment_s);
-  d.heldout = MakePart(d, split, n, d.segment_s);
+  d.heldout = MakePart(d, split, max_fit_rows > 0 ? std::min(n, split + max_fit_rows) : n,
+                       d.segment_s);
   const Eigen::Index fit_begin =
       max_fit_rows > 0 ? std::max<Eigen::Index>(0, split - max_fit_rows) : 0;
   d.fit = fit_begin == 0 ? d.train : MakePart(d, fit_begin, split, d.segment_s);

@@ -88,8 +88,8 @@ void AddDiagnoseCommand(CLI::App& app) {
                   "Fraction of the record (its end) held out for scoring")
       ->capture_default_str();
   cmd->add_option("--fit-rows", o->options.split.max_fit_rows,
-                  "Most rows the candidate effects are fitted on, the training part's last; a "
-                  "longer log is still scored on its whole held-out part (0: all rows)")
+                  "Most rows the candidate effects are fitted on (the training part's last) "
+                  "and scored on (the held-out part's first); 0: all rows")
       ->capture_default_str();
   cmd->add_option("--dt", o->options.split.max_step,
                   "Largest integration step [s] (0: the data's interval, at most 0.05 s)")
