@@ -64,7 +64,7 @@ Dataset ParseLines(Lines& lines, const CsvReadOptions& options) {
   CsvRow row;
   auto next_row = [&] {
     while (lines.Next(line, line_no)) {
-      if (line.find_first_not_of(" \t") == std::string_view::npos) continue;  // blank
+      if (IsBlankLine(line)) continue;
       SplitCsvLine(line, file, line_no, ',', row);
       return true;
     }

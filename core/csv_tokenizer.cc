@@ -117,17 +117,25 @@ void ForEachLine(std::string_view text, const std::string& file, Visit visit) {
   while (lines.Next(line, line_no)) visit(line, line_no);
 }
 
-bool IsBlank(std::string_view line) {
-  return line.find_first_not_of(" \t") == std::string_view::npos;
+// A line as split from the text: the byte-order mark of the first removed, and a CR line end;
+// then checked (CheckTextLine).
+void FinishLine(std::string_view& line, int line_no, const std::string& file) {
+  if (line_no == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  CheckTextLine(line, file, line_no);
 }
 
 }  // namespace
+
+bool IsBlankLine(std::string_view line) {
+  return line.find_first_not_of(" \t") == std::string_view::npos;
+}
 
 CsvTable TokenizeCsv(std::string_view text, const std::string& file, char separator) {
   CsvTable table;
   table.file = file;
   ForEachLine(text, file, [&](std::string_view line, int line_no) {
-    if (IsBlank(line)) return;
+    if (IsBlankLine(line)) return;
     table.rows.emplace_back();
     SplitCsvLine(line, file, line_no, separator, table.rows.back());
   });
@@ -138,7 +146,7 @@ CsvTable TokenizeWhitespace(std::string_view text, const std::string& file, int 
   CsvTable table;
   table.file = file;
   ForEachLine(text, file, [&](std::string_view line, int line_no) {
-    if (line_no <= header_lines || IsBlank(line)) return;
+    if (line_no <= header_lines || IsBlankLine(line)) return;
     CsvRow row;
     row.line = line_no;
     row.end_column = static_cast<int>(line.size()) + 1;
@@ -156,9 +164,7 @@ CsvTable TokenizeWhitespace(std::string_view text, const std::string& file, int 
 }
 
 TextLines::TextLines(std::string_view text, std::string file)
-    : text_(text), file_(std::move(file)) {
-  if (text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
-}
+    : text_(text), file_(std::move(file)) {}
 
 bool TextLines::Next(std::string_view& line, int& line_no) {
   if (pos_ >= text_.size()) return false;
@@ -166,9 +172,8 @@ bool TextLines::Next(std::string_view& line, int& line_no) {
   if (end == std::string_view::npos) end = text_.size();
   line = text_.substr(pos_, end - pos_);
   pos_ = std::min(end + 1, text_.size());
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   line_no = ++line_no_;
-  CheckTextLine(line, file_, line_no);
+  FinishLine(line, line_no, file_);
   return true;
 }
 
@@ -195,10 +200,8 @@ bool TextFileLines::Next(std::string_view& line, int& line_no) {
   }
   bytes_read_ += line_.size() + 1;
   line = line_;
-  if (line_no_ == 0 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   line_no = ++line_no_;
-  CheckTextLine(line, file_, line_no);
+  FinishLine(line, line_no, file_);
   return true;
 }
 

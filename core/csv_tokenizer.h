@@ -38,6 +38,9 @@ void SplitCsvLine(std::string_view line, const std::string& file, int line_no, c
 // invalid UTF-8), naming file:line:column.
 void CheckTextLine(std::string_view line, const std::string& file, int line_no);
 
+// True for a line of nothing but spaces and tabs (readers skip it).
+bool IsBlankLine(std::string_view line);
+
 // The lines of a text held in memory, in the order and form TextFileLines gives them.
 class TextLines {
  public:

@@ -68,6 +68,10 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   refit.terms.clear();
   refit.hold_model = false;
   if (refit.segment_s == 0.0) refit.segment_s = AutomaticSegmentSeconds(data, info);
+  // The selection fits and scores proposals side by side, two at a time on 2 cores: each of its
+  // fits and scores takes half of max_rows (whatever the threads, so the numbers do not depend
+  // on them), and the selection holds no more than the final fit on the whole record.
+  if (refit.max_rows > 0) refit.max_rows = std::max<long>(1, refit.max_rows / 2);
   const Eigen::Index split =
       static_cast<Eigen::Index>(std::floor((1.0 - options.heldout) * static_cast<double>(data.rows())));
   if (split < 16 || data.rows() - split < 16)
@@ -151,6 +155,7 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
 
   RefitOptions final_options = refit;
   final_options.terms = chosen;
+  final_options.max_rows = options.refit.max_rows;
   result.fit = RefitVessel(vessel, data, start, final_options);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
