@@ -54,12 +54,18 @@ TEST(RefitTest, FindsTheChangedMmgCoefficients) {
   EXPECT_EQ(r.channels, (std::vector<std::string>{"u", "v", "r"}));
 }
 
-// odin3dof's linear sway-yaw coupling Nv = 3000 instead of 1281, fitted alone.
+// `seconds` of odin3dof random steps with its linear sway-yaw coupling Nv = 3000 instead of
+// 1281.
+Dataset OdinWithStrongerNv(double seconds) {
+  std::vector<double> truth = FindVessel("odin3dof").Info().default_params;
+  truth[7] = 3000.0;  // Nv
+  return Simulate("odin3dof", "random-steps", seconds, truth, 2);
+}
+
+// Nv fitted alone.
 TEST(RefitTest, FitsTheNamedParameterOfAnotherVessel) {
   const VesselInfo& info = FindVessel("odin3dof").Info();
-  std::vector<double> truth = info.default_params;
-  truth[7] = 3000.0;  // Nv
-  const Dataset data = Simulate("odin3dof", "random-steps", 200, truth, 2);
+  const Dataset data = OdinWithStrongerNv(200);
   RefitOptions options;
   options.free = {"Nv"};
   const RefitResult r = RefitVessel("odin3dof", data, info.default_params, options);
@@ -70,9 +76,7 @@ TEST(RefitTest, FitsTheNamedParameterOfAnotherVessel) {
 // residuals as max_rows rows hold (within a segment), and Nv still found.
 TEST(RefitTest, ABoundedShareOfALongRecordFindsTheParameter) {
   const VesselInfo& info = FindVessel("odin3dof").Info();
-  std::vector<double> truth = info.default_params;
-  truth[7] = 3000.0;  // Nv
-  const Dataset data = Simulate("odin3dof", "random-steps", 800, truth, 2);
+  const Dataset data = OdinWithStrongerNv(800);
   RefitOptions options;
   options.free = {"Nv"};
   options.max_rows = 4000;
