@@ -1,7 +1,8 @@
 // Fits one effect of the catalogue to a part of measured data through a vessel's simulator, and
 // computes the residuals of the nominal or an extended model (reset_rollout.h). A runtime
 // interface so that the diagnosis picks the vessel by name; the typed implementation is
-// typed_effect_fitter.h, the list of vessels effect_fitter_registry.cc.
+// typed_effect_fitter.h, instantiated once per vessel type in a translation unit of its own
+// (effect_fitter_vessel.cc.in), and effect_fitter_registry.cc holds one of each.
 #pragma once
 
 #include <Eigen/Core>
@@ -12,6 +13,7 @@
 
 #include "diagnosis/effect_search.h"
 #include "diagnosis/measured_data.h"
+#include "simulators/vessel.h"
 
 namespace usvid::diagnosis {
 
@@ -44,6 +46,10 @@ class EffectFitter {
   virtual void Derivative(const std::vector<double>& params, const double* x, const double* u,
                           double* dx) const = 0;
 };
+
+// A new fitter for vessel type V (typed_effect_fitter.h defines it).
+template <Vessel V>
+std::unique_ptr<const EffectFitter> NewEffectFitter();
 
 // Throws InputError for a vessel without a fitter.
 const EffectFitter& FindEffectFitter(const std::string& vessel);

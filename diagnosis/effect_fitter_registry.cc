@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "core/error.h"
-#include "diagnosis/typed_effect_fitter.h"
+#include "diagnosis/effect_fitter.h"
 #include "simulators/vessel_types.h"
 
 namespace usvid::diagnosis {
@@ -11,7 +11,7 @@ const EffectFitter& FindEffectFitter(const std::string& vessel) {
   static const auto fitter = [] {
     std::array<std::unique_ptr<const EffectFitter>, kVesselTypeCount> all;
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-      ((all[I] = std::make_unique<const TypedEffectFitter<VesselTypeAt<I>>>()), ...);
+      ((all[I] = NewEffectFitter<VesselTypeAt<I>>()), ...);
     }(std::make_index_sequence<kVesselTypeCount>{});
     return all;
   }();

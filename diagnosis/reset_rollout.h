@@ -45,7 +45,9 @@ struct EffectPlant {
     limits =
         SaturationLimits<V::kInputs>(effects.saturation_fraction, peak, effects.saturation_inputs);
   }
-  PlantStepper<V, T> Stepper() const { return {p_eff.data(), e, limits, Integrator::kRk4, {}}; }
+  PlantStepper<V, T, Steppers::kRk4Only> Stepper() const {
+    return {p_eff.data(), e, limits, Integrator::kRk4, {}};
+  }
 };
 
 // Scores rows [a, b) of a part from plant state x at row a (x is advanced); residuals of row k
@@ -56,7 +58,7 @@ bool RolloutRows(const MeasuredData& d, Eigen::Index part_begin, Eigen::Index a,
                  T* residual) {
   constexpr int N = Plant<V>::kStates;
   constexpr double kBound = 1e7;
-  const PlantStepper<V, T> stepper = plant.Stepper();
+  const auto stepper = plant.Stepper();
   const int channels = static_cast<int>(d.channels.size());
   bool diverged = false;
   std::array<T, V::kInputs> u;

@@ -262,4 +262,9 @@ class TypedEffectFitter : public EffectFitter {
   }
 };
 
+template <Vessel V>
+std::unique_ptr<const EffectFitter> NewEffectFitter() {
+  return std::make_unique<const TypedEffectFitter<V>>();
+}
+
 }  // namespace usvid::diagnosis

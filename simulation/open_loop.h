@@ -25,7 +25,8 @@ struct OpenLoopSetup {
 
 // out: times.size() rows of Plant<V>::kStates values (row-major), filled up to the row where
 // the run diverged; returns the number of rows filled (== times.size() unless it diverged).
-template <Vessel V, typename T>
+// S = Steppers::kRk4Only: setup.integrator must be RK4 (plant_stepper.h; the fits' rollouts).
+template <Vessel V, typename T, Steppers S = Steppers::kAny>
 size_t RolloutOpenLoop(const OpenLoopSetup& setup, const T* x0, const T* params,
                        const EffectValues<T>& effects, const std::array<double, V::kInputs>& limits,
                        T* out) {
@@ -33,7 +34,7 @@ size_t RolloutOpenLoop(const OpenLoopSetup& setup, const T* x0, const T* params,
   if (!(setup.max_step > 0.0)) throw std::invalid_argument("RolloutOpenLoop: max_step must be > 0");
   std::array<T, V::kParams> p_eff;
   Plant<V>::ScaleParams(params, effects, p_eff.data());
-  PlantStepper<V, T> stepper{p_eff.data(), &effects, limits, setup.integrator, {}};
+  PlantStepper<V, T, S> stepper{p_eff.data(), &effects, limits, setup.integrator, {}};
   const double delay = TotalDelay<V>(effects.delay_s);
   typename PlantStepper<V, T>::State x;
   for (int i = 0; i < N; ++i) x(i) = x0[i];

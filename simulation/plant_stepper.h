@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <stdexcept>
 
 #include "effects/plant.h"
 #include "simulation/integrator.h"
@@ -11,7 +12,13 @@
 
 namespace usvid {
 
-template <Vessel V, typename T>
+// The integrators a stepper can run: kAny (RK4 or adaptive Dormand-Prince, as `usvid simulate
+// --integrator` offers), or kRk4Only for the fits, which differentiate fixed RK4 steps: not
+// instantiating the adaptive integrator for their Jets takes a fifth off their compile time
+// (docs/performance.md#build-time).
+enum class Steppers { kAny, kRk4Only };
+
+template <Vessel V, typename T, Steppers S = Steppers::kAny>
 struct PlantStepper {
   using State = StateVector<T, Plant<V>::kStates>;
 
@@ -30,9 +37,13 @@ struct PlantStepper {
       Rk4Step<T, Plant<V>::kStates>(f, h, x);
       return true;
     }
-    AdaptiveOptions opt = adaptive;
-    opt.initial_step = std::min(opt.initial_step, h);
-    return DormandPrinceIntegrate<T, Plant<V>::kStates>(f, h, x, opt).ok;
+    if constexpr (S == Steppers::kAny) {
+      AdaptiveOptions opt = adaptive;
+      opt.initial_step = std::min(opt.initial_step, h);
+      return DormandPrinceIntegrate<T, Plant<V>::kStates>(f, h, x, opt).ok;
+    } else {
+      throw std::invalid_argument("PlantStepper: this rollout integrates by RK4 only");
+    }
   }
 };
 

@@ -1,9 +1,8 @@
 // Every vessel type, once. The typed code of the refit (methods/refit) and of the diagnosis's
-// effect fitters (diagnosis/) is instantiated for each and dispatched by name here. A new vessel
-// is its header, one entry in USVID_VESSEL_TYPES, and its actuation in
-// simulation/vessel_registry.cc.
-// (Instantiating each vessel in a translation unit of its own was tried: on 2 cores it made the
-// build 11 % more work for no shorter wall time, since the build is bound by the cores.)
+// effect fitters (diagnosis/) is dispatched by name here, and CMake compiles each vessel's
+// instance in a translation unit of its own, one per entry of USVID_VESSEL_TYPES
+// (usvid_per_vessel_sources, cmake/UsvidHelpers.cmake: it reads the list below). A new vessel is
+// its header, one entry in USVID_VESSEL_TYPES, and its actuation in simulation/vessel_registry.cc.
 #pragma once
 
 #include <cstddef>

@@ -129,6 +129,7 @@ Method FossenCeresMethod() {
   m.summary = "parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map";
   m.identify = IdentifyFossenModel;
   m.channel_inputs = true;
+  m.relative_cost = 10.0;  // the multiple-shooting fit
   return m;
 }
 

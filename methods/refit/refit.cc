@@ -1,7 +1,7 @@
 #include "methods/refit/refit.h"
 
 #include "core/error.h"
-#include "methods/refit/typed_refit.h"
+#include "methods/refit/refit_instances.h"
 #include "simulators/vessel_types.h"
 
 namespace usvid {

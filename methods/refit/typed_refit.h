@@ -1,7 +1,7 @@
-// RefitVessel for one vessel type V (refit.h): the segment cost, the prior and the solve.
+// RefitVessel for one vessel type V (refit.h): the segment cost, the prior and the solve;
+// refit_instances.h declares it, and refit_vessel.cc.in instantiates it once per vessel.
 #pragma once
 
-#include <Eigen/Sparse>
 #include <ceres/ceres.h>
 
 #include <algorithm>
@@ -13,7 +13,9 @@
 #include "core/correlation_time.h"
 #include "core/error.h"
 #include "core/evenly_spread.h"
+#include "methods/refit/free_information.h"
 #include "methods/refit/refit.h"
+#include "methods/refit/refit_instances.h"
 #include "preprocessing/smoothing_spline.h"
 #include "simulation/input_track.h"
 #include "simulation/open_loop.h"
@@ -80,7 +82,7 @@ struct RefitSegment {
     for (size_t j = 0; j < terms.size(); ++j)
       effects.extra_terms.push_back({terms[j], kappa[j] * term_scale[j]});
     const size_t rows =
-        RolloutOpenLoop<V, T>(setup, start.data(), p.data(), effects, limits, out.data());
+        RolloutOpenLoop<V, T, Steppers::kRk4Only>(setup, start.data(), p.data(), effects, limits, out.data());
     int k = 0;
     for (size_t row = 1; row < times.size(); ++row) {
       const size_t use = std::min(row, rows - 1);  // a diverged run keeps its last state
@@ -105,34 +107,6 @@ struct RefitPrior {
     return true;
   }
 };
-
-// The information of theta's free (tangent) coordinates with the initial states x0 (C each)
-// taken out: A = J^T J over [theta, x0_1, .., x0_S], then A_tt - sum_j A_tj A_jj^-1 A_jt.
-template <size_t C>
-Eigen::MatrixXd FreeInformation(ceres::Problem& problem, double* theta,
-                                std::vector<std::array<double, C>>& x0, int /*channels*/) {
-  ceres::Problem::EvaluateOptions eo;
-  eo.parameter_blocks.push_back(theta);
-  for (auto& x : x0) eo.parameter_blocks.push_back(x.data());
-  ceres::CRSMatrix crs;
-  problem.Evaluate(eo, nullptr, nullptr, nullptr, &crs);
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (int r = 0; r < crs.num_rows; ++r)
-    for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k)
-      triplets.emplace_back(r, crs.cols[k], crs.values[k]);
-  Eigen::SparseMatrix<double> j(crs.num_rows, crs.num_cols);
-  j.setFromTriplets(triplets.begin(), triplets.end());
-  const Eigen::MatrixXd a = Eigen::MatrixXd(j.transpose() * j);
-  const Eigen::Index p = crs.num_cols - static_cast<Eigen::Index>(C * x0.size());
-  Eigen::MatrixXd info = a.topLeftCorner(p, p);
-  for (size_t s = 0; s < x0.size(); ++s) {
-    const Eigen::Index at = p + static_cast<Eigen::Index>(C * s);
-    const Eigen::MatrixXd ajj = a.block(at, at, C, C);
-    const Eigen::MatrixXd atj = a.block(0, at, p, C);
-    info -= atj * ajj.completeOrthogonalDecomposition().solve(atj.transpose());
-  }
-  return 0.5 * (info + info.transpose());
-}
 
 namespace detail {
 
@@ -392,7 +366,9 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
                        &problem);
 
   if (o.information_only) {
-    result.information = FreeInformation(problem, theta.data(), x0, C);
+    std::vector<double*> starts;
+    for (auto& x : x0) starts.push_back(x.data());
+    result.information = FreeInformation(problem, theta.data(), starts, C);
     result.params = start;
     result.sd.assign(V::kParams, 0.0);
     return result;

@@ -1,3 +1,8 @@
+// The fits of fossen_fit.h for any model of fossen_models.h and jet_force_model.h, defined once;
+// fossen_fit_<model>.cc instantiates them for one model each, so that the four models' Jet code
+// compiles in parallel.
+#pragma once
+
 #include "methods/fossen_ceres/fossen_fit.h"
 
 #include <ceres/ceres.h>
@@ -16,9 +21,9 @@
 #include "simulators/odin3dof.h"
 
 namespace usvid::fossen {
-namespace {
+namespace detail {
 
-double Sd(const Eigen::VectorXd& v) {
+inline double Sd(const Eigen::VectorXd& v) {
   const double sd = std::sqrt((v.array() - v.mean()).square().mean());
   return sd > 0 ? sd : 1.0;
 }
@@ -140,7 +145,7 @@ struct SegmentResidual {
     std::array<double, Model::kInputs> limits;
     limits.fill(INFINITY);
     const size_t rows =
-        RolloutOpenLoop<Model, T>(setup, start.data(), p, EffectValues<T>{}, limits, out.data());
+        RolloutOpenLoop<Model, T, Steppers::kRk4Only>(setup, start.data(), p, EffectValues<T>{}, limits, out.data());
     int k = 0;
     for (size_t row = 1; row < times.size(); ++row)
       for (int c = 0; c < 3; ++c) {
@@ -402,36 +407,32 @@ nlohmann::json EquationsOf(const std::array<double, Model::kParams>& p) {
   }
 }
 
-}  // namespace
+}  // namespace detail
 
 template <typename Model>
 BasicFossenFit<Model::kParams> FitEquationErrorFor(const PreparedData& prepared,
                                                    const FossenOptions& options) {
-  return FitEquationErrorOf<Model>(prepared, options);
+  return detail::FitEquationErrorOf<Model>(prepared, options);
 }
 
 template <typename Model>
 BasicFossenFit<Model::kParams> FitSimulationErrorFor(
     const PreparedData& prepared, const std::array<double, Model::kParams>& start,
     const FossenOptions& options) {
-  return FitSimulationErrorOf<Model>(prepared, start, options);
+  return detail::FitSimulationErrorOf<Model>(prepared, start, options);
 }
 
 template <typename Model>
 nlohmann::json EquationsFor(const std::array<double, Model::kParams>& params) {
-  return EquationsOf<Model>(params);
+  return detail::EquationsOf<Model>(params);
 }
 
+// The fits' explicit instantiation for one model (fossen_fit_<model>.cc).
 #define USVID_FOSSEN_MODEL(Model)                                                            \
   template BasicFossenFit<Model::kParams> FitEquationErrorFor<Model>(const PreparedData&,    \
                                                                      const FossenOptions&);  \
   template BasicFossenFit<Model::kParams> FitSimulationErrorFor<Model>(                      \
       const PreparedData&, const std::array<double, Model::kParams>&, const FossenOptions&); \
   template nlohmann::json EquationsFor<Model>(const std::array<double, Model::kParams>&);
-USVID_FOSSEN_MODEL(Odin3DofModel)
-USVID_FOSSEN_MODEL(WaterjetModel)
-USVID_FOSSEN_MODEL(RudderModel)
-USVID_FOSSEN_MODEL(JetForceModel)
-#undef USVID_FOSSEN_MODEL
 
 }  // namespace usvid::fossen
