@@ -43,7 +43,8 @@ DistributedRun RunSuiteDistributed(const Suite& suite, const std::string& out_di
              " cells are in " + store->Directory() + " and are not run again");
 
   // The cells left go to whichever thread of whichever rank is free (ranks::WorkQueue).
-  const std::vector<size_t> pending = plan["pending"].get<std::vector<size_t>>();
+  const std::vector<size_t> pending =
+      SlowestFirst(jobs, plan["pending"].get<std::vector<size_t>>());
   const std::string who = size > 1 ? "rank " + std::to_string(rank) + ": " : "";
   size_t count = 0;
   std::map<size_t, std::vector<ResultRow>> mine;

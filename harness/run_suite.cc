@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <numeric>
 #include <set>
 
 #include "core/error.h"
@@ -322,15 +323,29 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
   return cells;
 }
 
+std::vector<size_t> SlowestFirst(const std::vector<FitJob>& jobs, std::vector<size_t> cells) {
+  auto cost = [&](size_t j) {
+    for (const Method& m : Methods())
+      if (m.name == jobs.at(j).method.method) return m.relative_cost;
+    return 1.0;
+  };
+  std::stable_sort(cells.begin(), cells.end(),
+                   [&](size_t a, size_t b) { return cost(a) > cost(b); });
+  return cells;
+}
+
 std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
                                 const std::function<void(const std::string&)>& progress) {
   const std::vector<FitJob> jobs = FitJobs(suite);
+  std::vector<size_t> all(jobs.size());
+  std::iota(all.begin(), all.end(), size_t{0});
+  const std::vector<size_t> order = SlowestFirst(jobs, std::move(all));
   size_t handed_out = 0, finished = 0;
   const auto cells = RunCells(
       suite, jobs, threads,
       [&]() -> std::optional<size_t> {
-        if (handed_out == jobs.size()) return std::nullopt;
-        return handed_out++;
+        if (handed_out == order.size()) return std::nullopt;
+        return order[handed_out++];
       },
       [&](size_t j, const std::vector<ResultRow>& rows) {
         ++finished;

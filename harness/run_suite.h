@@ -40,6 +40,11 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
     const std::function<std::optional<size_t>()>& next,
     const std::function<void(size_t, const std::vector<ResultRow>&)>& done = {});
 
+// `cells` (job indices) reordered to start the costliest fits first (Method::relative_cost;
+// a method outside the registry counts as 1), ties in their given order. Which thread runs a cell
+// does not change its rows, so only the run's wall time changes.
+std::vector<size_t> SlowestFirst(const std::vector<FitJob>& jobs, std::vector<size_t> cells);
+
 // The progress line of a finished cell: "[finished/total] job id", and why when its fit failed.
 std::string CellProgress(size_t finished, size_t total, const FitJob& job,
                          const std::vector<ResultRow>& rows);

@@ -39,6 +39,9 @@ struct Method {
   bool seeded = false;
   // A suite option shown in the row's label, as name[value] (gp[+,-,*,abs]); "" none.
   std::string label_option;
+  // A fit's rough cost against a regression's (1): a suite starts its costliest fits first, so
+  // that no core waits at the end behind one long fit (harness/run_suite.h, SlowestFirst).
+  double relative_cost = 1.0;
 };
 
 }  // namespace usvid

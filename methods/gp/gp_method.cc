@@ -134,6 +134,7 @@ Method GpMethod() {
   m.regime_features = true;
   m.seeded = true;
   m.label_option = "operators";
+  m.relative_cost = 30.0;  // the search, the selection's simulations and the weights' refit
   return m;
 }
 

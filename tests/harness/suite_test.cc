@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -125,6 +126,33 @@ TEST_F(SuiteTest, FitJobsCoverEveryMethodOnEveryManeuver) {
   }
   // odin3dof: 2 trains x 3 methods; msd: 1 train x 3 methods.
   EXPECT_EQ(jobs.size(), 9u);
+}
+
+// A suite starts its costliest fits first (Method::relative_cost: gp, then fossen-ceres), the
+// rest in job order, so that the last fit to finish is a short one.
+TEST_F(SuiteTest, SlowestFitsStartFirst) {
+  nlohmann::json small = Small();
+  small["methods"] = {"sindy", "fossen-ceres", "gp", "eb-lr"};
+  const std::vector<FitJob> jobs = FitJobs(ParseSuite(small, "s.json"));
+  std::vector<size_t> all(jobs.size());
+  for (size_t j = 0; j < all.size(); ++j) all[j] = j;
+  const std::vector<size_t> order = SlowestFirst(jobs, all);
+  ASSERT_EQ(order.size(), jobs.size());
+  std::vector<std::string> methods;
+  for (size_t j : order) methods.push_back(jobs[j].method.method);
+  const auto first_other = std::find_if(methods.begin(), methods.end(), [](const std::string& m) {
+    return m != "gp" && m != "fossen-ceres";
+  });
+  EXPECT_TRUE(std::all_of(methods.begin(), methods.begin() + 3,
+                          [](const std::string& m) { return m == "gp"; }));
+  EXPECT_TRUE(std::all_of(methods.begin() + 3, first_other,
+                          [](const std::string& m) { return m == "fossen-ceres"; }));
+  EXPECT_TRUE(std::none_of(first_other, methods.end(), [](const std::string& m) {
+    return m == "gp" || m == "fossen-ceres";
+  }));
+  // The cheap ones keep their job order.
+  std::vector<size_t> rest(order.begin() + (first_other - methods.begin()), order.end());
+  EXPECT_TRUE(std::is_sorted(rest.begin(), rest.end()));
 }
 
 // A small suite: one row per fit and test maneuver, each scored on another seed, the same at
