@@ -31,16 +31,7 @@ void NormalEquations::Add(const Eigen::Ref<const Eigen::MatrixXd>& x,
   const Eigen::Index k = x.cols();
   gram(0, 0) += static_cast<double>(x.rows());
   gram.block(1, 0, k, 1) += x.colwise().sum().transpose();
-  if (k <= 16) {
-    // The lower triangle, a dot product of two columns per entry: for a tree's few terms and a
-    // batch of rows this is 2-4x faster than a rank update through Eigen's matrix-product
-    // kernel, which packs both operands on every call (that packing and product were a quarter
-    // of a GP fit). From about 16 terms on the kernel is as fast or faster.
-    for (Eigen::Index j = 0; j < k; ++j)
-      for (Eigen::Index i = j; i < k; ++i) gram(1 + i, 1 + j) += x.col(i).dot(x.col(j));
-  } else {
-    gram.block(1, 1, k, k).selfadjointView<Eigen::Lower>().rankUpdate(x.transpose());
-  }
+  gram.block(1, 1, k, k).selfadjointView<Eigen::Lower>().rankUpdate(x.transpose());
   xty(0) += y.sum();
   xty.tail(k) += x.transpose() * y;
   yty += y.squaredNorm();
