@@ -1,11 +1,22 @@
+# usvid_test_settings(TARGET): what every test executable is compiled with: GoogleTest, OpenMP
+# (so that the precompiled header below suits every test) and where the data are.
+function(usvid_test_settings target)
+  target_link_libraries(${target} PRIVATE GTest::gtest GTest::gmock GTest::gtest_main
+                        OpenMP::OpenMP_CXX)
+  target_compile_definitions(${target} PRIVATE
+    USVID_SHARED_DATA_DIR="${PROJECT_SOURCE_DIR}/../shared/data"
+    USVID_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endfunction()
+
 # usvid_add_test(NAME source.cc LIBS lib...): one GoogleTest executable, registered with CTest.
+# It reuses the tests' precompiled header (usvid_test_pch, tests/CMakeLists.txt).
 function(usvid_add_test name source)
   cmake_parse_arguments(ARG "" "" "LIBS" ${ARGN})
   add_executable(${name} ${source})
-  target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gmock GTest::gtest_main)
-  target_compile_definitions(${name} PRIVATE
-    USVID_SHARED_DATA_DIR="${PROJECT_SOURCE_DIR}/../shared/data"
-    USVID_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS})
+  usvid_test_settings(${name})
+  target_precompile_headers(${name} REUSE_FROM usvid_test_pch)
+  add_dependencies(usvid_tests ${name})
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60)
 endfunction()
 

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets in the sanitize preset's tree (clang 14, ASan + UBSan; after
-# `cmake --workflow --preset sanitize` only the three fuzzers are left to link) and runs each for
-# SECONDS (default 60) on a copy of its seed corpus (tests/fuzz_corpus/NAME); a crash, a sanitizer
-# report or an escaped exception fails the run and leaves the input in OUT (default
-# build-sanitize/fuzz-runs).
+# `cmake --workflow --preset sanitize` they are built) and runs each for SECONDS (default 60) on a
+# copy of its seed corpus (tests/fuzz_corpus/NAME); a crash, a sanitizer report or an escaped
+# exception fails the run and leaves the input in OUT (default build-sanitize/fuzz-runs). The
+# preset builds the csv and expression fuzzers; the suite fuzzer links the whole library, and
+# runs after `cmake --preset sanitize -DUSVID_FUZZERS="csv;expression;suite"`.
 #   tools/fuzz.sh [SECONDS] [OUT]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -11,9 +12,10 @@ seconds=${1:-60}
 out=${2:-$root/build-sanitize/fuzz-runs}
 cd "$root"
 cmake --preset sanitize >/dev/null
-cmake --build build-sanitize --target csv_fuzzer expression_fuzzer suite_fuzzer >/dev/null
+cmake --build build-sanitize --target usvid_fuzzers >/dev/null
 mkdir -p "$out"
 for name in csv expression suite; do
+  [ -x "$root/build-sanitize/fuzz/${name}_fuzzer" ] || continue
   corpus="$out/$name-corpus"
   rm -rf "$corpus" && mkdir -p "$corpus"
   cp "$root/tests/fuzz_corpus/$name"/* "$corpus/"
