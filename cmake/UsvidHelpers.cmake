@@ -8,11 +8,17 @@ function(usvid_test_settings target)
     USVID_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endfunction()
 
-# usvid_add_test(NAME source.cc LIBS lib...): one GoogleTest executable, registered with CTest.
-# It reuses the tests' precompiled header (usvid_test_pch, tests/CMakeLists.txt).
+# usvid_add_test(NAME source.cc [JET] LIBS lib...): one GoogleTest executable, registered with
+# CTest. It reuses the tests' precompiled header (usvid_test_pch, tests/CMakeLists.txt). JET: the
+# source differentiates simulations with ceres::Jet, and is compiled as the library's Jet files.
 function(usvid_add_test name source)
-  cmake_parse_arguments(ARG "" "" "LIBS" ${ARGN})
-  add_executable(${name} ${source})
+  cmake_parse_arguments(ARG "JET" "" "LIBS" ${ARGN})
+  if(ARG_JET)
+    add_executable(${name})
+    usvid_jet_sources(${name} ${source})
+  else()
+    add_executable(${name} ${source})
+  endif()
   target_link_libraries(${name} PRIVATE ${ARG_LIBS})
   usvid_test_settings(${name})
   target_precompile_headers(${name} REUSE_FROM usvid_test_pch)

@@ -4,10 +4,11 @@
 # failed), so that a slow stage is seen before it eats CI's 90-minute limit.
 #   install-deps  the build's and the tests' Debian packages (tools/install-deps.sh --test)
 #   test          the normal build of everything and its tests (cmake --workflow --preset test)
-#   sanitize      the tests under AddressSanitizer and UndefinedBehaviorSanitizer (clang 14)
+#   sanitize      the input readers' tests and fuzzers under AddressSanitizer and
+#                 UndefinedBehaviorSanitizer (clang 14; docs/reliability.md#sanitizers)
 #   mpi           usvid compare over MPI ranks: it compiles harness/ranks_mpi.cc, and the compiler
 #                 cache serves every other object from the test stage (the same flags)
-#   fuzz          each libFuzzer target for 60 s (tools/fuzz.sh)
+#   fuzz          the CSV and equation libFuzzer targets for 60 s each (tools/fuzz.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 times=()
