@@ -1,56 +1,23 @@
-// RK4 steps per second of every vessel, in double and in ceres::Jet (derivatives with respect
-// to all parameters), on one thread. Goal (issue 3 and 10): odin3dof at 1e7 steps/s in double,
-// Jet within 10x of double.
-#include <benchmark/benchmark.h>
-#include <ceres/jet.h>
-
+// RK4 steps per second of every vessel in double, on one thread (bench/rk4_steps.h). Goal
+// (issue 3 and 10): odin3dof at 1e7 steps/s in double, Jet within 10x of double
+// (simulators_jet_bench.cc).
+#include "bench/rk4_steps.h"
 #include "simulators/eb2dof.h"
 #include "simulators/kvlcc2.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
 #include "simulators/odin_hs.h"
-#include "simulators/rk4.h"
 
 namespace usvid {
 namespace {
 
-template <typename V, typename T>
-void BM_Rk4Steps(benchmark::State& state) {
-  StateVector<T, V::kStates> x0 = StateVector<T, V::kStates>::Constant(T(0.1));
-  if constexpr (V::kStates > 3) x0(3) = T(6.0);
-  if constexpr (requires { V::kIdleRpm; }) x0(6) = T(1200.0), x0(8) = T(1.0);  // odin-hs jets
-  StateVector<T, V::kStates> x;
-  std::array<T, V::kInputs> u;
-  for (int i = 0; i < V::kInputs; ++i) u[i] = T(0.3 * V::kInputMax[i]);
-  std::array<T, V::kParams> p;
-  for (int i = 0; i < V::kParams; ++i) {
-    if constexpr (std::is_same_v<T, double>) {
-      p[i] = V::kDefaultParams[i];
-    } else {
-      p[i] = T(V::kDefaultParams[i], i);
-    }
-  }
-  const Environment<T> env;
-  auto f = [&](const T* xs, T* dx) { V::template Derivative<T>(xs, u.data(), p.data(), env, dx); };
-  for (auto _ : state) {
-    x = x0;  // 1 s of motion per batch, from the same realistic state
-    for (int k = 0; k < 1000; ++k) Rk4Step<T, V::kStates>(f, 1e-3, x);
-    benchmark::DoNotOptimize(x);
-  }
-  state.counters["steps_per_second"] =
-      benchmark::Counter(1000.0 * state.iterations(), benchmark::Counter::kIsRate);
-}
+using bench::BM_Rk4Steps;
 
 BENCHMARK(BM_Rk4Steps<Msd, double>);
 BENCHMARK(BM_Rk4Steps<Odin3Dof, double>);
 BENCHMARK(BM_Rk4Steps<Eb2Dof, double>);
 BENCHMARK(BM_Rk4Steps<OdinHs, double>);
 BENCHMARK(BM_Rk4Steps<Kvlcc2, double>);
-BENCHMARK(BM_Rk4Steps<Msd, ceres::Jet<double, Msd::kParams>>);
-BENCHMARK(BM_Rk4Steps<Odin3Dof, ceres::Jet<double, Odin3Dof::kParams>>);
-BENCHMARK(BM_Rk4Steps<Eb2Dof, ceres::Jet<double, Eb2Dof::kParams>>);
-BENCHMARK(BM_Rk4Steps<OdinHs, ceres::Jet<double, OdinHs::kParams>>);
-BENCHMARK(BM_Rk4Steps<Kvlcc2, ceres::Jet<double, Kvlcc2::kParams>>);
 
 }  // namespace
 }  // namespace usvid
