@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string_view>
 
 #include "core/check.h"
@@ -395,7 +396,44 @@ double ApplyOperator(OpCode op, double x, double y) {
   USVID_UNREACHABLE("every function is handled above");
 }
 
-Expression::Expression() : program_{{OpCode::kConstant, 0, 0.0}} {}
+Expression::Expression() : program_{{OpCode::kConstant, 0, 0.0}}, fused_(Fuse(program_)) {}
+
+std::vector<Expression::Fused> Expression::Fuse(const std::vector<Instruction>& program) {
+  // The binary operators, and the step of each with its right operand a constant or a variable.
+  auto fused_op = [](OpCode op, bool constant) -> std::optional<Step> {
+    switch (op) {
+      case OpCode::kAdd:
+        return constant ? Step::kAddConstant : Step::kAddVariable;
+      case OpCode::kSubtract:
+        return constant ? Step::kSubtractConstant : Step::kSubtractVariable;
+      case OpCode::kMultiply:
+        return constant ? Step::kMultiplyConstant : Step::kMultiplyVariable;
+      case OpCode::kDivide:
+        return constant ? Step::kDivideConstant : Step::kDivideVariable;
+      default:
+        return std::nullopt;
+    }
+  };
+  static_assert(static_cast<int>(Step::kSqrt) == static_cast<int>(OpCode::kSqrt),
+                "the steps begin with the op codes, in their order");
+  std::vector<Fused> out;
+  out.reserve(program.size());
+  for (std::size_t i = 0; i < program.size(); ++i) {
+    const Instruction& in = program[i];
+    const bool operand = in.op == OpCode::kConstant || in.op == OpCode::kVariable;
+    // A binary operator right after a push takes the pushed value as its right operand; its left
+    // operand is then on the stack already, as the program is well formed.
+    if (operand && i + 1 < program.size() && i > 0) {
+      if (const auto op = fused_op(program[i + 1].op, in.op == OpCode::kConstant)) {
+        out.push_back({*op, in.index, in.value});
+        ++i;
+        continue;
+      }
+    }
+    out.push_back({static_cast<Step>(in.op), in.index, in.value});
+  }
+  return out;
+}
 
 Expression Expression::Parse(const std::string& text, const std::string& where) {
   Parser parser(text, where);
@@ -413,6 +451,7 @@ Expression Expression::Parse(const std::string& text, const std::string& where) 
     in.index = static_cast<int>(it - e.variables_.begin());
   }
   e.max_stack_ = MaxStack(e.program_);
+  e.fused_ = Fuse(e.program_);
   return e;
 }
 

@@ -307,6 +307,27 @@ TEST_F(ExpressionTest, DatasetEvaluationMatchesPerSample) {
   }
 }
 
+// Evaluation folds a constant or a variable into the operator that takes it as its right operand
+// (Expression::Fuse); each binary operator then computes exactly what the operator itself does,
+// protected division by a near-zero operand included.
+TEST_F(ExpressionTest, FoldedRightOperandsComputeTheOperatorExactly) {
+  const std::pair<const char*, OpCode> ops[] = {{"+", OpCode::kAdd},
+                                                {"-", OpCode::kSubtract},
+                                                {"*", OpCode::kMultiply},
+                                                {"/", OpCode::kDivide}};
+  const double u = 0.731, r = -1.9, v = 1e-13;  // v: below the protected division's epsilon
+  for (const auto& [symbol, op] : ops) {
+    for (const std::string right : {"v", "r", "0.37", "1e-13"}) {
+      const double rhs = right == "v" ? v : right == "r" ? r : std::stod(right);
+      const Expression e = Expression::Parse("(u*u) " + std::string(symbol) + " " + right);
+      std::vector<double> x;
+      for (const std::string& name : e.Variables())
+        x.push_back(name == "u" ? u : name == "r" ? r : v);
+      EXPECT_TRUE(Same(e.Evaluate(x), ApplyOperator(op, u * u, rhs))) << symbol << right;
+    }
+  }
+}
+
 // A channel the data lack is named in the error, with the equation it is needed for.
 TEST_F(ExpressionTest, DatasetEvaluationThrowsOnMissingChannel) {
   Dataset data(Eigen::Vector2d(0.0, 1.0));
