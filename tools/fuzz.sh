@@ -3,15 +3,20 @@
 # `cmake --workflow --preset sanitize` they are built) and runs each for SECONDS (default 60) on a
 # copy of its seed corpus (tests/fuzz_corpus/NAME); a crash, a sanitizer report or an escaped
 # exception fails the run and leaves the input in OUT (default build-sanitize/fuzz-runs). The
-# preset builds the csv and expression fuzzers; the suite fuzzer links the whole library, and
-# runs after `cmake --preset sanitize -DUSVID_FUZZERS="csv;expression;suite"`.
-#   tools/fuzz.sh [SECONDS] [OUT]
+# preset builds the csv and expression fuzzers; the suite fuzzer links the whole library:
+#   USVID_FUZZERS="csv;expression;suite" tools/fuzz.sh 600
+# An existing sanitize tree is used as it is configured.
+#   [USVID_FUZZERS=...] tools/fuzz.sh [SECONDS] [OUT]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 out=${2:-$root/build-sanitize/fuzz-runs}
 cd "$root"
-cmake --preset sanitize >/dev/null
+if [ -n "${USVID_FUZZERS:-}" ]; then
+  cmake --preset sanitize -DUSVID_FUZZERS="$USVID_FUZZERS" >/dev/null
+elif [ ! -f build-sanitize/CMakeCache.txt ]; then
+  cmake --preset sanitize >/dev/null
+fi
 cmake --build build-sanitize --target usvid_fuzzers >/dev/null
 mkdir -p "$out"
 for name in csv expression suite; do
