@@ -19,6 +19,7 @@
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
 #include "metrics/structure.h"
+#include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
@@ -37,30 +38,21 @@ IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vess
   r.vessel = vessel;
   r.seed = seed;
   const nlohmann::json& o = method.options;
-  r.operators = o.value("operators", r.operators);
-  r.preset = o.value("preset", r.preset);
-  r.features = o.value("features", r.features);
-  auto set = [&](const char* key, auto& field) {
-    if (o.contains(key)) field = o[key].get<typename std::decay_t<decltype(field)>::value_type>();
-  };
-  set("population", r.population);
-  set("generations", r.generations);
-  set("max_depth", r.max_depth);
-  set("ols_threshold", r.ols_threshold);
-  set("validation_fraction", r.validation_fraction);
-  set("horizon_s", r.horizon_s);
-  set("constant_iterations", r.constant_iterations);
-  set("restarts", r.restarts);
-  set("max_terms", r.hybrid_terms);
-  r.fit_mode = o.value("fit", r.fit_mode);
-  r.segment_s = o.value("segment_s", r.segment_s);
+  r.options = nlohmann::json::object();
+  for (const auto& [key, value] : o.items())
+    if (!IsSharedSuiteKey(key)) r.options[key] = value;
   r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
+  if (o.contains("derivative"))
+    r.preprocess.derivative = DerivativeMethod::Parse(o["derivative"].get<std::string>());
   r.preprocess.forces = ForcesFor(method, vessel);
-  r.prior_sd = o.value("prior_sd", r.prior_sd);
-  if (o.contains("refit_params"))
-    r.refit_params = o["refit_params"].get<std::vector<std::string>>();
-  if (o.contains("states")) r.states = o["states"].get<std::vector<std::string>>();
-  if (o.contains("inputs")) r.inputs = o["inputs"].get<std::vector<std::string>>();
+  // A list option, as an array or a comma-separated string (checked by CheckSuiteMethod).
+  auto names = [&](const char* key) {
+    const MethodOptions checked = ValidateOptions(method.method, SharedSuiteOptions(),
+                                                  nlohmann::json{{key, o[key]}}, "suite");
+    return checked.List(key);
+  };
+  if (o.contains("states")) r.states = names("states");
+  if (o.contains("inputs")) r.inputs = names("inputs");
   return r;
 }
 

@@ -12,7 +12,9 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "diagnosis/diagnose.h"
 #include "maneuvers/maneuver_factory.h"
+#include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
 #include "simulation/vessel_simulator.h"
 
@@ -40,67 +42,60 @@ std::vector<T> ListOf(const nlohmann::json& v, const std::string& where) {
   return out;
 }
 
-// The options a suite's method may carry, and what each must be.
-enum class OptionKind { kText, kCount, kNumber, kNames };
-const std::map<std::string, OptionKind>& MethodOptions() {
-  static const std::map<std::string, OptionKind> options = {
-      {"operators", OptionKind::kText},
-      {"population", OptionKind::kCount},
-      {"generations", OptionKind::kCount},
-      {"max_depth", OptionKind::kCount},
-      {"ols_threshold", OptionKind::kNumber},
-      {"fit", OptionKind::kText},
-      {"segment_s", OptionKind::kNumber},
-      {"rate", OptionKind::kNumber},
-      {"prior_sd", OptionKind::kNumber},
-      {"refit_params", OptionKind::kNames},
-      {"max_terms", OptionKind::kCount},
-      {"states", OptionKind::kNames},
-      {"inputs", OptionKind::kNames},
-      {"causes", OptionKind::kCount},
-      {"preset", OptionKind::kText},
-      {"validation_fraction", OptionKind::kNumber},
-      {"horizon_s", OptionKind::kNumber},
-      {"constant_iterations", OptionKind::kCount},
-      {"restarts", OptionKind::kCount},
-      {"forces", OptionKind::kText},
-      {"features", OptionKind::kText}};
-  return options;
-}
-
 }  // namespace
 
-void CheckMethodOptions(const nlohmann::json& options, const std::string& where) {
-  for (const auto& [key, value] : options.items()) {
-    const auto known = MethodOptions().find(key);
-    if (known == MethodOptions().end()) {
-      std::string names;
-      for (const auto& [name, _] : MethodOptions()) names += (names.empty() ? "" : ", ") + name;
-      throw InputError(where + ": unknown option '" + key + "' (known: " + names + ")");
+const std::vector<OptionSpec>& SharedSuiteOptions() {
+  static const std::vector<OptionSpec> shared = {
+      ListOption("states", {}, {}, "the states to fit; none: the vessel's"),
+      ListOption("inputs", {}, {}, "the input channels; none: the vessel's (or its jets' forces)"),
+      NumberOption("rate", std::nullopt, 0, kUnbounded,
+                   "resample the training data to this rate [Hz]; none or 0: the data's own"),
+      [] {
+        OptionSpec forces = ChoiceOption(
+            "forces", "", {"none", "waterjet"},
+            "the input map: none (the commands) or waterjet (the jets' forces); unset: "
+            "waterjet for a method that takes channels on a vessel that logs its jets");
+        forces.default_value = nullptr;
+        return forces;
+      }(),
+      TextOption("derivative", std::nullopt,
+                 "how the states' derivatives are computed: sg[:W[:P]], spline[:LAMBDA], "
+                 "tv[:ALPHA] or euler[:W]; none: spline"),
+  };
+  return shared;
+}
+
+bool IsSharedSuiteKey(const std::string& key) {
+  return std::ranges::any_of(SharedSuiteOptions(),
+                             [&](const OptionSpec& s) { return s.key == key; });
+}
+
+const std::vector<OptionSpec>& DiagnoseOptionSpecs() {
+  static const std::vector<OptionSpec> specs = {
+      IntegerOption("causes", diagnosis::DiagnoseOptions{}.max_causes, 0, 100,
+                    "most causes added to the nominal vessel"),
+      NumberOption("segment_s", 0.0, 0, kUnbounded,
+                   "shooting segment length [s]; 0: 1.5 hull lengths of travel, at least 10 s"),
+  };
+  return specs;
+}
+
+void CheckSuiteMethod(const SuiteMethod& method, const std::string& where) {
+  std::vector<OptionSpec> specs = method.method == kDiagnoseMethod
+                                      ? DiagnoseOptionSpecs()
+                                      : FindMethod(method.method).options;
+  // The shared keys a method declares itself (none today) stay its own.
+  for (const OptionSpec& shared : SharedSuiteOptions())
+    if (std::ranges::none_of(specs, [&](const OptionSpec& s) { return s.key == shared.key; }))
+      specs.push_back(shared);
+  const MethodOptions checked = ValidateOptions(method.method, specs, method.options, where);
+  if (checked.Has("derivative")) {
+    try {
+      DerivativeMethod::Parse(checked.Text("derivative"));
+    } catch (const InputError& e) {
+      throw InputError(where + ": method " + method.method + ": option 'derivative': " +
+                       e.what());
     }
-    bool ok = false;
-    switch (known->second) {
-      case OptionKind::kText:
-        ok = value.is_string();
-        break;
-      case OptionKind::kCount:  // a whole number a C++ int holds
-        ok = value.is_number_integer() && value.get<int64_t>() >= 0 &&
-             value.get<int64_t>() <= 1000000000;
-        break;
-      case OptionKind::kNumber:
-        ok = value.is_number() && std::isfinite(value.get<double>()) && value.get<double>() >= 0;
-        break;
-      case OptionKind::kNames:
-        ok = value.is_array() &&
-             std::all_of(value.begin(), value.end(), [](const auto& n) { return n.is_string(); });
-        break;
-    }
-    if (!ok)
-      throw InputError(where + ": option '" + key + "' " + value.dump() + " must be " +
-                       (known->second == OptionKind::kText     ? "a string"
-                        : known->second == OptionKind::kCount  ? "a whole number from 0 to 1e9"
-                        : known->second == OptionKind::kNumber ? "a finite number >= 0"
-                                                               : "a list of names"));
   }
 }
 
@@ -188,11 +183,11 @@ std::vector<SuiteMethod> ParseMethods(const nlohmann::json& list, const std::str
     if (!KnownSuiteMethod(sm.method))
       throw InputError(file + ": methods: unknown method '" + sm.method +
                        "' (known: " + KnownSuiteMethods() + ")");
-    const std::string where = file + ": methods: " + sm.method;
-    CheckMethodOptions(sm.method == kExternalMethod ? ExternalOptions(sm.options, where) : sm.options,
-                       where);
-    if (sm.options.contains("forces") && sm.options["forces"] != "none")
-      ForceChannels(sm.options["forces"].get<std::string>());  // throws for an unknown map
+    const std::string where = file + ": methods";
+    if (sm.method == kExternalMethod)
+      ExternalOptions(sm.options, where + ": " + sm.method);
+    else
+      CheckSuiteMethod(sm, where);
     methods.push_back(sm);
   }
   return methods;
@@ -204,9 +199,12 @@ std::string SuiteMethod::Label() const {
   if (method == kDiagnoseMethod) return method;
   if (method == kExternalMethod) return options.at("name").get<std::string>();
   const std::string& option = FindMethod(method).label_option;
-  if (!option.empty() && options.contains(option))
-    return method + "[" + options.at(option).get<std::string>() + "]";
-  return method;
+  if (option.empty() || !options.contains(option)) return method;
+  const nlohmann::json& value = options.at(option);
+  if (value.is_string()) return method + "[" + value.get<std::string>() + "]";
+  std::string text;  // a list given as an array
+  for (const auto& item : value) text += (text.empty() ? "" : ",") + item.get<std::string>();
+  return method + "[" + text + "]";
 }
 
 std::string FitJob::Id() const {

@@ -4,9 +4,9 @@
 //   {"name": "...", "vessels": ["odin3dof"], "train_maneuvers": ["random-steps"],
 //    "test_maneuvers": ["multisine"], "methods": [NAME, or {"method": NAME, options...}],
 //    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180}
-// (method options: gp's operators, population, generations, max_depth, ols_threshold;
-// fossen-ceres' fit and segment_s; any method's rate, the Hz its data are resampled to;
-// harness/suites/default.json is an example).
+// (a method's options are those it declares, docs/options.md, with the keys every method
+// shares: states, inputs, rate, forces and derivative; harness/suites/default.json is an
+// example).
 // Or, on measured data (suite_data.h), the training and test files instead of maneuvers:
 //   {"name": "kvlcc2-marin", "vessels": ["kvlcc2"], "data": {"train": [{"name": ...,
 //    "file": ..., "format": "marin-dat"}], "test": [...]}, "methods": [...]}
@@ -27,6 +27,7 @@
 
 #include "harness/external_method.h"
 #include "harness/suite_data.h"
+#include "methods/method_options.h"
 
 namespace usvid {
 
@@ -64,9 +65,21 @@ struct FitJob {
   std::string Id() const;
 };
 
-// A method's options checked against the options a suite may give (names, types, ranges);
-// InputError naming `where` and the option otherwise.
-void CheckMethodOptions(const nlohmann::json& options, const std::string& where);
+// The keys a suite's method entry (and Python's identify) may give besides the method's own
+// options: the channels (states, inputs) and the preprocessing every method shares (rate,
+// forces, derivative).
+const std::vector<OptionSpec>& SharedSuiteOptions();
+
+// diagnose's options in a suite: causes, segment_s.
+const std::vector<OptionSpec>& DiagnoseOptionSpecs();
+
+// A registered method's or diagnose's entry checked, before any fit: the shared keys and the
+// method's declared options (names, types, ranges; a derivative spec parsed). Throws
+// InputError, one line naming `where`, the method, the key and what is allowed.
+void CheckSuiteMethod(const SuiteMethod& method, const std::string& where);
+
+// Whether `key` is one of SharedSuiteOptions.
+bool IsSharedSuiteKey(const std::string& key);
 
 // Relative data paths are taken from the folder of `file`.
 Suite ParseSuite(const nlohmann::json& value, const std::string& file);

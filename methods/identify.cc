@@ -1,33 +1,30 @@
 #include "methods/identify.h"
 
+#include <stdexcept>
+
 #include "core/derived_channels.h"
-#include "core/error.h"
 #include "methods/registry.h"
 #include "preprocessing/waterjet_forces.h"
 
 namespace usvid {
-namespace {
 
-// "gp and sindy": the methods that take regime features.
-std::string FeatureMethods() {
-  std::string names;
-  for (const Method& m : Methods())
-    if (m.regime_features) names += (names.empty() ? "" : " and ") + m.name;
-  return names;
+MethodOptions CheckedOptions(const IdentifyRequest& request, const std::string& where) {
+  const Method& method = FindMethod(request.method);
+  return ValidateOptions(method.name, method.options, request.options, where);
 }
-
-}  // namespace
 
 nlohmann::json Identify(Dataset data, const IdentifyRequest& o, const Logger& log) {
   const Method& method = FindMethod(o.method);
-  if (!method.regime_features && o.features != "auto")
-    throw InputError("--features: only " + FeatureMethods() + " take regime features");
-  if (o.fit_mode != "simulation" && o.fit_mode != "equation")
-    throw InputError("--fit '" + o.fit_mode + "': unknown (known: simulation, equation)");
+  const MethodOptions options = CheckedOptions(o, "");
   // Speed and course where only body velocities were logged (the 2-DOF models need them).
   AddSpeedAndCourse(data);
   AddForces(data, o.preprocess.forces);
-  return method.identify(data, o, log);
+  nlohmann::json model = method.identify(data, o, options, log);
+  if (const std::vector<std::string> unread = options.Unread(); !unread.empty())
+    throw std::logic_error("method " + method.name + " declares option '" + unread.front() +
+                           "' but did not read it");
+  if (!model.contains("options")) model["options"] = options.Json();  // a preset may say more
+  return model;
 }
 
 }  // namespace usvid

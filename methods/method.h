@@ -10,6 +10,7 @@
 
 #include "core/dataset.h"
 #include "methods/identify_request.h"
+#include "methods/method_options.h"
 
 namespace usvid {
 
@@ -23,17 +24,20 @@ inline void Log(const Logger& log, const std::string& line) {
 struct Method {
   std::string name;     // as --method and suites spell it
   std::string summary;  // one line for --help
+  // Its options, declared once (methods/method_options.h): the command line, suites, Python and
+  // docs/options.md are made from this list.
+  std::vector<OptionSpec> options;
   // model.json of the method fitted to `data` (speed, course and the request's forces already
-  // derived): at least method, vessel, states, inputs, parameters and train. Throws InputError
-  // for options, channels or data the method cannot take.
+  // derived) with `options` (the request's, checked against the declaration): at least method,
+  // vessel, states, inputs, parameters and train, and "options" when a preset made the options
+  // it ran with other than the declared defaults. It must read every option it declares.
+  // Throws InputError for channels or data the method cannot take.
   std::function<nlohmann::json(const Dataset& data, const IdentifyRequest& request,
-                               const Logger& log)>
+                               const MethodOptions& options, const Logger& log)>
       identify;
   // Takes its inputs as channels, so that a waterjet log's jet forces may stand in for the
   // commands (the suite's default input map). Vessel models take the vessel's own inputs.
   bool channel_inputs = false;
-  // Takes regime features among its variables (--features).
-  bool regime_features = false;
   // Its result depends on the seed: on measured data, where the data do not change with the
   // seed, a suite fits it once per seed, the other methods once.
   bool seeded = false;

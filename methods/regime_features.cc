@@ -44,4 +44,14 @@ std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double frou
   return out;
 }
 
+OptionSpec RegimeFeaturesOption(int hinges) {
+  return ChoiceOption("features", "auto", {"auto", "hinges", "froude", "none"},
+                      "regime features among the variables: auto (hinges when the vessel has a "
+                      "length and the record crosses a regime boundary), hinges (the Froude "
+                      "number Fn and abs(Fn - k) at " +
+                          std::to_string(hinges) +
+                          " quantiles of the record's Fn), froude (Fn alone), none");
+}
+
 }  // namespace usvid
+

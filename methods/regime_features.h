@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/dataset.h"
+#include "methods/method_options.h"
 
 namespace usvid {
 
@@ -63,5 +64,9 @@ inline constexpr double kRegimeHorizonS = 30.0;
 // v.
 std::vector<DerivedVariable> RegimeFeatures(const std::string& spec, double froude_per_speed,
                                             const Dataset& data, int hinges);
+
+// The option "features" of a method that takes regime features, placing `hinges` hinges: one
+// declaration, shared by gp and sindy.
+OptionSpec RegimeFeaturesOption(int hinges);
 
 }  // namespace usvid

@@ -22,6 +22,7 @@
 #include "harness/suite.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/identify.h"
+#include "methods/registry.h"
 #include "metrics/evaluation.h"
 #include "python/python_data.h"
 #include "sensors/noise.h"
@@ -81,7 +82,8 @@ py::dict Simulate(const std::string& vessel, const py::object& maneuver, const p
   return ToDict(data);
 }
 
-// identify's keyword options: the suite's method options (harness/suite.h), plus threads.
+// identify's keyword options: the method's declared options and the keys every method shares,
+// as a suite's method entry takes them (harness/suite.h), plus threads and seed.
 py::dict Identify(const py::dict& data, const std::string& method, const py::object& vessel,
                   const py::object& states, const py::object& inputs, const py::kwargs& kwargs) {
   nlohmann::json options = ToJson(kwargs);
@@ -98,7 +100,8 @@ py::dict Identify(const py::dict& data, const std::string& method, const py::obj
   const auto seed = static_cast<uint64_t>(take("seed", 1));
   if (!states.is_none()) options["states"] = states.cast<std::vector<std::string>>();
   if (!inputs.is_none()) options["inputs"] = inputs.cast<std::vector<std::string>>();
-  CheckMethodOptions(options, "identify: " + method);
+  FindMethod(method);  // an unknown method is named before its options
+  CheckSuiteMethod({method, options}, "identify");
   const std::string vessel_name = vessel.is_none() ? "" : vessel.cast<std::string>();
   IdentifyRequest request = MethodRequest({method, options}, vessel_name, seed);
   request.threads = threads;

@@ -5,7 +5,10 @@
 #  3. no bare std::abort() (USVID_CHECK instead, core/check.h);
 #  4. nothing cites a document outside the repository for its meaning;
 #  5. a method's name is spelled, as a string, in at most two source files (its registration and
-#     its implementation; docs/adding-a-method.md).
+#     its implementation; docs/adding-a-method.md);
+#  6. every option a method declares (methods/method_options.h) is read by a method: an option
+#     declared and never read would be accepted and silently ignored. (Identify checks the same
+#     at run time, after every fit: MethodOptions::Unread.)
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root"
@@ -57,6 +60,15 @@ while IFS= read -r name; do
     fail=1
   fi
 done < <(grep -rhoE 'kMethodName = "[^"]+"|kRefitMethodName = "[^"]+"|kNominalMethodName = "[^"]+"' methods |
+           sed -E 's/.*"([^"]+)"/\1/' | sort -u)
+
+readers='\.(Integer|Number|Text|List|Flag|Has|Given|OptionalInteger|OptionalNumber)\("'
+while IFS= read -r key; do
+  if ! grep -rqE "${readers}${key}\"" methods --include='*.h' --include='*.cc'; then
+    echo "option \"$key\" is declared but no method reads it (methods/method_options.h)"
+    fail=1
+  fi
+done < <(grep -rhoE '(Integer|Number|Choice|List|Flag|Text)Option\(\s*"[a-z_0-9]+"' methods |
            sed -E 's/.*"([^"]+)"/\1/' | sort -u)
 
 exit $fail

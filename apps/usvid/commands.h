@@ -13,6 +13,7 @@ void AddVesselCommand(CLI::App& app);
 void AddPreprocessCommand(CLI::App& app);
 void AddActuatorsCommand(CLI::App& app);
 void AddIdentifyCommand(CLI::App& app);
+void AddMethodsCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
 void AddCompareCommand(CLI::App& app);
 void AddDiagnoseCommand(CLI::App& app);

@@ -32,6 +32,7 @@ int Run(int argc, char** argv) {
   usvid::AddPreprocessCommand(app);
   usvid::AddActuatorsCommand(app);
   usvid::AddIdentifyCommand(app);
+  usvid::AddMethodsCommand(app);
   usvid::AddEvaluateCommand(app);
   usvid::AddCompareCommand(app);
   usvid::AddDiagnoseCommand(app);

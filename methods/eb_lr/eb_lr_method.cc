@@ -55,7 +55,7 @@ Channels EbLrChannels(const IdentifyRequest& o) {
 }
 
 nlohmann::json IdentifyEbLrModel(const Dataset& data, const IdentifyRequest& o,
-                                 const Logger& log) {
+                                 const MethodOptions&, const Logger& log) {
   ChannelFit fit = PrepareChannelFit(data, o, EbLrChannels(o), log);
   const std::vector<std::string>& states = fit.channels.states;
   const std::vector<std::string>& inputs = fit.channels.inputs;

@@ -21,14 +21,15 @@ namespace {
 // waterjet or the rudder-propeller input map, or the high-speed form on the jets' forces),
 // equation error then multiple shooting.
 template <typename Model>
-nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
-                              const PreparedData& prepared, const Logger& log) {
+nlohmann::json IdentifyFossen(const IdentifyRequest& request, const MethodOptions& o,
+                              const Dataset& data, const PreparedData& prepared,
+                              const Logger& log) {
   constexpr bool kOdin3Dof = std::is_same_v<Model, fossen::Odin3DofModel>;
   fossen::FossenOptions fo;
-  fo.segment_s = o.segment_s > 0 ? o.segment_s : 10.0;
-  fo.robust = o.robust;
-  fo.max_rows = o.fit_rows.value_or(kCeresFitRows);
-  if (fo.max_rows < 0) throw InputError("--fit-rows: must be 0 (all) or more");
+  fo.segment_s = o.Number("segment_s");
+  fo.robust = o.Flag("robust");
+  fo.max_rows = o.Integer("fit_rows");
+  const std::string fit_mode = o.Text("fit");
   if (fo.max_rows > 0 && prepared.data.rows() > fo.max_rows)
     Log(log, "fitting " + std::to_string(fo.max_rows) + " of " +
                  std::to_string(prepared.data.rows()) +
@@ -39,7 +40,7 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
   const auto eq = fossen::FitEquationErrorFor<Model>(prepared, fo);
   Log(log, "equation-error fit: " + eq.termination);
   auto fit = eq;
-  if (o.fit_mode == "simulation") {
+  if (fit_mode == "simulation") {
     fit = fossen::FitSimulationErrorFor<Model>(prepared, eq.params, fo);
     Log(log, "simulation-error fit (multiple shooting): " + fit.termination);
   }
@@ -67,7 +68,7 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
       return SegmentedSimulationError(sim, p, e, data, {"u", "v", "r"}, fo.segment_s);
     };
     const DelayEstimate d =
-        ContinuousDelay(cost, 1, o.preprocess.max_delay_s, {prepared.delay_s}, 60);
+        ContinuousDelay(cost, 1, request.preprocess.max_delay_s, {prepared.delay_s}, 60);
     refined = d.delay_s;
     Log(log, "delay refined on the simulation error: " + std::to_string(d.delay_s) + " s");
   }
@@ -75,11 +76,11 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& o, const Dataset& data,
           {"equations", equations},
           {"fossen",
            {{"model", std::string(Model::kName)},
-            {"mode", o.fit_mode},
+            {"fit", fit_mode},
             {"segment_s", fo.segment_s},
             {"fit_rows", fo.max_rows},
             {"rows_fitted", fit.rows},
-            {"robust", o.robust},
+            {"robust", fo.robust},
             {"parameter_sd", sd},
             {"covariance_ok", fit.covariance_ok},
             {"termination", fit.termination},
@@ -95,9 +96,9 @@ const std::vector<std::string> kForces = {"tau_x", "tau_y", "tau_n"},
                                kJetForces = {"tau_x", "tau_y", "tau_n", "jet_flow"},
                                kWaterjets = {"throttle", "nozzle", "bucket"}, kRudder = {"delta", "rev"};
 
-nlohmann::json IdentifyFossenModel(const Dataset& data, const IdentifyRequest& o,
-                                   const Logger& log) {
-  const Channels c = DefaultChannels(o);
+nlohmann::json IdentifyFossenModel(const Dataset& data, const IdentifyRequest& request,
+                                   const MethodOptions& o, const Logger& log) {
+  const Channels c = DefaultChannels(request);
   if (c.states != std::vector<std::string>{"u", "v", "r"} ||
       (c.inputs != kForces && c.inputs != kJetForces && c.inputs != kWaterjets &&
        c.inputs != kRudder))
@@ -107,17 +108,17 @@ nlohmann::json IdentifyFossenModel(const Dataset& data, const IdentifyRequest& o
         "damping (--vessel odin-hs --forces waterjet), throttle,nozzle,bucket through a "
         "waterjet map (--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel "
         "kvlcc2)");
-  ChannelFit fit = PrepareChannelFit(data, o, c, log);
+  ChannelFit fit = PrepareChannelFit(data, request, c, log);
   const std::vector<std::string>& inputs = fit.channels.inputs;
   if (inputs == kJetForces)
-    fit.model.update(IdentifyFossen<fossen::JetForceModel>(o, data, fit.prepared, log));
+    fit.model.update(IdentifyFossen<fossen::JetForceModel>(request, o, data, fit.prepared, log));
   else if (inputs == kWaterjets)
-    fit.model.update(IdentifyFossen<fossen::WaterjetModel>(o, data, fit.prepared, log));
+    fit.model.update(IdentifyFossen<fossen::WaterjetModel>(request, o, data, fit.prepared, log));
   else if (inputs == kRudder)
-    fit.model.update(IdentifyFossen<fossen::RudderModel>(o, data, fit.prepared, log));
+    fit.model.update(IdentifyFossen<fossen::RudderModel>(request, o, data, fit.prepared, log));
   else
-    fit.model.update(IdentifyFossen<fossen::Odin3DofModel>(o, data, fit.prepared, log));
-  SetTrain(fit, o);
+    fit.model.update(IdentifyFossen<fossen::Odin3DofModel>(request, o, data, fit.prepared, log));
+  SetTrain(fit, request);
   return fit.model;
 }
 
@@ -127,6 +128,16 @@ Method FossenCeresMethod() {
   Method m;
   m.name = std::string(fossen::kMethodName);
   m.summary = "parametric Fossen 3-DOF, Ceres: forces, or a waterjet or rudder input map";
+  m.options = {
+      ChoiceOption("fit", "simulation", {"simulation", "equation"},
+                   "simulation error (multiple shooting, after an equation-error start) or "
+                   "equation error alone"),
+      NumberOption("segment_s", 10.0, 0, kUnbounded, "shooting segment length [s]",
+                   /*min_exclusive=*/true),
+      FlagOption("robust", "Huber loss on the residuals"),
+      IntegerOption("fit_rows", kCeresFitRows, 0, kUnbounded,
+                    "the most rows the Ceres fits use, spread over a longer record (0: all)"),
+  };
   m.identify = IdentifyFossenModel;
   m.channel_inputs = true;
   m.relative_cost = 10.0;  // the multiple-shooting fit

@@ -15,53 +15,91 @@
 namespace usvid {
 namespace {
 
-// GP's options: the preset's, with what the request sets in their place; throws InputError
-// for an unknown preset or an option out of its range.
-gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& o) {
+std::vector<OptionSpec> GpOptionSpecs() {
+  // The defaults are the search's and the identification's own (search.h, gp_identify.h).
+  const gp::GpOptions d;
+  const gp::GpIdentifyOptions di;
+  return {
+      ChoiceOption("preset", "default", {"default", "report"},
+                   "default (terms chosen by held-out error, constant optimisation, restarts, "
+                   "the model chosen by short-horizon simulation) or report (the reference "
+                   "report's Table 3.1 exactly); the options given override it"),
+      ListOption("operators", {"+", "-", "*"},
+                 {"+", "-", "*", "/", "abs", "tanh", "sin", "cos", "exp", "sqrt"},
+                 "the functions trees are built of (the report's: +,-,*)"),
+      IntegerOption("population", d.population, 4, 1e6, "trees per generation"),
+      IntegerOption("generations", d.generations, 1, 1e6, "most generations"),
+      IntegerOption("max_depth", d.max_depth, 2, 17, "deepest tree"),
+      NumberOption("ols_threshold", std::nullopt, 0, 1,
+                   "cut terms whose error reduction ratio is below this (the report's 0.05); "
+                   "none: the number of terms chosen by held-out error",
+                   /*min_exclusive=*/false, /*max_exclusive=*/true),
+      NumberOption("validation_fraction", di.validation_fraction, 0, 0.5,
+                   "the last share of the record on which the model is chosen among the Pareto "
+                   "candidates by short-horizon simulation (0: none)"),
+      NumberOption("horizon_s", std::nullopt, 0, 600,
+                   "seconds of each short-horizon simulation that chooses the model and refits "
+                   "its weights; none: " +
+                       FormatNumber(di.horizon_s) + ", or " + FormatNumber(kRegimeHorizonS) +
+                       " on a record with regime features",
+                   /*min_exclusive=*/true),
+      IntegerOption("constant_iterations", d.constant_iterations, 0, 1000,
+                    "Levenberg-Marquardt iterations on the constants inside terms, per elite "
+                    "(0: none)"),
+      IntegerOption("restarts", d.restarts, 0, 1000,
+                    "restarts on stagnation before the search stops"),
+      ChoiceOption("fitness", "r2", {"r2", "mse"},
+                   "r2 (held-out, with a size penalty) or mse"),
+      ChoiceOption("fit", "simulation", {"simulation", "equation"},
+                   "the chosen terms' weights by equation error, then by short-horizon "
+                   "simulation error (simulation), or by equation error alone; the report "
+                   "preset's: equation"),
+      IntegerOption("fit_rows", d.fit_rows, 0, kUnbounded,
+                    "rows the search scores on, spread over the record (0: all)"),
+      RegimeFeaturesOption(kGpFroudeHinges),
+  };
+}
+
+// GP's options: the preset's, with the options given in their place; throws InputError for an
+// option out of the search's own range (GpOptions::IsValid).
+gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& request, const MethodOptions& o) {
   gp::GpIdentifyOptions g;
-  if (o.preset == "report") {
+  const bool report = o.Text("preset") == "report";
+  if (report) {
     g.search = gp::ReportOptions();
     g.validation_fraction = 0.0;
-  } else if (o.preset != "default") {
-    throw InputError("--preset '" + o.preset + "': unknown preset (known: default, report)");
   }
   gp::GpOptions& s = g.search;
-  s.functions = gp::ParseOperators(o.operators);
-  s.population = o.population.value_or(s.population);
-  s.generations = o.generations.value_or(s.generations);
-  s.max_depth = o.max_depth.value_or(s.max_depth);
-  s.restarts = o.restarts.value_or(s.restarts);
-  s.constant_iterations = o.constant_iterations.value_or(s.constant_iterations);
-  if (o.ols_threshold) s.ols_threshold = o.ols_threshold;
-  s.fit_rows = o.fit_rows.value_or(s.fit_rows);
-  s.fitness_mse = o.fitness == "mse";
-  s.seed = o.seed;
-  s.threads = o.threads;
-  g.validation_fraction = o.validation_fraction.value_or(g.validation_fraction);
-  g.horizon_s = o.horizon_s.value_or(g.horizon_s);
-  g.weight_fit = o.fit_mode == "equation" || o.preset == "report" ? gp::WeightFit::kEquation
-                                                                  : gp::WeightFit::kSimulation;
-  if (std::string error; !s.IsValid(&error)) {
-    // IsValid names the field (max_depth ...); the command line spells it --max-depth.
-    const size_t space = error.find(' ');
-    std::string flag = error.substr(0, space);
-    std::replace(flag.begin(), flag.end(), '_', '-');
-    throw InputError("--" + flag + ":" + error.substr(space));
-  }
-  if (!(g.validation_fraction >= 0 && g.validation_fraction <= 0.5))
-    throw InputError(
-        "--validation-fraction: must be in [0, 0.5] (the share of the record kept "
-        "to choose the model by simulation; 0: none)");
-  if (!(g.horizon_s > 0 && g.horizon_s <= 600))
-    throw InputError("--horizon: must be in (0, 600] seconds, got " + FormatNumber(g.horizon_s));
+  std::string operators;
+  for (const std::string& op : o.List("operators")) operators += (operators.empty() ? "" : ",") + op;
+  // Under a preset, its values stay where no option was given.
+  auto use = [&](const char* key) { return o.Given(key) || !report; };
+  if (use("operators")) s.functions = gp::ParseOperators(operators);
+  if (use("population")) s.population = static_cast<int>(o.Integer("population"));
+  if (use("generations")) s.generations = static_cast<int>(o.Integer("generations"));
+  if (use("max_depth")) s.max_depth = static_cast<int>(o.Integer("max_depth"));
+  if (use("restarts")) s.restarts = static_cast<int>(o.Integer("restarts"));
+  if (use("constant_iterations"))
+    s.constant_iterations = static_cast<int>(o.Integer("constant_iterations"));
+  if (use("fit_rows")) s.fit_rows = o.Integer("fit_rows");
+  if (o.Given("ols_threshold")) s.ols_threshold = o.Number("ols_threshold");
+  s.fitness_mse = o.Text("fitness") == "mse";
+  s.seed = request.seed;
+  s.threads = request.threads;
+  if (use("validation_fraction")) g.validation_fraction = o.Number("validation_fraction");
+  g.horizon_s = o.OptionalNumber("horizon_s").value_or(g.horizon_s);
+  const bool simulation = o.Given("fit") ? o.Text("fit") == "simulation" : !report;
+  g.weight_fit = simulation ? gp::WeightFit::kSimulation : gp::WeightFit::kEquation;
+  if (std::string error; !s.IsValid(&error))
+    throw InputError("method gp: option " + error);  // IsValid names the field, the option's key
   return g;
 }
 
-nlohmann::json GpDetails(const IdentifyRequest& o, const gp::GpIdentifyOptions& gpo,
+nlohmann::json GpDetails(const MethodOptions& o, const gp::GpIdentifyOptions& gpo,
                          const gp::GpIdentification& gp, const nlohmann::json& features) {
   const gp::GpOptions& so = gpo.search;
   const char* weight_fit = gpo.weight_fit == gp::WeightFit::kSimulation ? "simulation" : "equation";
-  return {{"preset", o.preset},
+  return {{"preset", o.Text("preset")},
           {"operators", gp::OperatorList(so.functions)},
           {"features", features},
           {"term_completion", gpo.complete_terms},
@@ -81,28 +119,51 @@ nlohmann::json GpDetails(const IdentifyRequest& o, const gp::GpIdentifyOptions& 
           {"validation_fraction", gpo.validation_fraction},
           {"horizon_s", gpo.horizon_s},
           {"weight_fit", weight_fit},
-          {"fitness", o.fitness},
+          {"fitness", o.Text("fitness")},
           {"fit_rows", so.fit_rows},
           {"node_evaluations", gp.node_evaluations},
           {"equations", gp.details}};
 }
 
-nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
-  gp::GpIdentifyOptions gpo = GpOptionsFor(o);
-  ChannelFit fit = PrepareChannelFit(data, o, DefaultChannels(o), log);
+// The options as the search ran them: a preset's values where none was given.
+nlohmann::json UsedOptions(const MethodOptions& o, const gp::GpIdentifyOptions& gpo) {
+  nlohmann::json used = o.Json();
+  const gp::GpOptions& s = gpo.search;
+  std::vector<std::string> operators;
+  for (gp::Op op : s.functions) operators.push_back(gp::Symbol(op));
+  used["operators"] = operators;
+  used["population"] = s.population;
+  used["generations"] = s.generations;
+  used["max_depth"] = s.max_depth;
+  used["restarts"] = s.restarts;
+  used["constant_iterations"] = s.constant_iterations;
+  used["fit_rows"] = s.fit_rows;
+  used["ols_threshold"] = s.ols_threshold ? nlohmann::json(*s.ols_threshold) : nlohmann::json();
+  used["validation_fraction"] = gpo.validation_fraction;
+  used["horizon_s"] = gpo.horizon_s;
+  used["fit"] = gpo.weight_fit == gp::WeightFit::kSimulation ? "simulation" : "equation";
+  return used;
+}
+
+nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& request,
+                               const MethodOptions& o, const Logger& log) {
+  gp::GpIdentifyOptions gpo = GpOptionsFor(request, o);
+  ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request), log);
   const double froude_per_speed =
-      o.vessel.empty() ? 0.0 : FindVessel(o.vessel).FroudeNumber(1.0).value_or(0.0);
-  gpo.features = RegimeFeatures(o.features, froude_per_speed, fit.prepared.data, kGpFroudeHinges);
+      request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);
+  const std::string features_choice = o.Text("features");
+  gpo.features =
+      RegimeFeatures(features_choice, froude_per_speed, fit.prepared.data, kGpFroudeHinges);
   // Term completion where it was measured to help: on records with regime features (odin-hs's
   // zig-zag, docs/gp.md); on KVLCC2's single zig-zag it cost GP the heading.
   gpo.complete_terms = !gpo.features.empty();
   // A hull that crosses regimes holds its speed where the resistance is steep (the knee of
   // odin-hs's hump): a surge equation a few percent off there shows over 30 s, not over 10 s
   // (docs/gp.md).
-  if (gpo.complete_terms && !o.horizon_s) gpo.horizon_s = kRegimeHorizonS;
-  if (gpo.complete_terms && o.features != "froude")
+  if (gpo.complete_terms && !o.Has("horizon_s")) gpo.horizon_s = kRegimeHorizonS;
+  if (gpo.complete_terms && features_choice != "froude")
     gpo.completion_features =
-        RegimeFeatures(o.features, froude_per_speed, fit.prepared.data, kSindyFroudeHinges);
+        RegimeFeatures(features_choice, froude_per_speed, fit.prepared.data, kSindyFroudeHinges);
   nlohmann::json features = nlohmann::json::object();  // name -> expression
   for (const DerivedVariable& f : gpo.features) features[f.name] = f.expression;
   const gp::GpIdentification gp = gp::IdentifyWithGp(
@@ -119,7 +180,8 @@ nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& o, co
   fit.model["parameters"] = gp.parameters;
   fit.model["equations"] = gp.equations;
   fit.model["gp"] = GpDetails(o, gpo, gp, features);
-  SetTrain(fit, o);
+  fit.model["options"] = UsedOptions(o, gpo);
+  SetTrain(fit, request);
   return fit.model;
 }
 
@@ -129,9 +191,9 @@ Method GpMethod() {
   Method m;
   m.name = std::string(gp::kMethodName);
   m.summary = "GP-SR with orthogonal least squares";
+  m.options = GpOptionSpecs();
   m.identify = IdentifyGpModel;
   m.channel_inputs = true;
-  m.regime_features = true;
   m.seeded = true;
   m.label_option = "operators";
   m.relative_cost = 30.0;  // the search, the selection's simulations and the weights' refit

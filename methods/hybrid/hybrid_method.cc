@@ -15,13 +15,13 @@ namespace {
 // hybrid: the vessel refitted with the missing terms its residual proposes and held-out
 // simulation keeps (methods/hybrid/hybrid.h); a vessel model whose effects are those terms.
 nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o,
-                                   const Logger& log) {
+                                   const MethodOptions& options, const Logger& log) {
   if (o.vessel.empty()) throw InputError("--method hybrid: needs --vessel");
   const VesselInfo& info = FindVessel(o.vessel).Info();
   hybrid::HybridOptions ho;
-  ho.refit = RefitOptionsFor(o);
+  ho.refit = RefitOptionsFor(options);
   ho.refit.threads = o.threads > 0 ? o.threads : 1;  // proposals in parallel, each one thread
-  ho.max_terms = o.hybrid_terms.value_or(ho.max_terms);
+  ho.max_terms = static_cast<int>(options.Integer("max_terms"));
   const hybrid::HybridResult h = hybrid::IdentifyHybrid(
       o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, ho);
   nlohmann::json proposals = nlohmann::json::array(), rounds = nlohmann::json::array();
@@ -51,7 +51,7 @@ nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o
           {"inputs", info.inputs},
           {"parameters", RefitParameters(h.fit)},
           {"effects", effects},
-          {std::string(kRefitMethodName), RefitDetails(h.fit, o.prior_sd)},
+          {std::string(kRefitMethodName), RefitDetails(h.fit, ho.refit.prior_sd)},
           {"hybrid",
            {{"heldout_fraction", ho.heldout},
             {"proposals", proposals},
@@ -69,6 +69,9 @@ Method HybridMethod() {
   Method m;
   m.name = std::string(hybrid::kMethodName);
   m.summary = "refit plus the missing terms its residual proposes and held-out simulation keeps";
+  m.options = RefitOptionSpecs();
+  m.options.push_back(IntegerOption("max_terms", hybrid::HybridOptions{}.max_terms, 0,
+                                    kMaxRefitTerms, "most missing terms to add"));
   m.identify = IdentifyHybridModel;
   return m;
 }

@@ -8,7 +8,8 @@
 namespace usvid {
 namespace {
 
-nlohmann::json NominalModel(const Dataset& data, const IdentifyRequest& o, const Logger&) {
+nlohmann::json NominalModel(const Dataset& data, const IdentifyRequest& o, const MethodOptions&,
+                            const Logger&) {
   if (o.vessel.empty()) throw InputError("--method nominal: needs --vessel");
   const VesselInfo& info = FindVessel(o.vessel).Info();
   const std::vector<double>& p = o.start_params.empty() ? info.default_params : o.start_params;

@@ -23,12 +23,12 @@ Channels NomotoChannels(const IdentifyRequest& o) {
 }
 
 nlohmann::json IdentifyNomotoModel(const Dataset& data, const IdentifyRequest& o,
-                                   const Logger& log) {
+                                   const MethodOptions& options, const Logger& log) {
   ChannelFit fit = PrepareChannelFit(data, o, NomotoChannels(o), log);
   const std::string& state = fit.channels.states[0];
   const std::string& input = fit.channels.inputs[0];
   const nomoto::NomotoFit n =
-      nomoto::FitNomoto(fit.prepared, state, input, o.segment_s > 0 ? o.segment_s : 30.0);
+      nomoto::FitNomoto(fit.prepared, state, input, options.Number("segment_s"));
   fit.model["parameters"] = {{"K", n.K}, {"T", n.T}, {"delta0", n.delta0}};
   fit.model["equations"] = nomoto::NomotoEquations(n, state, input);
   fit.model["nomoto"] = {
@@ -49,6 +49,8 @@ Method NomotoMethod() {
   Method m;
   m.name = std::string(nomoto::kMethodName);
   m.summary = "first-order Nomoto heading model, T r' + r = K (delta - delta0)";
+  m.options = {NumberOption("segment_s", 30.0, 0, kUnbounded, "shooting segment length [s]",
+                            /*min_exclusive=*/true)};
   m.identify = IdentifyNomotoModel;
   return m;
 }

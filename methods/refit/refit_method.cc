@@ -10,10 +10,11 @@ namespace usvid {
 namespace {
 
 // refit: the vessel's own coefficients (methods/refit/refit.h); a vessel model, no equations.
-nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, const Logger& log) {
+nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o,
+                             const MethodOptions& method_options, const Logger& log) {
   if (o.vessel.empty()) throw InputError("--method refit: needs --vessel");
   const VesselInfo& info = FindVessel(o.vessel).Info();
-  const RefitOptions options = RefitOptionsFor(o);
+  const RefitOptions options = RefitOptionsFor(method_options);
   const RefitResult fit = RefitVessel(
       o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, options);
   const bool spread = options.max_rows > 0 && data.rows() > options.max_rows;
@@ -25,7 +26,7 @@ nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o, cons
           {"states", fit.channels},
           {"inputs", info.inputs},
           {"parameters", RefitParameters(fit)},
-          {o.method, RefitDetails(fit, o.prior_sd)},
+          {o.method, RefitDetails(fit, options.prior_sd)},
           {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", fit.seconds}}}};
 }
 
@@ -35,6 +36,7 @@ Method RefitMethod() {
   Method m;
   m.name = std::string(kRefitMethodName);
   m.summary = "the --vessel's own coefficients, Ceres multiple shooting";
+  m.options = RefitOptionSpecs();
   m.identify = IdentifyRefit;
   return m;
 }

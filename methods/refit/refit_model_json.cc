@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "methods/identify_request.h"
 
 namespace usvid {
 
@@ -33,13 +34,28 @@ nlohmann::json RefitDetails(const RefitResult& fit, double prior_sd) {
           {"iterations", fit.iterations}};
 }
 
-RefitOptions RefitOptionsFor(const IdentifyRequest& o) {
+std::vector<OptionSpec> RefitOptionSpecs() {
+  const RefitOptions d;
+  return {
+      ListOption("refit_params", {}, {},
+                 "the parameters to fit; none: the vessel's damping group (for kvlcc2 its 17 "
+                 "hull coefficients)"),
+      NumberOption("segment_s", 0.0, 0, kUnbounded,
+                   "shooting segment length [s]; 0: 1.5 hull lengths of travel, at least 10 s"),
+      NumberOption("prior_sd", d.prior_sd, 0, kUnbounded,
+                   "prior standard deviation of each free parameter, relative to its start",
+                   /*min_exclusive=*/true),
+      IntegerOption("fit_rows", kCeresFitRows, 0, kUnbounded,
+                    "the most rows the Ceres fit uses, spread over a longer record (0: all)"),
+  };
+}
+
+RefitOptions RefitOptionsFor(const MethodOptions& o) {
   RefitOptions ro;
-  ro.free = o.refit_params;
-  ro.segment_s = o.segment_s;
-  ro.prior_sd = o.prior_sd;
-  ro.max_rows = o.fit_rows.value_or(kCeresFitRows);
-  if (ro.max_rows < 0) throw InputError("--fit-rows: must be 0 (all) or more");
+  ro.free = o.List("refit_params");
+  ro.segment_s = o.Number("segment_s");
+  ro.prior_sd = o.Number("prior_sd");
+  ro.max_rows = o.Integer("fit_rows");
   ro.threads = 1;  // deterministic, as for fossen-ceres
   return ro;
 }

@@ -4,7 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "methods/identify_request.h"
+#include <vector>
+
+#include "methods/method_options.h"
 #include "methods/refit/refit.h"
 
 namespace usvid {
@@ -13,7 +15,10 @@ namespace usvid {
 nlohmann::json RefitParameters(const RefitResult& fit);
 // The free parameters, start, ratios to it, segments and the solver's report.
 nlohmann::json RefitDetails(const RefitResult& fit, double prior_sd);
-// The request's free parameters, segment length and prior; one thread (deterministic).
-RefitOptions RefitOptionsFor(const IdentifyRequest& request);
+// The options refit declares, and hybrid with it: refit_params, segment_s, prior_sd, fit_rows.
+std::vector<OptionSpec> RefitOptionSpecs();
+// Those options as the fit's: free parameters, segment length, prior and rows; one thread
+// (deterministic).
+RefitOptions RefitOptionsFor(const MethodOptions& options);
 
 }  // namespace usvid

@@ -1,6 +1,9 @@
-// `sindy`: sparse regression of the derivatives on a library of terms (methods/sindy/sindy.h),
-// registered in methods/method_list.h.
+// `sindy`: sparse regression on a library of terms (methods/sindy/sindy.h), registered in
+// methods/method_list.h.
+#include <algorithm>
+
 #include "core/expression.h"
+#include "core/parse_number.h"
 #include "methods/channel_fit.h"
 #include "methods/method.h"
 #include "methods/regime_features.h"
@@ -8,15 +11,50 @@
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
+
 namespace {
 
-nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& o,
-                                  const Logger& log) {
-  ChannelFit fit = PrepareChannelFit(data, o, DefaultChannels(o), log);
+std::vector<OptionSpec> SindyOptionSpecs() {
+  const sindy::SindyOptions d;
+  const std::vector<double> grid = sindy::DefaultThresholds();
+  return {
+      NumberOption("threshold", std::nullopt, 0, kUnbounded,
+                   "coefficient threshold on unit-RMS columns; none: chosen per state by "
+                   "cross-validation over contiguous blocks among " +
+                       std::to_string(grid.size()) + " values from " + FormatNumber(grid.front()) +
+                       " to " + FormatNumber(grid.back())),
+      NumberOption("ridge", d.ridge, 0, kUnbounded,
+                   "relative ridge during thresholding, at least the squared relative noise of "
+                   "the library's columns"),
+      IntegerOption("folds", d.folds, 2, 1000, "contiguous-block folds that choose the threshold"),
+      ListOption("library", {"constant", "products", "abs"}, {"constant", "products", "abs"},
+                 "the candidate terms besides each variable and input: constant, products "
+                 "(x_i x_k of the variables), abs (|x_i| x_i)"),
+      RegimeFeaturesOption(kSindyFroudeHinges),
+  };
+}
+
+sindy::SindyOptions SindyOptionsFor(const MethodOptions& o) {
+  sindy::SindyOptions s;
+  if (o.Has("threshold")) s.thresholds = {o.Number("threshold")};
+  s.ridge = o.Number("ridge");
+  s.folds = static_cast<int>(o.Integer("folds"));
+  const std::vector<std::string> library = o.List("library");
+  auto has = [&](const char* term) { return std::ranges::find(library, term) != library.end(); };
+  s.library.constant = has("constant");
+  s.library.products = has("products");
+  s.library.abs_terms = has("abs");
+  return s;
+}
+
+nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& request,
+                                  const MethodOptions& o, const Logger& log) {
+  const sindy::SindyOptions options = SindyOptionsFor(o);
+  ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request), log);
   const double froude_per_speed =
-      o.vessel.empty() ? 0.0 : FindVessel(o.vessel).FroudeNumber(1.0).value_or(0.0);
+      request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);
   const std::vector<DerivedVariable> features =
-      RegimeFeatures(o.features, froude_per_speed, fit.prepared.data, kSindyFroudeHinges);
+      RegimeFeatures(o.Text("features"), froude_per_speed, fit.prepared.data, kSindyFroudeHinges);
   // Regime features enter SINDy's library as linear columns named by DerivedVariable::Column.
   std::vector<std::string> library_inputs = fit.channels.inputs;
   nlohmann::json features_json = nlohmann::json::object();  // name -> expression
@@ -26,14 +64,13 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& o,
     library_inputs.push_back(f.Column());
     features_json[f.name] = f.expression;
   }
-  const sindy::SindyIdentification id =
-      sindy::IdentifyWithSindy(fit.prepared, fit.channels.states, fit.channels.variables,
-                               library_inputs, sindy::SindyOptions{});
+  const sindy::SindyIdentification id = sindy::IdentifyWithSindy(
+      fit.prepared, fit.channels.states, fit.channels.variables, library_inputs, options);
   fit.model["parameters"] = id.parameters;
   fit.model["equations"] = id.equations;
   fit.model["sindy"] = id.details;
   fit.model["sindy"]["features"] = features_json;
-  SetTrain(fit, o);
+  SetTrain(fit, request);
   return fit.model;
 }
 
@@ -43,9 +80,9 @@ Method SindyMethod() {
   Method m;
   m.name = std::string(sindy::kMethodName);
   m.summary = "sparse regression on a library of terms (STRidge)";
+  m.options = SindyOptionSpecs();
   m.identify = IdentifySindyModel;
   m.channel_inputs = true;
-  m.regime_features = true;
   return m;
 }
 

@@ -94,7 +94,24 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
   // Method options: known names, each of its kind.
   s = Small();
   s["methods"] = nlohmann::json::array({{{"method", "gp"}, {"populaton", 50}}});
-  expect(s, "methods: gp: unknown option 'populaton'");
+  expect(s, "methods: method gp: unknown option 'populaton' (its options: preset, operators");
+  // Each method takes its own options alone (docs/options.md), with the keys all share.
+  s = Small();
+  s["methods"] = nlohmann::json::array({{{"method", "sindy"}, {"population", 50}}});
+  expect(s, "methods: method sindy: unknown option 'population' (its options: threshold, ridge");
+  s = Small();
+  s["methods"] = nlohmann::json::array({{{"method", "sindy"}, {"threshold", 0.1},
+                                         {"library", {"constant", "abs"}},
+                                         {"derivative", "sg:21:3"}, {"rate", 10}}});
+  EXPECT_NO_THROW(ParseSuite(s, "suite.json"));
+  s["methods"][0]["derivative"] = "sg:20";
+  expect(s, "method sindy: option 'derivative': ");
+  s = Small();
+  s["methods"] = nlohmann::json::array({{{"method", "diagnose"}, {"population", 5}}});
+  expect(s, "method diagnose: unknown option 'population' (its options: causes, segment_s");
+  s = Small();
+  s["methods"] = nlohmann::json::array({{{"method", "hybrid"}, {"max_terms", 7}}});
+  expect(s, "method hybrid: option 'max_terms' 7 is not allowed: a whole number in [0, 6]");
   for (const auto& [key, value] :
        std::vector<std::pair<std::string, nlohmann::json>>{{"population", 1e300},
                                                            {"population", -3},

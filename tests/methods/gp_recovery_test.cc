@@ -78,7 +78,7 @@ const Odin3DofRun& RunOdin3Dof(const std::vector<gp::Op>& functions) {
   IdentifyRequest request;
   request.method = "gp";
   request.vessel = "odin3dof";
-  request.operators = gp::OperatorList(functions);
+  request.options = {{"operators", gp::OperatorList(functions)}};
   request.seed = 3;
   const nlohmann::json model = Identify(train, request);
   Odin3DofRun run;

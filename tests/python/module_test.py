@@ -46,6 +46,23 @@ class ModuleTest(unittest.TestCase):
         for state in ("u", "v", "r"):
             self.assertGreaterEqual(metrics[state]["fit_percent"], 90.0, state)
 
+    def test_sindy_takes_its_threshold_library_and_derivative(self):
+        # The options SINDy declares (docs/options.md), by the names the suites use: a fixed
+        # threshold instead of cross-validation, a library without products, and
+        # Savitzky-Golay derivatives; model.json echoes what it ran with.
+        model = usvid.identify(self.train, method="sindy", vessel="odin3dof", threshold=0.05,
+                               library=["constant", "abs"], derivative="sg:21:3")
+        self.assertEqual(model["options"]["threshold"], 0.05)
+        self.assertEqual(model["options"]["library"], ["constant", "abs"])
+        self.assertEqual(model["preprocessing"]["derivative"], "sg:21:3")
+        for state, details in model["sindy"].items():
+            if state == "features":
+                continue
+            self.assertEqual(details["threshold"], 0.05, state)
+            for term in details["library"]:
+                # products of two variables ("u*v") are not offered; abs(x)*x is
+                self.assertFalse("*" in term and not term.startswith("abs("), term)
+
     def test_diagnose_finds_nothing_wrong_with_the_vessel_itself(self):
         d = usvid.diagnose(self.train, vessel="odin3dof", discover=False)
         self.assertEqual(d["cause"], "none")
@@ -76,6 +93,20 @@ class ModuleTest(unittest.TestCase):
             (lambda: usvid.identify(self.train, method="magic", vessel="odin3dof"), "magic"),
             (lambda: usvid.identify(self.train, method="gp", vessel="odin3dof", colour=1),
              "unknown option 'colour'"),
+            # An option of another method, out of range, or of the wrong type: one line naming
+            # the method, the key and what is allowed, before any fit.
+            (lambda: usvid.identify(self.train, method="gp", vessel="odin3dof", causes=3),
+             "method gp: unknown option 'causes' (its options: preset"),
+            (lambda: usvid.identify(self.train, method="sindy", vessel="odin3dof", population=50),
+             "method sindy: unknown option 'population' (its options: threshold"),
+            (lambda: usvid.identify(self.train, method="gp", vessel="odin3dof", max_depth=40),
+             "method gp: option 'max_depth' 40 is not allowed: a whole number in [2, 17]"),
+            (lambda: usvid.identify(self.train, method="sindy", vessel="odin3dof",
+                                    threshold="small"),
+             "method sindy: option 'threshold' \"small\" is not allowed: a finite number >= 0"),
+            (lambda: usvid.identify(self.train, method="sindy", vessel="odin3dof",
+                                    library=["cubic"]),
+             "option 'library' [\"cubic\"] is not allowed: a list of constant, products, abs"),
             (lambda: usvid.identify(self.train, method="gp", vessel="odin3dof", threads=-1),
              "threads must be a whole number"),
             (lambda: usvid.identify({"u": np.zeros(3)}, method="sindy", vessel="odin3dof"),

@@ -80,9 +80,8 @@ int Run(int argc, char** argv) {
     IdentifyRequest r;
     r.method = gp::kMethodName;
     r.vessel = "odin3dof";
-    r.preset = preset;
-    r.operators = operators;
-    r.ols_threshold = threshold;
+    r.options = {{"preset", preset}, {"operators", operators}};
+    if (threshold) r.options["ols_threshold"] = *threshold;
     r.seed = static_cast<uint64_t>(seed);
     r.threads = threads;
     const nlohmann::json model = Identify(train, r);
