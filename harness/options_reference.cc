@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "harness/suite.h"
-#include "methods/registry.h"
+#include "harness/suite_methods.h"
 
 namespace usvid {
 namespace {
@@ -40,18 +40,15 @@ std::string OptionsReferenceMarkdown() {
          "`options`; the flag on `usvid identify`. An option of another method, a value of the "
          "wrong type or out of range is an error before any fit, naming the method, the key and "
          "what is allowed (exit code 2; Python: ValueError).\n\n";
-  for (const Method& m : Methods()) {
+  for (const Method& m : SuiteMethods()) {
     out << "## " << m.name << "\n\n" << m.summary << ".\n\n";
     Table(out, m.options);
   }
-  out << "## diagnose (suites only)\n\n"
-         "The nominal vessel extended by the causes `usvid diagnose` names on the training "
-         "data.\n\n";
-  Table(out, DiagnoseOptionSpecs());
   out << "## Keys every method entry shares (suites and Python)\n\n"
          "The channels and the preprocessing; on `usvid identify` they are the flags "
          "`--states`, `--inputs`, `--rate`, `--forces` and `--derivative` "
-         "(docs/preprocessing.md).\n\n";
+         "(docs/preprocessing.md). diagnose takes none of them (it reads the record as it is, "
+         "on its vessel's channels), external only `states` and `inputs`.\n\n";
   Table(out, SharedSuiteOptions());
   return out.str();
 }

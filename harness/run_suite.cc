@@ -8,14 +8,11 @@
 #include <set>
 
 #include "core/error.h"
-#include "diagnosis/diagnose.h"
-#include "diagnosis/diagnosis_json.h"
-#include "harness/external_method.h"
+#include "harness/suite_methods.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/channel_fit.h"
 #include "methods/identify.h"
 #include "methods/refit/refit.h"
-#include "methods/registry.h"
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
 #include "metrics/structure.h"
@@ -118,8 +115,7 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
 std::string ForcesFor(const SuiteMethod& method, const std::string& vessel) {
   const nlohmann::json& o = method.options;
   if (o.contains("forces")) return o["forces"] == "none" ? "" : o["forces"].get<std::string>();
-  if (vessel.empty() || o.contains("inputs") || !method.Registered() ||
-      !FindMethod(method.method).channel_inputs)
+  if (vessel.empty() || o.contains("inputs") || !FindSuiteMethod(method.method).channel_inputs)
     return "";
   return HasWaterjetStates(FindVessel(vessel).Info().states) ? "waterjet" : "";
 }
@@ -141,30 +137,6 @@ IdentifyRequest RequestFor(const FitJob& job) {
   r.threads = 1;  // the suite runs jobs in parallel
   r.data_name = job.vessel + "/" + job.train_maneuver;
   return r;
-}
-
-// The suite's method "diagnose": the nominal vessel extended by the causes `usvid diagnose`
-// names on the training data; its model.json (a vessel model).
-nlohmann::json DiagnosedModel(const FitJob& job, const Dataset& train) {
-  if (job.vessel.empty()) throw InputError("diagnose: needs a vessel");
-  const nlohmann::json& o = job.method.options;
-  diagnosis::DiagnoseOptions options;
-  options.split.segment_s = o.value("segment_s", options.split.segment_s);
-  options.max_causes = o.value("causes", options.max_causes);
-  options.discover = false;  // proposals are for a person to read, not part of the model
-  const diagnosis::Diagnosis d =
-      diagnosis::Diagnose(train, job.vessel, FindVessel(job.vessel).Info().default_params, options);
-  nlohmann::json model = diagnosis::ExtendedModelJson(d);
-  model["states"] = d.channels;
-  return model;
-}
-
-// The suite's external method: its command run on the training record, with the job's channels
-// (the method's "states" and "inputs", else the vessel's).
-nlohmann::json ExternalModel(const FitJob& job, const Dataset& train) {
-  const ExternalCommand command = ParseExternalCommand(job.method.options, "suite");
-  const Channels channels = DefaultChannels(RequestFor(job));
-  return IdentifyExternal(command, train, channels.states, channels.inputs);
 }
 
 // The states a model is scored on: those it has equations for, or a vessel model's states.
@@ -215,9 +187,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                               ? train_sets.at(job.train_maneuver)
                               : SimulateForSuite(job.vessel, job.train_maneuver,
                                                  suite.train_seconds, job.noise, job.seed);
-    model = job.method.method == kDiagnoseMethod   ? DiagnosedModel(job, train)
-            : job.method.method == kExternalMethod ? ExternalModel(job, train)
-                                                   : Identify(train, RequestFor(job));
+    model = Identify(FindSuiteMethod(job.method.method), train, RequestFor(job));
   } catch (const std::exception& e) {
     failure = std::string("failed: ") + e.what();
   }
@@ -317,9 +287,7 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
 
 std::vector<size_t> SlowestFirst(const std::vector<FitJob>& jobs, std::vector<size_t> cells) {
   auto cost = [&](size_t j) {
-    for (const Method& m : Methods())
-      if (m.name == jobs.at(j).method.method) return m.relative_cost;
-    return 1.0;
+    return FindSuiteMethod(jobs.at(j).method.method).relative_cost;
   };
   std::stable_sort(cells.begin(), cells.end(),
                    [&](size_t a, size_t b) { return cost(a) > cost(b); });

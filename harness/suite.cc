@@ -70,61 +70,35 @@ bool IsSharedSuiteKey(const std::string& key) {
                              [&](const OptionSpec& s) { return s.key == key; });
 }
 
-const std::vector<OptionSpec>& DiagnoseOptionSpecs() {
-  static const std::vector<OptionSpec> specs = {
-      IntegerOption("causes", diagnosis::DiagnoseOptions{}.max_causes, 0, 100,
-                    "most causes added to the nominal vessel"),
-      NumberOption("segment_s", 0.0, 0, kUnbounded,
-                   "shooting segment length [s]; 0: 1.5 hull lengths of travel, at least 10 s"),
-  };
-  return specs;
-}
-
 void CheckSuiteMethod(const SuiteMethod& method, const std::string& where) {
-  std::vector<OptionSpec> specs = method.method == kDiagnoseMethod
-                                      ? DiagnoseOptionSpecs()
-                                      : FindMethod(method.method).options;
-  // The shared keys a method declares itself (none today) stay its own.
-  for (const OptionSpec& shared : SharedSuiteOptions())
+  std::vector<OptionSpec> specs = FindSuiteMethod(method.method).options;  // copied: + shared
+  // The shared keys the method reads (methods/method.h: named_channels, preprocessed).
+  const Method& m = FindSuiteMethod(method.method);
+  for (const OptionSpec& shared : SharedSuiteOptions()) {
+    const bool channels = shared.key == "states" || shared.key == "inputs";
+    if (!(channels ? m.named_channels : m.preprocessed)) continue;
+    // The shared keys a method declares itself (none today) stay its own.
     if (std::ranges::none_of(specs, [&](const OptionSpec& s) { return s.key == shared.key; }))
       specs.push_back(shared);
-  const MethodOptions checked = ValidateOptions(method.method, specs, method.options, where);
-  if (checked.Has("derivative")) {
+  }
+  ValidateOptions(method.method, specs, method.options, where);
+  if (method.options.contains("derivative")) {  // a string, as checked
     try {
-      DerivativeMethod::Parse(checked.Text("derivative"));
+      DerivativeMethod::Parse(method.options["derivative"].get<std::string>());
     } catch (const InputError& e) {
       throw InputError(where + ": method " + method.method + ": option 'derivative': " +
                        e.what());
     }
   }
+  if (method.method == kExternalMethod) {
+    const ExternalCommand c = ParseExternalCommand(method.options, where + ": " + method.method);
+    if (std::ranges::any_of(SuiteMethods(), [&](const Method& m) { return m.name == c.name; }))
+      throw InputError(where + ": external name '" + c.name +
+                       "' is a usvid method's; choose another");
+  }
 }
 
 namespace {
-
-// A suite's methods: the registered ones, and the nominal simulator's diagnosis.
-bool KnownSuiteMethod(const std::string& name) {
-  if (name == kDiagnoseMethod || name == kExternalMethod) return true;
-  const auto& all = Methods();
-  return std::any_of(all.begin(), all.end(), [&](const Method& m) { return m.name == name; });
-}
-
-std::string KnownSuiteMethods() {
-  return MethodNames() + ", " + std::string(kDiagnoseMethod) + ", " + std::string(kExternalMethod);
-}
-
-// An external method's own fields, checked; the rest of its options as any method's.
-nlohmann::json ExternalOptions(const nlohmann::json& options, const std::string& where) {
-  const ExternalCommand c = ParseExternalCommand(options, where);
-  if (KnownSuiteMethod(c.name))
-    throw InputError(where + ": external name '" + c.name + "' is a usvid method's; choose another");
-  nlohmann::json rest = options;
-  for (const char* key : {"name", "command", "timeout_s"}) rest.erase(key);
-  for (const auto& [key, _] : rest.items())
-    if (key != "states" && key != "inputs")
-      throw InputError(where + ": external '" + c.name + "': option '" + key +
-                       "' does not apply (known: name, command, timeout_s, states, inputs)");
-  return rest;
-}
 
 std::vector<SuiteData> DataList(const nlohmann::json& v, const std::string& file,
                                 const std::string& where) {
@@ -180,14 +154,12 @@ std::vector<SuiteMethod> ParseMethods(const nlohmann::json& list, const std::str
     } else {
       throw InputError(file + ": methods: each is a name or an object with \"method\"");
     }
-    if (!KnownSuiteMethod(sm.method))
-      throw InputError(file + ": methods: unknown method '" + sm.method +
-                       "' (known: " + KnownSuiteMethods() + ")");
-    const std::string where = file + ": methods";
-    if (sm.method == kExternalMethod)
-      ExternalOptions(sm.options, where + ": " + sm.method);
-    else
-      CheckSuiteMethod(sm, where);
+    try {
+      FindSuiteMethod(sm.method);
+    } catch (const InputError& e) {
+      throw InputError(file + ": methods: " + e.what());
+    }
+    CheckSuiteMethod(sm, file + ": methods");
     methods.push_back(sm);
   }
   return methods;
@@ -196,9 +168,8 @@ std::vector<SuiteMethod> ParseMethods(const nlohmann::json& list, const std::str
 }  // namespace
 
 std::string SuiteMethod::Label() const {
-  if (method == kDiagnoseMethod) return method;
   if (method == kExternalMethod) return options.at("name").get<std::string>();
-  const std::string& option = FindMethod(method).label_option;
+  const std::string& option = FindSuiteMethod(method).label_option;
   if (option.empty() || !options.contains(option)) return method;
   const nlohmann::json& value = options.at(option);
   if (value.is_string()) return method + "[" + value.get<std::string>() + "]";
@@ -322,7 +293,7 @@ std::vector<FitJob> FitJobs(const Suite& s) {
         for (double noise : s.noise)
           for (uint64_t seed : s.seeds) {
             jobs.push_back({vessel, train, m, noise, seed});
-            if (!m.Registered() || !FindMethod(m.method).seeded) break;
+            if (!FindSuiteMethod(m.method).seeded) break;
           }
     return jobs;
   }

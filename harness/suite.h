@@ -12,10 +12,10 @@
 //    "file": ..., "format": "marin-dat"}], "test": [...]}, "methods": [...]}
 // with at most one vessel (whose channels the files hold; none when the methods name their
 // "states" and "inputs"), maneuver names taken from the data names, no added noise.
-// Methods: every registered method (methods/method_list.h), diagnose (kDiagnoseMethod: the
-// nominal vessel extended by the causes `usvid diagnose` names on the training data), and
-// external commands ({"method": "external", "name": ..., "command": [...]};
-// harness/external_method.h).
+// Methods: every method of the suite's registry (harness/suite_methods.h): the registered
+// identification methods (methods/method_list.h), diagnose (the nominal vessel extended by the
+// causes `usvid diagnose` names on the training data), and external commands
+// ({"method": "external", "name": ..., "command": [...]}; harness/external_method.h).
 // Unknown fields, wrong types and unknown names are errors naming the file and field.
 #pragma once
 
@@ -27,19 +27,15 @@
 
 #include "harness/external_method.h"
 #include "harness/suite_data.h"
+#include "harness/suite_methods.h"
 #include "methods/method_options.h"
 
 namespace usvid {
 
-// The suite's own method beside the registered ones: the nominal vessel, diagnosed.
-inline constexpr std::string_view kDiagnoseMethod = "diagnose";
-
 struct SuiteMethod {
-  std::string method;      // a registered method's name, kDiagnoseMethod or kExternalMethod
-  nlohmann::json options;  // method options (gp: operators, population, generations, ...)
+  std::string method;      // a method of SuiteMethods() (harness/suite_methods.h)
+  nlohmann::json options;  // its options and the shared keys, as the suite gives them
   std::string Label() const;
-  // A method of the registry (methods/method_list.h), not one of the suite's own.
-  bool Registered() const { return method != kDiagnoseMethod && method != kExternalMethod; }
 };
 
 struct Suite {
@@ -70,12 +66,10 @@ struct FitJob {
 // forces, derivative).
 const std::vector<OptionSpec>& SharedSuiteOptions();
 
-// diagnose's options in a suite: causes, segment_s.
-const std::vector<OptionSpec>& DiagnoseOptionSpecs();
-
-// A registered method's or diagnose's entry checked, before any fit: the shared keys and the
-// method's declared options (names, types, ranges; a derivative spec parsed). Throws
-// InputError, one line naming `where`, the method, the key and what is allowed.
+// A method entry checked, before any fit: the method is one of SuiteMethods(), its options are
+// the shared keys and those it declares (names, types, ranges; a derivative spec parsed; an
+// external command's name not a method's). Throws InputError, one line naming `where`, the
+// method, the key and what is allowed.
 void CheckSuiteMethod(const SuiteMethod& method, const std::string& where);
 
 // Whether `key` is one of SharedSuiteOptions.

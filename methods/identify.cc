@@ -8,14 +8,14 @@
 
 namespace usvid {
 
-MethodOptions CheckedOptions(const IdentifyRequest& request, const std::string& where) {
-  const Method& method = FindMethod(request.method);
+MethodOptions CheckedOptions(const Method& method, const IdentifyRequest& request,
+                             const std::string& where) {
   return ValidateOptions(method.name, method.options, request.options, where);
 }
 
-nlohmann::json Identify(Dataset data, const IdentifyRequest& o, const Logger& log) {
-  const Method& method = FindMethod(o.method);
-  const MethodOptions options = CheckedOptions(o, "");
+nlohmann::json Identify(const Method& method, Dataset data, const IdentifyRequest& o,
+                        const Logger& log) {
+  const MethodOptions options = CheckedOptions(method, o, "");
   // Speed and course where only body velocities were logged (the 2-DOF models need them).
   AddSpeedAndCourse(data);
   AddForces(data, o.preprocess.forces);
@@ -25,6 +25,10 @@ nlohmann::json Identify(Dataset data, const IdentifyRequest& o, const Logger& lo
                            "' but did not read it");
   if (!model.contains("options")) model["options"] = options.Json();  // a preset may say more
   return model;
+}
+
+nlohmann::json Identify(Dataset data, const IdentifyRequest& request, const Logger& log) {
+  return Identify(FindMethod(request.method), std::move(data), request, log);
 }
 
 }  // namespace usvid

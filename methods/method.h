@@ -38,6 +38,10 @@ struct Method {
   // Takes its inputs as channels, so that a waterjet log's jet forces may stand in for the
   // commands (the suite's default input map). Vessel models take the vessel's own inputs.
   bool channel_inputs = false;
+  // Reads the request's channels (states, inputs) and preprocessing (rate, derivative, forces):
+  // a suite entry or Python call may give those keys only to a method that reads them.
+  bool named_channels = true;
+  bool preprocessed = true;
   // Its result depends on the seed: on measured data, where the data do not change with the
   // seed, a suite fits it once per seed, the other methods once.
   bool seeded = false;

@@ -63,7 +63,7 @@ void RunIdentify(const IdentifyOptions& o) {
   CheckOutputFile(o.out);
   IdentifyRequest r = o.request;
   r.options = GivenOptions(o);
-  CheckedOptions(r, "usvid identify");  // before the data are read
+  CheckedOptions(FindMethod(r.method), r, "usvid identify");  // before the data are read
   r.preprocess = o.pre.Options();
   r.data_name = o.data;
   if (!o.params.empty()) {

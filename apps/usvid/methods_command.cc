@@ -1,12 +1,12 @@
-// usvid methods [--markdown]: every identification method with its options, as each declares
-// them (methods/method_options.h). --markdown prints docs/options.md.
+// usvid methods [--markdown]: every method a suite may list (harness/suite_methods.h) with its
+// options, as each declares them (methods/method_options.h). --markdown prints docs/options.md.
 
 #include <iostream>
 #include <memory>
 
 #include "apps/usvid/commands.h"
 #include "harness/options_reference.h"
-#include "methods/registry.h"
+#include "harness/suite_methods.h"
 
 namespace usvid {
 
@@ -19,7 +19,7 @@ void AddMethodsCommand(CLI::App& app) {
       std::cout << OptionsReferenceMarkdown();
       return;
     }
-    for (const Method& m : Methods()) {
+    for (const Method& m : SuiteMethods()) {
       std::cout << m.name << ": " << m.summary << '\n';
       for (const OptionSpec& s : m.options)
         std::cout << "  " << s.key << " (" << s.Flag() << "): " << s.AllowedValues()

@@ -67,9 +67,12 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
   expect(external({{"name", "sindy"}, {"command", {"python3"}}}), "is a usvid method's");
   expect(external({{"name", "mine"}, {"command", nlohmann::json::array()}}), "needs \"command\"");
   expect(external({{"name", "mine"}, {"command", {"python3"}}, {"timeout_s", 0}}),
-         "timeout_s must be a positive number");
+         "method external: option 'timeout_s' 0 is not allowed: a finite number > 0");
   expect(external({{"name", "mine"}, {"command", {"python3"}}, {"population", 3}}),
-         "option 'population' does not apply");
+         "method external: unknown option 'population' (its options: name, command, timeout_s, "
+         "states, inputs)");
+  expect(external({{"name", "mine"}, {"command", {"python3"}}, {"rate", 10}}),
+         "method external: unknown option 'rate'");
   EXPECT_EQ(ParseSuite(external({{"name", "mine"}, {"command", {"python3", "m.py"}}}), "s.json")
                 .methods.at(0)
                 .Label(),
