@@ -575,4 +575,19 @@ std::vector<std::pair<std::string, double>> Expression::Terms() const {
   return ExpandTerms(program_, variables_);
 }
 
+std::string WeightedSumText(const std::vector<std::string>& terms, const Eigen::VectorXd& weights) {
+  std::string s;
+  for (Eigen::Index j = 0; j < weights.size(); ++j) {
+    const double w = weights(j);
+    if (w == 0.0) continue;
+    const std::string& name = terms[static_cast<size_t>(j)];
+    const std::string term = FormatNumber(std::abs(w)) + (name == "1" ? "" : "*" + name);
+    if (s.empty())
+      s = (w < 0 ? "-" : "") + term;
+    else
+      s += (w < 0 ? " - " : " + ") + term;
+  }
+  return s.empty() ? "0" : s;
+}
+
 }  // namespace usvid

@@ -67,6 +67,12 @@ inline constexpr double kProtectedExpLimit = 50.0;
 
 // The name of a function op ("abs", "tanh", ...); empty for the other ops.
 std::string_view FunctionName(OpCode op);
+
+// "c0 + c1*u - c2*abs(v)*v": weights[j] times terms[j] ("1": the weight alone), the zero weights
+// left out, each weight written to read back as exactly the same double; "0" when all are zero.
+// The equations of linear-in-the-parameters models (sindy, lti) in the equation syntax.
+std::string WeightedSumText(const std::vector<std::string>& terms, const Eigen::VectorXd& weights);
+
 // The op applied to x (unary) or to x and y (binary) exactly as evaluation computes it; aborts
 // for kConstant and kVariable.
 double ApplyOperator(OpCode op, double x, double y = 0.0);
@@ -113,6 +119,7 @@ class Expression {
     kExp, kSqrt, kAddConstant, kSubtractConstant, kMultiplyConstant, kDivideConstant,
     kAddVariable, kSubtractVariable, kMultiplyVariable, kDivideVariable,
   };
+
   struct Fused {
     Step op = Step::kConstant;
     int index = 0;       // variables[index]: kVariable and the *Variable steps

@@ -208,37 +208,36 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       const Dataset held = suite.Measured() ? test_sets.at(test)
                                             : SimulateForSuite(job.vessel, test, suite.test_seconds,
                                                                job.noise, row.test_seed);
-      const Evaluation e = EvaluateModel(model, held);
-      for (const auto& [channel, score] : e.metrics.at("channels").items())
-        row.channel_fit_percent[channel] = score.at("fit_percent").get<double>();
+      const Scores e = EvaluateModel(model, held).scores;
+      for (const auto& [channel, score] : e.channels)
+        row.channel_fit_percent[channel] = score.fit_percent;
       double sum = 0.0;
       for (const std::string& state : ScoredStates(model)) {
-        row.fit_percent[state] = e.metrics.at(state).at("fit_percent").get<double>();
-        row.nrmse[state] = e.metrics.at(state).at("nrmse").get<double>();
+        row.fit_percent[state] = e.channels.at(state).fit_percent;
+        row.nrmse[state] = e.channels.at(state).nrmse;
         sum += row.fit_percent[state];
       }
       row.mean_fit_percent = sum / static_cast<double>(row.fit_percent.size());
-      if (e.metrics.contains("regimes"))
-        for (const auto& [regime, scores] : e.metrics["regimes"].items()) {
+      if (e.regimes)
+        for (const auto& [regime, scores] : *e.regimes) {
           double regime_sum = 0.0;
           for (const auto& [state, _] : row.fit_percent)
-            regime_sum += scores.at(state).at("fit_percent").get<double>();
+            regime_sum += scores.channels.at(state).fit_percent;
           row.regime_fit_percent[regime] = regime_sum / static_cast<double>(row.fit_percent.size());
         }
-      for (const auto& [horizon, fits] : e.metrics.at("horizon_fit_percent").items()) {
+      for (const auto& [horizon, fits] : e.horizon_fit_percent) {
         double horizon_sum = 0.0;
-        for (const auto& [state, _] : row.fit_percent) horizon_sum += fits.at(state).get<double>();
+        for (const auto& [state, _] : row.fit_percent) horizon_sum += fits.at(state);
         row.horizon_fit_percent[horizon] =
             horizon_sum / static_cast<double>(row.fit_percent.size());
       }
-      if (e.metrics.contains("valid_prediction_s"))
-        row.valid_prediction_s = e.metrics["valid_prediction_s"].get<double>();
-      for (const auto& [state, r2] : e.metrics.at("derivative_r2").items())
-        if (r2.is_number() && std::isfinite(r2.get<double>())) row.derivative_r2[state] = r2;
+      if (e.valid_prediction_s) row.valid_prediction_s = *e.valid_prediction_s;
+      for (const auto& [state, r2] : e.derivative_r2)
+        if (std::isfinite(r2)) row.derivative_r2[state] = r2;
       ScoreModel(job.vessel, model, suite.Measured(), row);
-      row.diverged = e.metrics.at("diverged").get<bool>();
-      row.diverged_at_s = e.run.diverged_at_s;
-      row.diverged_channel = e.run.diverged_channel;
+      row.diverged = e.diverged;
+      row.diverged_at_s = e.diverged_at_s;
+      row.diverged_channel = e.diverged_channel;
       row.closed_loop = ClosedLoopScore(model, job.vessel, TestManeuverSpec(suite, test), held);
     } catch (const std::exception& e) {
       row.status = std::string("failed: ") + e.what();

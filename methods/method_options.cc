@@ -60,8 +60,7 @@ std::optional<nlohmann::json> Checked(const OptionSpec& s, const nlohmann::json&
         return std::nullopt;
       }
       for (const std::string& n : names)
-        if (n.empty() ||
-            (!s.choices.empty() && std::ranges::find(s.choices, n) == s.choices.end()))
+        if (n.empty() || (!s.choices.empty() && std::ranges::find(s.choices, n) == s.choices.end()))
           return std::nullopt;
       return nlohmann::json(names);
     }
@@ -140,20 +139,19 @@ std::string OptionSpec::DefaultText() const {
 
 OptionSpec IntegerOption(std::string key, std::optional<long> default_value, double min, double max,
                          std::string help) {
-  OptionSpec s = Spec(std::move(key), OptionType::kInteger,
-                      default_value ? nlohmann::json(*default_value) : nlohmann::json(),
-                      std::move(help));
+  OptionSpec s =
+      Spec(std::move(key), OptionType::kInteger,
+           default_value ? nlohmann::json(*default_value) : nlohmann::json(), std::move(help));
   s.min = min;
   s.max = max;
   return s;
 }
 
 OptionSpec NumberOption(std::string key, std::optional<double> default_value, double min,
-                        double max, std::string help, bool min_exclusive,
-                        bool max_exclusive) {
-  OptionSpec s = Spec(std::move(key), OptionType::kNumber,
-                      default_value ? nlohmann::json(*default_value) : nlohmann::json(),
-                      std::move(help));
+                        double max, std::string help, bool min_exclusive, bool max_exclusive) {
+  OptionSpec s =
+      Spec(std::move(key), OptionType::kNumber,
+           default_value ? nlohmann::json(*default_value) : nlohmann::json(), std::move(help));
   s.min = min;
   s.max = max;
   s.min_exclusive = min_exclusive;
@@ -175,8 +173,7 @@ OptionSpec ListOption(std::string key, std::vector<std::string> default_value,
   return s;
 }
 
-OptionSpec TextOption(std::string key, std::optional<std::string> default_value,
-                      std::string help) {
+OptionSpec TextOption(std::string key, std::optional<std::string> default_value, std::string help) {
   return Spec(std::move(key), OptionType::kText,
               default_value ? nlohmann::json(*default_value) : nlohmann::json(), std::move(help));
 }
@@ -193,9 +190,8 @@ MethodOptions::MethodOptions(std::string method, const std::vector<OptionSpec>* 
       given_(std::move(given)) {}
 
 const nlohmann::json& MethodOptions::Value(std::string_view key) const {
-  const bool declared = specs_ && std::ranges::any_of(*specs_, [&](const OptionSpec& s) {
-                          return s.key == key;
-                        });
+  const bool declared =
+      specs_ && std::ranges::any_of(*specs_, [&](const OptionSpec& s) { return s.key == key; });
   if (!declared)
     throw std::logic_error("method " + method_ + " reads option '" + std::string(key) +
                            "', which it does not declare");

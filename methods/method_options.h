@@ -33,17 +33,17 @@ enum class OptionType {
 struct OptionSpec {
   std::string key;  // snake_case, the same in suites, Python, model.json and C++
   OptionType type = OptionType::kNumber;
-  std::string help;               // one line
-  nlohmann::json default_value;   // null: none (the method decides; `help` says how)
+  std::string help;              // one line
+  nlohmann::json default_value;  // null: none (the method decides; `help` says how)
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
   bool min_exclusive = false, max_exclusive = false;
-  std::vector<std::string> choices;  // kChoice: the values; kList: the names allowed (empty: any)
+  std::vector<std::string> choices;   // kChoice: the values; kList: the names allowed (empty: any)
   std::vector<std::string> old_keys;  // earlier spellings a suite may still use (deprecated)
 
-  std::string Flag() const;            // "--max-depth"
-  std::string AllowedValues() const;   // "a whole number from 2 to 17", "one of r2, mse"
-  std::string DefaultText() const;     // "50", "none", "+,-,*"
+  std::string Flag() const;           // "--max-depth"
+  std::string AllowedValues() const;  // "a whole number from 2 to 17", "one of r2, mse"
+  std::string DefaultText() const;    // "50", "none", "+,-,*"
 };
 
 // Declarations, as a method's list writes them.
@@ -57,8 +57,7 @@ OptionSpec ChoiceOption(std::string key, std::string default_value,
 OptionSpec ListOption(std::string key, std::vector<std::string> default_value,
                       std::vector<std::string> choices, std::string help);
 OptionSpec FlagOption(std::string key, std::string help);
-OptionSpec TextOption(std::string key, std::optional<std::string> default_value,
-                      std::string help);
+OptionSpec TextOption(std::string key, std::optional<std::string> default_value, std::string help);
 
 // The options a method runs with: every declared key, as given or its default (a key without
 // default and not given is absent). Reading a key the method did not declare is a programming

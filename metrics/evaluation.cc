@@ -50,8 +50,8 @@ void AddModelForces(const nlohmann::json& model, Dataset& data) {
 // One-step derivative R^2: each equation at the measured states against the data's
 // derivatives (default estimator, inputs shifted by the model's delay). Empty for a vessel
 // model, or when the data lack a variable or input of the equations.
-nlohmann::json DerivativeR2(const nlohmann::json& model, const Dataset& data) {
-  nlohmann::json r2 = nlohmann::json::object();
+std::map<std::string, double> DerivativeR2(const nlohmann::json& model, const Dataset& data) {
+  std::map<std::string, double> r2;
   std::vector<std::string> states, inputs;
   const bool has_equations = model.contains("equations");  // else a vessel model
   if (has_equations)
@@ -77,8 +77,9 @@ nlohmann::json DerivativeR2(const nlohmann::json& model, const Dataset& data) {
 }
 
 // k-step-ahead: from every k-th measured state, k steps of the model; the error at the end.
-nlohmann::json KStepNrmse(const nlohmann::json& model, const Dataset& data) {
-  nlohmann::json k_step = nlohmann::json::object();
+std::map<std::string, std::map<std::string, double>> KStepNrmse(const nlohmann::json& model,
+                                                                const Dataset& data) {
+  std::map<std::string, std::map<std::string, double>> k_step;
   for (const int k : {10, 40}) {
     if (data.rows() < 3 * k) continue;
     std::map<std::string, std::vector<double>> measured, predicted;
@@ -91,7 +92,7 @@ nlohmann::json KStepNrmse(const nlohmann::json& model, const Dataset& data) {
           predicted[c].push_back(run.simulated[c](k));
         }
     }
-    nlohmann::json per = nlohmann::json::object();
+    std::map<std::string, double> per;
     for (const auto& [c, m] : measured) {
       const Eigen::VectorXd a = Eigen::Map<const Eigen::VectorXd>(m.data(), m.size());
       const Eigen::VectorXd b = Eigen::Map<const Eigen::VectorXd>(predicted[c].data(), m.size());
@@ -104,10 +105,11 @@ nlohmann::json KStepNrmse(const nlohmann::json& model, const Dataset& data) {
 
 // The fit % of each channel over the whole record ("all", from `channels`' scores) and over
 // each horizon of kHorizonsS shorter than the record.
-nlohmann::json HorizonFits(const nlohmann::json& model, const Dataset& data,
-                           const nlohmann::json& channels) {
-  nlohmann::json horizons = {{"all", nlohmann::json::object()}};
-  for (const auto& [c, s] : channels.items()) horizons["all"][c] = s.at("fit_percent");
+std::map<std::string, std::map<std::string, double>> HorizonFits(
+    const nlohmann::json& model, const Dataset& data,
+    const std::map<std::string, ChannelScore>& channels) {
+  std::map<std::string, std::map<std::string, double>> horizons = {{"all", {}}};
+  for (const auto& [c, s] : channels) horizons["all"][c] = s.fit_percent;
   for (const double h : kHorizonsS)
     if (h < data.duration()) horizons[HorizonKey(h)] = HorizonFit(model, data, h);
   return horizons;
@@ -139,23 +141,24 @@ double HullLength(const nlohmann::json& model) {
 
 // Per speed regime (by Froude number on the hull length), over the rows measured in it: each
 // scored channel's scores, for regimes with at least 10 rows.
-nlohmann::json RegimeScores(const Eigen::VectorXd& speed, double length, const Dataset& data,
-                            const FreeRun& run, const nlohmann::json& channels) {
+std::map<std::string, Scores::Regime> RegimeScores(
+    const Eigen::VectorXd& speed, double length, const Dataset& data, const FreeRun& run,
+    const std::map<std::string, ChannelScore>& channels) {
   const Eigen::ArrayXd fn = speed.array() / std::sqrt(9.81 * length);
   const std::pair<const char*, std::pair<double, double>> regimes[] = {
       {"displacement", {-INFINITY, 0.4}},
       {"semi-displacement", {0.4, 1.1}},
       {"planing", {1.1, INFINITY}}};
-  nlohmann::json by_regime = nlohmann::json::object();
+  std::map<std::string, Scores::Regime> by_regime;
   for (const auto& [name, range] : regimes) {
     const Eigen::Array<bool, Eigen::Dynamic, 1> in = fn >= range.first && fn < range.second;
     if (in.count() < 10) continue;
-    nlohmann::json scores = {{"samples", in.count()}};
-    for (const auto& [c, _] : channels.items()) {
+    Scores::Regime& regime = by_regime[name];
+    regime.samples = in.count();
+    for (const auto& [c, _] : channels) {
       const Eigen::VectorXd m = in.select(data[c].array(), NAN).matrix();
-      scores[c] = ScoreChannel(m, run.simulated[c]).ToJson();
+      regime.channels[c] = ScoreChannel(m, run.simulated[c]);
     }
-    by_regime[name] = scores;
   }
   return by_regime;
 }
@@ -187,43 +190,66 @@ std::map<std::string, double> HorizonFit(const nlohmann::json& model, const Data
   return fit;
 }
 
+nlohmann::json Scores::ToJson() const {
+  nlohmann::json channels_json = nlohmann::json::object();
+  for (const auto& [c, score] : channels) channels_json[c] = score.ToJson();
+  nlohmann::json m = {{"channels", channels_json},
+                      {"derivative_r2", derivative_r2},
+                      {"diverged", diverged},
+                      {"samples", samples},
+                      {"seconds", seconds},
+                      {"k_step_nrmse", k_step_nrmse},
+                      {"horizon_fit_percent", horizon_fit_percent}};
+  if (derivative_r2.empty()) m["derivative_r2"] = nlohmann::json::object();
+  if (k_step_nrmse.empty()) m["k_step_nrmse"] = nlohmann::json::object();
+  if (valid_prediction_s) m["valid_prediction_s"] = *valid_prediction_s;
+  // Flat per-channel fields too, as docs/data.md#metricsjson lists them per state channel.
+  for (const auto& [c, score] : channels) m[c] = score.ToJson();
+  if (diverged) {
+    m["diverged_at_s"] = diverged_at_s;
+    m["diverged_channel"] = diverged_channel;
+  }
+  if (regimes) {
+    nlohmann::json by_regime = nlohmann::json::object();
+    for (const auto& [name, regime] : *regimes) {
+      nlohmann::json r = {{"samples", regime.samples}};
+      for (const auto& [c, score] : regime.channels) r[c] = score.ToJson();
+      by_regime[name] = r;
+    }
+    m["regimes"] = by_regime;
+  }
+  if (position_drift_m) m["position_drift_m"] = *position_drift_m;
+  return m;
+}
+
 Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
   Dataset data = recorded;
   AddSpeedAndCourse(data);  // for models in speed and course (2-DOF)
   AddModelForces(model, data);
   Evaluation e;
   e.run = FreeRunModel(model, data);
-  nlohmann::json channels = nlohmann::json::object();
+  Scores& s = e.scores;
   for (const std::string& c : e.run.channels)
-    if (data.Has(c)) channels[c] = ScoreChannel(data[c], e.run.simulated[c]).ToJson();
-
-  const nlohmann::json r2 = DerivativeR2(model, data);
-  e.metrics = {{"channels", channels},
-               {"derivative_r2", r2},
-               {"diverged", e.run.diverged},
-               {"samples", data.rows()},
-               {"seconds", data.duration()}};
-  e.metrics["k_step_nrmse"] = KStepNrmse(model, data);
-  e.metrics["horizon_fit_percent"] = HorizonFits(model, data, channels);
+    if (data.Has(c)) s.channels[c] = ScoreChannel(data[c], e.run.simulated[c]);
+  s.derivative_r2 = DerivativeR2(model, data);
+  s.diverged = e.run.diverged;
+  s.diverged_at_s = e.run.diverged_at_s;
+  s.diverged_channel = e.run.diverged_channel;
+  s.samples = data.rows();
+  s.seconds = data.duration();
+  s.k_step_nrmse = KStepNrmse(model, data);
+  s.horizon_fit_percent = HorizonFits(model, data, s.channels);
   if (const double vpt = ValidPredictionTime(data, e.run); std::isfinite(vpt))
-    e.metrics["valid_prediction_s"] = vpt;
-
-  // Flat per-channel fields too, as docs/data.md#metricsjson lists them per state channel.
-  for (const auto& [c, s] : channels.items()) e.metrics[c] = s;
-  if (e.run.diverged) {
-    e.metrics["diverged_at_s"] = e.run.diverged_at_s;
-    e.metrics["diverged_channel"] = e.run.diverged_channel;
-  }
-
+    s.valid_prediction_s = vpt;
   // Per speed regime, over the rows measured in it.
   const Eigen::VectorXd speed = MeasuredSpeed(data);
-  if (speed.size() > 0)
-    e.metrics["regimes"] = RegimeScores(speed, HullLength(model), data, e.run, channels);
+  if (speed.size() > 0) s.regimes = RegimeScores(speed, HullLength(model), data, e.run, s.channels);
   if (data.Has("north") && data.Has("east") && e.run.simulated.Has("north")) {
     const Eigen::Index last = data.rows() - 1;
-    e.metrics["position_drift_m"] = std::hypot(data["north"](last) - e.run.simulated["north"](last),
-                                               data["east"](last) - e.run.simulated["east"](last));
+    s.position_drift_m = std::hypot(data["north"](last) - e.run.simulated["north"](last),
+                                    data["east"](last) - e.run.simulated["east"](last));
   }
+  e.metrics = s.ToJson();
   return e;
 }
 

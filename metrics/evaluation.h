@@ -18,15 +18,48 @@
 
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "core/dataset.h"
+#include "metrics/fit_metrics.h"
 #include "metrics/free_run.h"
 
 namespace usvid {
 
+// A model's scores on one record, typed: what the harness copies into its rows, and what
+// ToJson writes as metrics.json. A new metric is a field here, filled by EvaluateModel, and its
+// line in ToJson (and in harness/result_row.h when a suite's tables show it).
+struct Scores {
+  std::map<std::string, ChannelScore> channels;  // the free run's, per channel
+  // One-step derivative R^2 per equation (NaN where it is not defined); empty for a vessel
+  // model or data that lack a variable of the equations.
+  std::map<std::string, double> derivative_r2;
+  bool diverged = false;
+  double diverged_at_s = 0.0;  // when diverged
+  std::string diverged_channel;
+  long samples = 0;
+  double seconds = 0.0;
+  // k ("10", "40") -> channel -> NRMSE k samples after every k-th measured state.
+  std::map<std::string, std::map<std::string, double>> k_step_nrmse;
+  // Horizon (HorizonKey: "5", "30", "all") -> channel -> fit %.
+  std::map<std::string, std::map<std::string, double>> horizon_fit_percent;
+  std::optional<double> valid_prediction_s;
+  struct Regime {
+    long samples = 0;
+    std::map<std::string, ChannelScore> channels;
+  };
+  // By speed regime ("displacement", "semi-displacement", "planing"), when the data give a
+  // speed; regimes with fewer than 10 rows are left out.
+  std::optional<std::map<std::string, Regime>> regimes;
+  std::optional<double> position_drift_m;  // when positions are measured and simulated
+
+  nlohmann::json ToJson() const;  // the metrics.json object (docs/data.md#metricsjson)
+};
+
 struct Evaluation {
-  nlohmann::json metrics;  // the metrics.json object
+  Scores scores;
+  nlohmann::json metrics;  // scores.ToJson()
   FreeRun run;
 };
 

@@ -22,9 +22,8 @@ void AddMethodsCommand(CLI::App& app) {
     for (const Method& m : SuiteMethods()) {
       std::cout << m.name << ": " << m.summary << '\n';
       for (const OptionSpec& s : m.options)
-        std::cout << "  " << s.key << " (" << s.Flag() << "): " << s.AllowedValues()
-                  << "; default " << (s.type == OptionType::kFlag ? "false" : s.DefaultText())
-                  << '\n';
+        std::cout << "  " << s.key << " (" << s.Flag() << "): " << s.AllowedValues() << "; default "
+                  << (s.type == OptionType::kFlag ? "false" : s.DefaultText()) << '\n';
     }
   });
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/expression.h"
 #include "core/parse_number.h"
 #include "preprocessing/splits.h"
 
@@ -87,21 +88,6 @@ std::vector<NamedSignal> Signals(const Dataset& data, const std::vector<std::str
   std::vector<NamedSignal> out;
   for (const std::string& n : names) out.push_back({n, data[n]});
   return out;
-}
-
-// "c0 + c1*u - c2*abs(v)*v": the nonzero weights in library order; "0" when there are none.
-std::string Equation(const std::vector<std::string>& names, const Eigen::VectorXd& w) {
-  std::string s;
-  for (Eigen::Index j = 0; j < w.size(); ++j) {
-    if (w(j) == 0.0) continue;
-    const std::string& name = names[static_cast<size_t>(j)];
-    const std::string term = FormatNumber(std::abs(w(j))) + (name == "1" ? "" : "*" + name);
-    if (s.empty())
-      s = (w(j) < 0 ? "-" : "") + term;
-    else
-      s += (w(j) < 0 ? " - " : " + ") + term;
-  }
-  return s.empty() ? "0" : s;
 }
 
 void CheckOptions(const SindyOptions& o) {
@@ -210,7 +196,7 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
       out.parameters[state + "." + name] = w(j);
       terms.push_back(name);
     }
-    out.equations[state] = Equation(lib.names, w);
+    out.equations[state] = WeightedSumText(lib.names, w);
     const double ssr = (y - lib.columns * w).squaredNorm();
     const double sst = (y.array() - y.mean()).square().sum();
     out.details[state] = {{"threshold", thresholds[chosen]},

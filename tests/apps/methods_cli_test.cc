@@ -65,6 +65,17 @@ TEST_F(MethodsCliTest, OdinMethodsWriteModelsThatFreeRun) {
   EXPECT_TRUE(gp.contains("derivative_r2"));
 }
 
+// The linear time-invariant baseline on the mass-spring-damper, which is linear: its free run
+// follows a held-out multisine (the example method of docs/adding-a-method.md).
+TEST_F(MethodsCliTest, LtiOnTheMassSpringDamper) {
+  const std::string train = Simulate(
+      "train", "--vessel msd --maneuver random-steps --duration 300 --noise 0.01 --seed 1");
+  const std::string test = Simulate("test", "--vessel msd --maneuver multisine --duration 120");
+  const nlohmann::json m = IdentifyAndEvaluate("lti", "msd", train, test, "--ridge 0");
+  EXPECT_GT(m.at("v").at("fit_percent").get<double>(), 95.0);
+  EXPECT_GT(m.at("x").at("fit_percent").get<double>(), 90.0);
+}
+
 TEST_F(MethodsCliTest, EbLrOnAStepGrid) {
   const std::string train =
       Simulate("train", "--vessel eb2dof --maneuver stepgrid:5/3 --noise 0.001 --seed 2");
@@ -90,7 +101,8 @@ TEST_F(MethodsCliTest, EbLrOnOdinHsJetForces) {
       IdentifyAndEvaluate("eb-lr", "odin-hs", train, test, "--forces waterjet");
   const nlohmann::json model = ReadJsonFile((dir_ / "eb-lr" / "model.json").string());
   EXPECT_EQ(model.at("inputs"), nlohmann::json({"tau_x", "tau_n", "jet_flow"}));
-  EXPECT_THAT(model.at("equations").at("U").get<std::string>(), ::testing::HasSubstr("*jet_flow*U"));
+  EXPECT_THAT(model.at("equations").at("U").get<std::string>(),
+              ::testing::HasSubstr("*jet_flow*U"));
   EXPECT_GT(model.at("parameters").at("sigma_U.jet_flow*U").get<double>(), 0.0);  // a loss
   EXPECT_GT(jets.at("U").at("fit_percent").get<double>(), 85.0);
   EXPECT_GT(jets.at("r").at("fit_percent").get<double>(), 80.0);
@@ -151,8 +163,8 @@ TEST_F(MethodsCliTest, HybridAddsTheMissingTermToTheTanker) {
   std::map<std::string, nlohmann::json> scores;
   for (const std::string method : {"hybrid", "refit"}) {
     const std::string model = (dir_ / (method + ".json")).string();
-    const auto id = RunUsvid("identify --method " + method + " --vessel kvlcc2 --threads 2 --data " +
-                             train + " --out " + model);
+    const auto id = RunUsvid("identify --method " + method +
+                             " --vessel kvlcc2 --threads 2 --data " + train + " --out " + model);
     ASSERT_EQ(id.exit_code, 0) << id.err;
     const auto ev = RunUsvid("evaluate --model " + model + " --data " + test);
     ASSERT_EQ(ev.exit_code, 0) << ev.err;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/json_file.h"
 #include "tests/apps/run_usvid.h"
 
 namespace usvid {
@@ -32,6 +33,46 @@ TEST(OptionsCliTest, TheOptionsPageIsTheDeclarations) {
   text << page.rdbuf();
   EXPECT_EQ(text.str(), r.out)
       << "docs/options.md is out of date: ./build/usvid methods --markdown > docs/options.md";
+}
+
+// The documented example method (docs/adding-a-method.md), lti, declares two options and
+// nothing else: they reach the command line and suites by their declaration alone, refused
+// there with one line when out of range (Python: tests/python/module_test.py).
+TEST(OptionsCliTest, TheExampleMethodsTwoOptionsReachTheCommandLineAndSuites) {
+  const auto dir = testing::FreshTempDir();
+  const std::string data = (dir / "msd.csv").string(), model = (dir / "model.json").string();
+  ASSERT_EQ(RunUsvid("simulate --vessel msd --maneuver random-steps --duration 120 --out " + data)
+                .exit_code,
+            0);
+  auto r = RunUsvid("identify --method lti --vessel msd --data " + data +
+                    " --ridge 0.5 --constant no --out " + model);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = ReadJsonFile(model);
+  EXPECT_EQ(m.at("options"), (nlohmann::json{{"ridge", 0.5}, {"constant", "no"}}));
+  EXPECT_FALSE(m.at("parameters").contains("v.1"));  // no constant
+  r = RunUsvid("identify --method lti --vessel msd --data " + data + " --ridge -1 --out " + model);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("method lti: option 'ridge' -1.0 is not allowed: a finite number "
+                               ">= 0"));
+  const auto suite = [&](const nlohmann::json& method) {
+    const std::string file = (dir / "suite.json").string();
+    testing::WriteText(file, nlohmann::json{{"vessels", {"msd"}},
+                                            {"train_maneuvers", {"random-steps"}},
+                                            {"test_maneuvers", {"multisine"}},
+                                            {"methods", {method}},
+                                            {"train_seconds", 60},
+                                            {"test_seconds", 30}}
+                                 .dump());
+    return RunUsvid("compare --suite " + file + " --fresh --out " + (dir / "out").string());
+  };
+  r = suite({{"method", "lti"}, {"ridge", 0.5}, {"constant", "no"}});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json results = ReadJsonFile((dir / "out" / "results.json").string());
+  EXPECT_EQ(results.at("rows").at(0).at("status"), "ok");
+  r = suite({{"method", "lti"}, {"constant", "maybe"}});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("method lti: option 'constant' \"maybe\" is not allowed: one of "
+                               "yes, no"));
 }
 
 }  // namespace

@@ -91,14 +91,14 @@ TEST(MethodOptionsTest, CommandLineTextIsReadAsTheOptionsType) {
   const std::vector<OptionSpec>& s = Specs();
   EXPECT_EQ(OptionFromText("toy", s[0], "300"), nlohmann::json(300));
   EXPECT_EQ(OptionFromText("toy", s[1], "2.5"), nlohmann::json(2.5));
-  EXPECT_EQ(OptionFromText("toy", s[3], "constant,abs"),
-            nlohmann::json({"constant", "abs"}));
+  EXPECT_EQ(OptionFromText("toy", s[3], "constant,abs"), nlohmann::json({"constant", "abs"}));
   EXPECT_EQ(OptionFromText("toy", s[4], "true"), nlohmann::json(true));
   try {
     OptionFromText("toy", s[0], "3e2.5");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "--population '3e2.5': method toy: allowed: a whole number in [4, 1000000]");
+    EXPECT_STREQ(e.what(),
+                 "--population '3e2.5': method toy: allowed: a whole number in [4, 1000000]");
   }
   EXPECT_THROW(OptionFromText("toy", s[0], "12.5"), InputError);
   EXPECT_THROW(OptionFromText("toy", s[1], "nan"), InputError);

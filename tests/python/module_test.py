@@ -63,6 +63,17 @@ class ModuleTest(unittest.TestCase):
                 # products of two variables ("u*v") are not offered; abs(x)*x is
                 self.assertFalse("*" in term and not term.startswith("abs("), term)
 
+    def test_the_example_methods_two_options_reach_python(self):
+        # lti (docs/adding-a-method.md) declares ridge and constant and nothing else.
+        msd = usvid.simulate(vessel="msd", maneuver="random-steps", seed=1)
+        model = usvid.identify(msd, method="lti", vessel="msd", ridge=0.5, constant="no")
+        self.assertEqual(model["options"], {"ridge": 0.5, "constant": "no"})
+        self.assertNotIn("v.1", model["parameters"])
+        with self.assertRaises(ValueError) as raised:
+            usvid.identify(msd, method="lti", vessel="msd", constant="maybe")
+        self.assertIn("method lti: option 'constant' \"maybe\" is not allowed: one of yes, no",
+                      str(raised.exception))
+
     def test_diagnose_finds_nothing_wrong_with_the_vessel_itself(self):
         d = usvid.diagnose(self.train, vessel="odin3dof", discover=False)
         self.assertEqual(d["cause"], "none")

@@ -2,17 +2,19 @@
 // the binary, as docs/real-data.md reports them: the measured zig-zag overshoots, the nominal
 // MMG model's first overshoot and why it is low (the diagnosis: the surge resistance), and every
 // method trained on zig-zag 20/-20 and scored in free run on zig-zag -20/20 and the 35 deg
-// turning circle (docs/studies/kvlcc2-marin.json). The numbers are pinned: a change in any
-// method shows here.
+// turning circle (docs/studies/kvlcc2-marin.json). The methods' fits are held against a pinned
+// run (kvlcc2_marin_baseline.json): a drop fails, a gain passes (and asks to be pinned).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "core/csv_dataset.h"
 #include "core/json_file.h"
@@ -98,65 +100,77 @@ TEST_F(Kvlcc2MarinTest, NominalFirstOvershootAndTheDiagnosisOfWhy) {
   EXPECT_NEAR(SimulatedFirstOvershoot("zigzag:20/20", effect), 12.58, 1.0);
 }
 
-// Every method trained on zig-zag 20/-20, free-run on the two other tests: fit % of r and psi.
+// Fits of r and psi [%] per (method, test maneuver), over its cells (the seeds: gp has three).
+using Fits = std::map<std::pair<std::string, std::string>, std::vector<std::pair<double, double>>>;
+
+Fits FitsOf(const nlohmann::json& rows) {
+  // A diverged free run's fit is -inf, which JSON holds as null.
+  auto fit = [](const nlohmann::json& v) { return v.is_null() ? -INFINITY : v.get<double>(); };
+  Fits fits;
+  for (const auto& row : rows) {
+    const auto& c = row.at("channel_fit_percent");
+    fits[{row.at("method"), row.at("test_maneuver")}].emplace_back(fit(c.at("r")),
+                                                                   fit(c.at("psi")));
+  }
+  return fits;
+}
+
+double Median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+// Every method trained on zig-zag 20/-20, free-run on the two other tests, against the pinned
+// run with `compare --baseline`'s pairing (vessel, maneuvers, method, noise, seed) but one-sided
+// and per cell group, since one or three seeds are too few for its signed-rank test: for r and
+// psi, the median over the group's seeds and its best seed may each fall at most kTolerance
+// points below the pinned run's (the deterministic methods repeat to the last digit; GP's
+// search follows the last bit of its sums, and a compiler or library may move a seed). Gains
+// pass, with a note to pin them (tools/pin-baseline.py).
 TEST_F(Kvlcc2MarinTest, MethodsOnTheHeldOutManeuvers) {
+  constexpr double kTolerance = 3.0;
   const std::string out = (dir_ / "study").string();
+  const std::string baseline_file =
+      std::string(USVID_SOURCE_DIR) + "/tests/real_data/kvlcc2_marin_baseline.json";
   const auto r = RunUsvid("compare --suite " + std::string(USVID_SOURCE_DIR) +
-                          "/docs/studies/kvlcc2-marin.json --out " + out);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+                          "/docs/studies/kvlcc2-marin.json --baseline " + baseline_file +
+                          " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << "compare --baseline found a worse group: " << r.err;
   const nlohmann::json results = ReadJsonFile(out + "/results.json");
-  // method, test -> fits of r and psi over the seeds (one seed but for gp), and the mean fit of
-  // u, v and r.
-  std::map<std::pair<std::string, std::string>, std::vector<std::pair<double, double>>> fits;
   std::map<std::pair<std::string, std::string>, double> mean_fit;
   for (const auto& row : results.at("rows")) {
     ASSERT_EQ(row.at("status"), "ok") << row.dump();
-    const auto& c = row.at("channel_fit_percent");
-    fits[{row.at("method"), row.at("test_maneuver")}].emplace_back(c.at("r"), c.at("psi"));
     mean_fit[{row.at("method"), row.at("test_maneuver")}] = row.at("mean_fit_percent");
   }
   // The hybrid (refit plus the u^2-scaled yaw moment it finds on zz_20) is above refit on both
-  // held-out tests: 88.9 against 83.9 on the other zig-zag, 83.6 against 82.1 on the turning
+  // held-out tests: 89.0 against 83.9 on the other zig-zag, 83.6 against 82.1 on the turning
   // circle (docs/real-data.md).
   for (const char* test : {"zigzag -20/20", "turning 35"})
     EXPECT_GT(mean_fit.at({"hybrid", test}), mean_fit.at({"refit", test}) + 1.0) << test;
-  struct Pin {
-    const char* method;
-    const char* test;
-    double r, psi;
-  };
-  const Pin pins[] = {
-      {"nominal", "zigzag -20/20", 82.9, 51.7},      {"nominal", "turning 35", 81.4, 94.0},
-      {"diagnose", "zigzag -20/20", 87.3, 40.9},     {"diagnose", "turning 35", 80.3, 92.2},
-      {"refit", "zigzag -20/20", 86.5, 45.2},        {"refit", "turning 35", 85.1, 97.6},
-      {"hybrid", "zigzag -20/20", 93.9, 96.2},       {"hybrid", "turning 35", 88.2, 95.5},
-      {"fossen-ceres", "zigzag -20/20", 87.6, 63.9}, {"fossen-ceres", "turning 35", 68.7, 78.3},
-      {"sindy", "zigzag -20/20", 49.9, 42.8},        {"sindy", "turning 35", 43.9, 67.7},
-  };
-  for (const Pin& p : pins) {
-    const auto& f = fits.at({p.method, p.test});
-    ASSERT_EQ(f.size(), 1u) << p.method;
-    EXPECT_NEAR(f[0].first, p.r, 1.0) << p.method << " on " << p.test << ": r";
-    EXPECT_NEAR(f[0].second, p.psi, 1.0) << p.method << " on " << p.test << ": psi";
+
+  const Fits now = FitsOf(results.at("rows"));
+  const Fits pinned = FitsOf(ReadJsonFile(baseline_file).at("rows"));
+  std::vector<std::string> gains;
+  for (const auto& [group, base] : pinned) {
+    const auto& [method, test] = group;
+    ASSERT_TRUE(now.contains(group)) << method << " on " << test << " is missing";
+    const auto& cells = now.at(group);
+    ASSERT_EQ(cells.size(), base.size()) << method << " on " << test;
+    for (const bool psi : {false, true}) {
+      std::vector<double> a, b;
+      for (const auto& c : cells) a.push_back(psi ? c.second : c.first);
+      for (const auto& c : base) b.push_back(psi ? c.second : c.first);
+      const std::string what = method + " on " + test + (psi ? ": psi" : ": r");
+      const double median_now = Median(a), median_pinned = Median(b);
+      const double best_now = *std::max_element(a.begin(), a.end()),
+                   best_pinned = *std::max_element(b.begin(), b.end());
+      EXPECT_GE(median_now, median_pinned - kTolerance) << what << ", median over the seeds";
+      EXPECT_GE(best_now, best_pinned - kTolerance) << what << ", best seed";
+      if (median_now > median_pinned + kTolerance) gains.push_back(what);
+    }
   }
-  // GP at its defaults: the median over its three seeds on the other zig-zag; on the turning
-  // circle, two of the three seeds diverge (a 35 deg turn lies outside what one zig-zag shows)
-  // and the third fits r to 70.5 %.
-  auto median = [](std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-  };
-  const auto& zigzag = fits.at({"gp[+,-,*,abs]", "zigzag -20/20"});
-  ASSERT_EQ(zigzag.size(), 3u);
-  std::vector<double> rs, psis;
-  for (const auto& [a, b] : zigzag) rs.push_back(a), psis.push_back(b);
-  EXPECT_NEAR(median(rs), 75.3, 3.0) << "gp on the zig-zag: r";
-  EXPECT_NEAR(median(psis), 83.0, 3.0) << "gp on the zig-zag: psi";
-  const auto& turning = fits.at({"gp[+,-,*,abs]", "turning 35"});
-  ASSERT_EQ(turning.size(), 3u);
-  double best_r = -INFINITY;
-  for (const auto& [a, b] : turning) best_r = std::max(best_r, a);
-  EXPECT_NEAR(best_r, 70.5, 3.0) << "gp on the turning circle: the best seed's r";
+  for (const std::string& g : gains)
+    std::cerr << "gain over the pinned run: " << g << " (pin it: tools/pin-baseline.py)\n";
 }
 
 }  // namespace
