@@ -53,8 +53,11 @@ nlohmann::json GivenOptions(const IdentifyOptions& o) {
       throw InputError(flag->get_name() + ": method " + method.name + " has no option '" + key +
                        "' (its options: " + (flags.empty() ? "none" : flags) + ")");
     }
-    options[key] = OptionFromText(method.name, *spec,
-                                  spec->type == OptionType::kFlag ? "true" : o.texts.at(key));
+    const nlohmann::json value = OptionFromText(
+        method.name, *spec, spec->type == OptionType::kFlag ? "true" : o.texts.at(key));
+    // Checked here, so that the message names the flag as well as the key.
+    ValidateOptions(method.name, {*spec}, {{key, value}}, flag->get_name());
+    options[key] = value;
   }
   return options;
 }
