@@ -67,7 +67,7 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
     held = SimulateForSuite(vessel, test, suite.test_seconds, first.noise, first.test_seed);
   }
   std::map<std::string, Evaluation> runs;
-  for (const auto& [method, r] : chosen) runs[method] = EvaluateModel(r->model, held);
+  for (const auto& [method, r] : chosen) runs[method] = EvaluateModel(r->model, held, EvaluationScope::kFreeRunOnly);
   // The states the models identify (a vessel model: its dynamic states), and on measured data
   // the heading too.
   std::set<std::string> channels;

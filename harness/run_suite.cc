@@ -208,7 +208,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       const Dataset held = suite.Measured() ? test_sets.at(test)
                                             : SimulateForSuite(job.vessel, test, suite.test_seconds,
                                                                job.noise, row.test_seed);
-      const Scores e = EvaluateModel(model, held).scores;
+      const Scores e = EvaluateModel(model, held, EvaluationScope::kRowScores).scores;
       for (const auto& [channel, score] : e.channels)
         row.channel_fit_percent[channel] = score.fit_percent;
       double sum = 0.0;
@@ -286,7 +286,14 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
 
 std::vector<size_t> SlowestFirst(const std::vector<FitJob>& jobs, std::vector<size_t> cells) {
   auto cost = [&](size_t j) {
-    return FindSuiteMethod(jobs.at(j).method.method).relative_cost;
+    const SuiteMethod& m = jobs.at(j).method;
+    const Method& method = FindSuiteMethod(m.method);
+    if (!method.cost_scale) return method.relative_cost;
+    nlohmann::json own = nlohmann::json::object();  // the options less the shared keys
+    for (const auto& [key, value] : m.options.items())
+      if (!IsSharedSuiteKey(key)) own[key] = value;
+    return method.relative_cost *
+           method.cost_scale(ValidateOptions(method.name, method.options, own, "suite"));
   };
   std::stable_sort(cells.begin(), cells.end(),
                    [&](size_t a, size_t b) { return cost(a) > cost(b); });

@@ -47,9 +47,12 @@ struct Method {
   bool seeded = false;
   // A suite option shown in the row's label, as name[value] (gp[+,-,*,abs]); "" none.
   std::string label_option;
-  // A fit's rough cost against a regression's (1): a suite starts its costliest fits first, so
-  // that no core waits at the end behind one long fit (harness/run_suite.h, SlowestFirst).
+  // A fit's rough cost against a regression's (1) at the method's defaults: a suite starts its
+  // costliest fits first, so that no core waits at the end behind one long fit
+  // (harness/run_suite.h, SlowestFirst). `cost_scale` (may be empty) scales it by the options
+  // (gp: population x generations against its defaults').
   double relative_cost = 1.0;
+  std::function<double(const MethodOptions& options)> cost_scale;
 };
 
 }  // namespace usvid

@@ -222,12 +222,14 @@ nlohmann::json Scores::ToJson() const {
   return m;
 }
 
-Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
+Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded,
+                         EvaluationScope scope) {
   Dataset data = recorded;
   AddSpeedAndCourse(data);  // for models in speed and course (2-DOF)
   AddModelForces(model, data);
   Evaluation e;
   e.run = FreeRunModel(model, data);
+  if (scope == EvaluationScope::kFreeRunOnly) return e;
   Scores& s = e.scores;
   for (const std::string& c : e.run.channels)
     if (data.Has(c)) s.channels[c] = ScoreChannel(data[c], e.run.simulated[c]);
@@ -237,7 +239,7 @@ Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded) {
   s.diverged_channel = e.run.diverged_channel;
   s.samples = data.rows();
   s.seconds = data.duration();
-  s.k_step_nrmse = KStepNrmse(model, data);
+  if (scope == EvaluationScope::kAll) s.k_step_nrmse = KStepNrmse(model, data);
   s.horizon_fit_percent = HorizonFits(model, data, s.channels);
   if (const double vpt = ValidPredictionTime(data, e.run); std::isfinite(vpt))
     s.valid_prediction_s = vpt;

@@ -59,14 +59,19 @@ struct Scores {
 
 struct Evaluation {
   Scores scores;
-  nlohmann::json metrics;  // scores.ToJson()
+  nlohmann::json metrics;  // scores.ToJson(); null for EvaluationScope::kFreeRunOnly
   FreeRun run;
 };
 
 inline constexpr double kHorizonsS[] = {5.0, 30.0};
 inline constexpr double kValidPredictionError = 0.5;
 
-Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& data);
+// How much EvaluateModel computes: every score (metrics.json); all but the k-step NRMSE, which a
+// suite's rows do not read and which costs about two free runs; or the free run alone (a plot).
+enum class EvaluationScope { kAll, kRowScores, kFreeRunOnly };
+
+Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& data,
+                         EvaluationScope scope = EvaluationScope::kAll);
 
 // Each channel's fit % of the model restarted from the measured state every `horizon_s`.
 std::map<std::string, double> HorizonFit(const nlohmann::json& model, const Dataset& data,

@@ -197,6 +197,11 @@ Method GpMethod() {
   m.seeded = true;
   m.label_option = "operators";
   m.relative_cost = 30.0;  // the search, the selection's simulations and the weights' refit
+  m.cost_scale = [](const MethodOptions& o) {  // the search's share of it
+    const gp::GpOptions d;
+    return static_cast<double>(o.Integer("population") * o.Integer("generations")) /
+           (static_cast<double>(d.population) * d.generations);
+  };
   return m;
 }
 

@@ -173,6 +173,14 @@ TEST_F(SuiteTest, SlowestFitsStartFirst) {
   // The cheap ones keep their job order.
   std::vector<size_t> rest(order.begin() + (first_other - methods.begin()), order.end());
   EXPECT_TRUE(std::is_sorted(rest.begin(), rest.end()));
+  // A small GP search (compare --quick's: 300 x 10 of the default 2000 x 50) is cheap: the
+  // shooting fits start before it.
+  small["methods"] = {"sindy", {{"method", "gp"}, {"population", 300}, {"generations", 10}},
+                      "fossen-ceres"};
+  const std::vector<FitJob> quick = FitJobs(ParseSuite(small, "s.json"));
+  std::vector<size_t> cells(quick.size());
+  for (size_t j = 0; j < cells.size(); ++j) cells[j] = j;
+  EXPECT_EQ(quick.at(SlowestFirst(quick, cells).front()).method.method, "fossen-ceres");
 }
 
 // A small suite: one row per fit and test maneuver, each scored on another seed, the same at

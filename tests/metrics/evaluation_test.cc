@@ -53,6 +53,24 @@ TEST_F(EvaluationTest, FitPercentFollowsTheDefinition) {
   EXPECT_NEAR(ScoreChannel(y, off).rmse, 0.5, 1e-12);
 }
 
+// A suite's rows need no k-step NRMSE and a plot only the free run: the narrower scopes leave
+// that out and change nothing else, to the bit.
+TEST_F(EvaluationTest, NarrowerScopesComputeTheSameScoresWithoutTheRest) {
+  nlohmann::json model = TrueModel();
+  model["equations"]["u"] = "0.99*(" + model["equations"]["u"].get<std::string>() + ")";
+  const Dataset d = Odin("random-steps");
+  const Evaluation all = EvaluateModel(model, d);
+  const Evaluation rows = EvaluateModel(model, d, EvaluationScope::kRowScores);
+  const Evaluation plot = EvaluateModel(model, d, EvaluationScope::kFreeRunOnly);
+  nlohmann::json expected = all.metrics;
+  expected["k_step_nrmse"] = nlohmann::json::object();
+  EXPECT_FALSE(all.metrics.at("k_step_nrmse").empty());
+  EXPECT_EQ(rows.metrics.dump(), expected.dump());
+  EXPECT_TRUE(plot.metrics.is_null());
+  for (const std::string& c : all.run.channels)
+    EXPECT_EQ(plot.run.simulated[c], all.run.simulated[c]) << c;
+}
+
 // The true equations, free-run on the simulator's inputs, give back the simulator's run,
 // positions and heading included (the kinematics of the free run are right).
 TEST_F(EvaluationTest, TrueEquationsReproduceTheSimulator) {
