@@ -35,9 +35,7 @@ IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vess
   r.vessel = vessel;
   r.seed = seed;
   const nlohmann::json& o = method.options;
-  r.options = nlohmann::json::object();
-  for (const auto& [key, value] : o.items())
-    if (!IsSharedSuiteKey(key)) r.options[key] = value;
+  r.options = method.OwnOptions();
   r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
   if (o.contains("derivative"))
     r.preprocess.derivative = DerivativeMethod::Parse(o["derivative"].get<std::string>());
@@ -285,18 +283,19 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
 }
 
 std::vector<size_t> SlowestFirst(const std::vector<FitJob>& jobs, std::vector<size_t> cells) {
-  auto cost = [&](size_t j) {
+  std::map<size_t, double> cost;  // each job's, once
+  for (size_t j : cells) {
     const SuiteMethod& m = jobs.at(j).method;
     const Method& method = FindSuiteMethod(m.method);
-    if (!method.cost_scale) return method.relative_cost;
-    nlohmann::json own = nlohmann::json::object();  // the options less the shared keys
-    for (const auto& [key, value] : m.options.items())
-      if (!IsSharedSuiteKey(key)) own[key] = value;
-    return method.relative_cost *
-           method.cost_scale(ValidateOptions(method.name, method.options, own, "suite"));
-  };
+    cost[j] = method.relative_cost;
+    if (method.cost_scale) {
+      const MethodOptions options =
+          ValidateOptions(method.name, method.options, m.OwnOptions(), "suite");
+      cost[j] *= method.cost_scale(options);
+    }
+  }
   std::stable_sort(cells.begin(), cells.end(),
-                   [&](size_t a, size_t b) { return cost(a) > cost(b); });
+                   [&](size_t a, size_t b) { return cost.at(a) > cost.at(b); });
   return cells;
 }
 

@@ -12,7 +12,6 @@
 #include <type_traits>
 
 #include "core/error.h"
-#include "diagnosis/diagnose.h"
 #include "maneuvers/maneuver_factory.h"
 #include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
@@ -71,9 +70,10 @@ bool IsSharedSuiteKey(const std::string& key) {
 }
 
 void CheckSuiteMethod(const SuiteMethod& method, const std::string& where) {
-  std::vector<OptionSpec> specs = FindSuiteMethod(method.method).options;  // copied: + shared
-  // The shared keys the method reads (methods/method.h: named_channels, preprocessed).
+  // The method's options, and the shared keys it reads (methods/method.h: named_channels,
+  // preprocessed).
   const Method& m = FindSuiteMethod(method.method);
+  std::vector<OptionSpec> specs = m.options;
   for (const OptionSpec& shared : SharedSuiteOptions()) {
     const bool channels = shared.key == "states" || shared.key == "inputs";
     if (!(channels ? m.named_channels : m.preprocessed)) continue;
@@ -166,6 +166,13 @@ std::vector<SuiteMethod> ParseMethods(const nlohmann::json& list, const std::str
 }
 
 }  // namespace
+
+nlohmann::json SuiteMethod::OwnOptions() const {
+  nlohmann::json own = nlohmann::json::object();
+  for (const auto& [key, value] : options.items())
+    if (!IsSharedSuiteKey(key)) own[key] = value;
+  return own;
+}
 
 std::string SuiteMethod::Label() const {
   if (method == kExternalMethod) return options.at("name").get<std::string>();

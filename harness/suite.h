@@ -36,6 +36,8 @@ struct SuiteMethod {
   std::string method;      // a method of SuiteMethods() (harness/suite_methods.h)
   nlohmann::json options;  // its options and the shared keys, as the suite gives them
   std::string Label() const;
+  // `options` less the shared keys (SharedSuiteOptions): the method's own, as declared.
+  nlohmann::json OwnOptions() const;
 };
 
 struct Suite {
