@@ -4,6 +4,7 @@
 // Fits one method and writes model.json (docs/data.md#modeljson). Every method's options are
 // flags made from its declaration (methods/method_options.h): max_depth is --max-depth.
 
+#include <algorithm>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -45,8 +46,8 @@ nlohmann::json GivenOptions(const IdentifyOptions& o) {
   nlohmann::json options = nlohmann::json::object();
   for (const auto& [key, flag] : o.flags) {
     if (flag->count() == 0) continue;
-    const auto spec = std::ranges::find_if(method.options,
-                                           [&](const OptionSpec& s) { return s.key == key; });
+    const auto spec =
+        std::ranges::find_if(method.options, [&](const OptionSpec& s) { return s.key == key; });
     if (spec == method.options.end()) {
       std::string flags;
       for (const OptionSpec& s : method.options) flags += (flags.empty() ? "" : ", ") + s.Flag();
@@ -86,10 +87,11 @@ void RunIdentify(const IdentifyOptions& o) {
             << " s)\n";
 }
 
-// One flag per option key of any method, its help each declaring method's line and default.
+// One flag per option key of any method. Its help gives each declaring method's line and
+// default, once for methods that say the same (refit and hybrid share refit's options).
 void AddMethodOptionFlags(CLI::App& cmd, IdentifyOptions& o) {
   std::vector<std::string> keys;
-  std::map<std::string, std::string> help;
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> lines;  // text, methods
   std::map<std::string, const OptionSpec*> first;
   for (const Method& m : Methods())
     for (const OptionSpec& s : m.options) {
@@ -97,16 +99,32 @@ void AddMethodOptionFlags(CLI::App& cmd, IdentifyOptions& o) {
         keys.push_back(s.key);
         first[s.key] = &s;
       }
-      std::string& h = help[s.key];
-      h += (h.empty() ? "" : "; ") + m.name + ": " + s.help +
-           (s.type == OptionType::kFlag ? "" : " (default " + s.DefaultText() + ")");
+      const std::string text =
+          s.help + (s.type == OptionType::kFlag ? "" : " (default " + s.DefaultText() + ")");
+      auto& said = lines[s.key];
+      const auto same = std::ranges::find_if(said, [&](const auto& l) { return l.first == text; });
+      if (same == said.end())
+        said.push_back({text, m.name});
+      else
+        same->second += ", " + m.name;
     }
   for (const std::string& key : keys) {
     const OptionSpec& s = *first[key];
+    std::string help;
+    for (const auto& [text, methods] : lines[key])
+      help += (help.empty() ? "" : "; ") + methods + ": " + text;
     std::string names = s.Flag();
     if (const auto old = kOldFlags.find(key); old != kOldFlags.end()) names += "," + old->second;
-    o.flags[key] = s.type == OptionType::kFlag ? cmd.add_flag(names, o.switches[key], help[key])
-                                               : cmd.add_option(names, o.texts[key], help[key]);
+    if (s.type == OptionType::kFlag) {
+      o.flags[key] = cmd.add_flag(names, o.switches[key], help);
+      continue;
+    }
+    CLI::Option* flag = cmd.add_option(names, o.texts[key], help);
+    flag->type_name(s.type == OptionType::kInteger  ? "INT"
+                    : s.type == OptionType::kNumber ? "FLOAT"
+                    : s.type == OptionType::kList   ? "A,B,..."
+                                                    : "TEXT");
+    o.flags[key] = flag;
   }
 }
 
