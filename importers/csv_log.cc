@@ -48,7 +48,21 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
     throw InputError(
         Located(file, header.line, 0, "no time channel: map one with --map t=COLUMN[:unit]"));
 
-  const auto nrow = static_cast<Eigen::Index>(table.rows.size() - 1);
+  // Rows with every cell empty (a logger's trailing padding) hold nothing: dropped, and said.
+  std::vector<const CsvRow*> rows;
+  int first_empty_line = 0;
+  long empty_rows = 0;
+  for (size_t i = 1; i < table.rows.size(); ++i) {
+    const CsvRow& row = table.rows[i];
+    if (std::all_of(row.fields.begin(), row.fields.end(),
+                    [](const CsvField& f) { return IsBlankLine(f.text); })) {
+      if (empty_rows++ == 0) first_empty_line = row.line;
+      continue;
+    }
+    rows.push_back(&row);
+  }
+  if (rows.size() < 2) throw InputError(Located(file, 0, 0, "fewer than two rows with data"));
+  const auto nrow = static_cast<Eigen::Index>(rows.size());
   std::vector<Eigen::VectorXd> values;
   std::vector<Eigen::Array<bool, Eigen::Dynamic, 1>> sampled;
   for (const ColumnMapping& m : plan) {
@@ -61,7 +75,7 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
     Eigen::VectorXd v(nrow);
     Eigen::Array<bool, Eigen::Dynamic, 1> s(nrow);
     for (Eigen::Index i = 0; i < nrow; ++i) {
-      const CsvRow& row = table.rows[i + 1];
+      const CsvRow& row = *rows[static_cast<size_t>(i)];
       if (c >= row.fields.size())
         throw InputError(Located(file, row.line, row.end_column,
                                  "short row: no cell for column '" + m.source + "'"));
@@ -94,6 +108,9 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
     if (!m.unit.empty()) s << " (" << m.unit << " to SI, x" << m.factor << ")";
   }
   report.Note(s.str());
+  if (empty_rows > 0)
+    report.Note("dropped " + std::to_string(empty_rows) + " rows with every cell empty (the first at line " +
+                std::to_string(first_empty_line) + ")");
   if (data.Has("vn") || data.Has("ve")) {
     if (!data.Has("vn") || !data.Has("ve") || !data.Has("psi"))
       throw InputError(Located(file, header.line, 0,

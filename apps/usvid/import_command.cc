@@ -1,12 +1,17 @@
-// usvid import --format marin-dat|csv --data LOG [--map NEW=OLD[:unit],...] --out F.csv
+// usvid import --format marin-dat|csv --data LOG [--map NEW=OLD[:unit],...] [--scale LAMBDA]
+//   --out F.csv
 
+#include <cmath>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <sstream>
 
 #include "apps/usvid/commands.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "importers/csv_log.h"
+#include "importers/froude_scaling.h"
 #include "importers/marin_dat.h"
 #include "preprocessing/heading_rate.h"
 
@@ -18,10 +23,31 @@ struct ImportOptions {
   std::string data;
   std::vector<std::string> map;
   std::string rate_from;
+  double scale = 1.0;
+  std::vector<std::string> dimensions;
   std::string out;
 };
 
+// --dimension NAME=KIND,...
+std::map<std::string, Dimension> ParseDimensions(const std::vector<std::string>& items) {
+  std::map<std::string, Dimension> out;
+  for (const std::string& item : items) {
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--dimension '" + item + "': expected CHANNEL=KIND, e.g. wind=speed");
+    try {
+      out[item.substr(0, eq)] = ParseDimension(item.substr(eq + 1));
+    } catch (const InputError& e) {
+      throw InputError("--dimension " + item + ": " + e.what());
+    }
+  }
+  return out;
+}
+
 void RunImport(const ImportOptions& o) {
+  const std::map<std::string, Dimension> dimensions = ParseDimensions(o.dimensions);
+  if (!dimensions.empty() && o.scale == 1.0)
+    throw InputError("--dimension: applies with --scale only");
   ImportReport report;
   Dataset data;
   if (o.format == "marin-dat") {
@@ -35,6 +61,13 @@ void RunImport(const ImportOptions& o) {
     if (data.Has("r")) throw InputError("--rate-from: the log already has a channel r");
     data.Set("r", RateFromHeading(data, o.rate_from));
     report.notes.push_back("r from the derivative of the smoothed, unwrapped " + o.rate_from);
+  }
+  if (o.scale != 1.0) {
+    std::ostringstream s;
+    s << "Froude-scaled by lambda = " << o.scale << ": t x" << std::sqrt(o.scale);
+    for (const ScaledChannel& c : FroudeScale(data, o.scale, dimensions))
+      s << ", " << c.channel << " x" << c.factor << " (" << c.dimension << ")";
+    report.notes.push_back(s.str());
   }
   WriteDatasetCsv(o.out, data);
   for (const std::string& note : report.notes) std::cerr << "usvid import: " << note << '\n';
@@ -61,6 +94,15 @@ void AddImportCommand(CLI::App& app) {
   cmd->add_option("--rate-from", o->rate_from,
                   "Add the rate of turn r [rad/s] from this heading channel [rad] (a log without "
                   "a gyro): unwrapped, smoothing-spline derivative");
+  cmd->add_option("--scale", o->scale,
+                  "Froude-scale the log by LAMBDA = L_target / L_log (> 1: model to full scale, "
+                  "< 1: back): time and speeds x sqrt(LAMBDA), lengths x LAMBDA, rates and "
+                  "revolutions / sqrt(LAMBDA), forces x LAMBDA^3, moments x LAMBDA^4; each "
+                  "channel's factor on stderr");
+  cmd->add_option("--dimension", o->dimensions,
+                  "With --scale, the dimension of a channel the data contract does not name: "
+                  "CHANNEL=length|speed|rate|revolutions|angle|acceleration|force|moment,...")
+      ->delimiter(',');
   cmd->add_option("--out", o->out, "The data CSV to write")->required();
   cmd->callback([o] { RunImport(*o); });
 }

@@ -130,6 +130,36 @@ TEST_F(UsvidCliTest, ImportCsvThenInfo) {
   EXPECT_FALSE(fs::exists(bad_out));
 }
 
+// --scale Froude-scales the log and says each channel's factor; a scale of 0 or below, or a
+// channel of no known dimension, is exit 2 with one line and no file written.
+TEST_F(UsvidCliTest, ImportFroudeScales) {
+  const auto dir = FreshTempDir();
+  WriteText(dir / "log.csv", "t,u,r,n,delta,wind\n10,0.5,0.1,10,0.2,1\n10.1,0.6,0.2,11,0.3,2\n");
+  const auto out = (dir / "full.csv").string();
+  const std::string args = "import --format csv --data " + (dir / "log.csv").string() +
+                           " --map t=t,u=u,r=r,n=n,delta=delta,wind=wind --out " + out;
+  const auto r = RunUsvid(args + " --scale 100 --dimension wind=speed");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("Froude-scaled by lambda = 100: t x10, u x10 (speed)"));
+  const Dataset d = ReadDatasetCsv(out);
+  EXPECT_NEAR(d.t()(0), 100.0, 1e-9);  // time may start anywhere, and scales with the rest
+  EXPECT_NEAR(d.t()(1), 101.0, 1e-9);
+  EXPECT_NEAR(d["u"](0), 5.0, 1e-12);
+  EXPECT_NEAR(d["r"](0), 0.01, 1e-12);
+  EXPECT_NEAR(d["n"](1), 1.1, 1e-12);
+  EXPECT_NEAR(d["delta"](0), 0.2, 1e-12);
+  EXPECT_NEAR(d["wind"](1), 20.0, 1e-12);
+  fs::remove(out);
+  for (const std::string& bad : {" --scale 0", " --scale -4", " --scale 100"}) {
+    const auto e = RunUsvid(args + bad);
+    EXPECT_EQ(e.exit_code, 2) << bad;
+    EXPECT_THAT(e.err, HasSubstr("--scale")) << bad;
+    EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
+    EXPECT_FALSE(fs::exists(out)) << bad;
+  }
+  EXPECT_THAT(RunUsvid(args + " --scale 100").err, HasSubstr("channel 'wind' has no known dimension"));
+}
+
 // The KVLCC2 acceptance command of issue 2, run through the binary.
 TEST_F(UsvidCliTest, ImportMarinZigZag) {
   const std::string path =

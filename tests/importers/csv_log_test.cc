@@ -51,6 +51,20 @@ TEST_F(CsvLogTest, RepairsTimeAndSaysSo) {
   EXPECT_THAT(report.notes, ::testing::Contains(HasSubstr("dropping 2 rows")));
 }
 
+// Rows with every cell empty (a logger's padding) are dropped and said; a row with one empty
+// cell is still an unsampled value, and an empty time still an error.
+TEST_F(CsvLogTest, DropsRowsWithEveryCellEmpty) {
+  ImportReport report;
+  const Dataset d =
+      Parse("time,x,y\n0,1,2\n1,,3\n2,5,6\n,,\n , ,\n", {"t=time", "x=x", "y=y"}, &report);
+  EXPECT_EQ(d.rows(), 3);
+  EXPECT_FALSE(d.Get("x").sampled(1));
+  EXPECT_THAT(report.notes,
+              ::testing::Contains(HasSubstr("dropped 2 rows with every cell empty (the first at line 5)")));
+  EXPECT_THROW(Parse("time,x\n0,1\n,2\n", {"t=time", "x=x"}), InputError);
+  EXPECT_THROW(Parse("time,x\n0,1\n,\n", {"t=time", "x=x"}), InputError);  // one row left
+}
+
 // Errors name the file, line and column, or the map item at fault.
 TEST_F(CsvLogTest, BadInputIsLocated) {
   try {
@@ -81,6 +95,27 @@ TEST_F(CsvLogTest, RealFuzhouUsvLogImportsWithMap) {
   // The log's heading [deg] and psi [rad] are the same angle.
   EXPECT_LT((d["heading"] - d["psi"]).cwiseAbs().maxCoeff(), 1e-6);
   EXPECT_LT(d["delta"].cwiseAbs().maxCoeff(), 0.6);
+}
+
+// The Esso Osaka zig-zag that ends in 327 empty rows imports with a column map alone (issue 38;
+// docs/real-data.md#esso-osaka gives the map).
+TEST_F(CsvLogTest, RealEssoOsakaZigZagImportsWithMapAlone) {
+  const std::string path =
+      std::string(USVID_SHARED_DATA_DIR) + "/esso-osaka/zigzag/zigzag_31-Jul-2020_13_50_28.csv";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared data absent: " << path;
+  ImportReport report;
+  const Dataset d = ImportCsvLog(
+      path,
+      ParseColumnMap({"t=t [s]", "x=x_position_mid [m]", "y=y_position_mid [m]",
+                      "psi=psi_hat [rad]", "u=u_velo [m/s]", "v=vm_velo [m/s]",
+                      "r=r_angvelo [rad/s]", "n=n_prop [rps]", "delta=delta_rudder [rad]",
+                      "wind_speed=wind_velo_relative_mid [m/s]",
+                      "wind_direction=wind_dir_relative_mid [rad]"}),
+      report);
+  EXPECT_THAT(report.notes, ::testing::Contains(HasSubstr("dropped 327 rows with every cell empty")));
+  EXPECT_GT(d.rows(), 1000);
+  EXPECT_TRUE(d.Get("u").FullySampled());
+  EXPECT_LT(d["delta"].cwiseAbs().maxCoeff(), 0.7);  // radians already
 }
 
 }  // namespace
