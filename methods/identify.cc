@@ -3,7 +3,9 @@
 #include <stdexcept>
 
 #include "core/derived_channels.h"
+#include "core/parse_number.h"
 #include "methods/registry.h"
+#include "methods/self_damping.h"
 #include "preprocessing/waterjet_forces.h"
 
 namespace usvid {
@@ -24,6 +26,20 @@ nlohmann::json Identify(const Method& method, Dataset data, const IdentifyReques
     throw std::logic_error("method " + method.name + " declares option '" + unread.front() +
                            "' but did not read it");
   if (!model.contains("options")) model["options"] = options.Json();  // a preset may say more
+  if (model.contains("equations") && model["equations"].is_object()) {
+    const std::map<std::string, double> damping = SelfDamping(model["equations"], data);
+    nlohmann::json undamped = nlohmann::json::array();
+    for (const auto& [state, d] : damping)
+      if (!(d < 0)) {
+        undamped.push_back(state);
+        if (log)
+          log("warning: " + state + "' has no damping: d(" + state + "')/d" + state +
+              " averages " + FormatNumber(d) +
+              " 1/s on the training data, so a free run can drift or diverge");
+      }
+    model["self_damping"] = damping;
+    model["undamped"] = undamped;
+  }
   return model;
 }
 

@@ -9,6 +9,25 @@
 namespace usvid {
 namespace {
 
+// The length, in samples, of the stretch between breaks that the median sample lies in: half
+// the record is in stretches at least this long. A ramp's many breaks close together weigh
+// little beside the long holds around them; a quantised or hand-moved input's breaks everywhere
+// make it short.
+Eigen::Index TypicalPiece(const std::vector<Eigen::Index>& breaks, Eigen::Index rows) {
+  std::vector<Eigen::Index> pieces;
+  Eigen::Index previous = 0;
+  for (const Eigen::Index b : breaks) {
+    pieces.push_back(b - previous);
+    previous = b;
+  }
+  pieces.push_back(rows - previous);
+  std::sort(pieces.begin(), pieces.end());
+  Eigen::Index covered = 0;
+  for (const Eigen::Index p : pieces)
+    if ((covered += p) * 2 >= rows) return p;
+  return pieces.back();
+}
+
 // The data's own rate: one over the median interval between rows.
 double NativeRate(const Dataset& d) { return 1.0 / MedianInterval(d.t()); }
 
@@ -78,8 +97,19 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
   Dataset result(grid.t());
   std::vector<Eigen::VectorXd> shifted;
   for (const std::string& u : inputs) shifted.push_back(Shift(grid[u], shift));
-  const std::vector<Eigen::Index> breaks =
+  std::vector<Eigen::Index> breaks =
       options.step_breaks ? StepBreaks(shifted) : std::vector<Eigen::Index>{};
+  if (!breaks.empty()) {
+    const double typical_s = static_cast<double>(TypicalPiece(breaks, grid.rows())) * dt;
+    if (typical_s < options.min_piece_s) {
+      std::ostringstream d;
+      d << "no step breaks: the inputs' " << breaks.size()
+        << " changes leave half the record in stretches under " << typical_s
+        << " s, so they are not piecewise constant";
+      out.notes.push_back(d.str());
+      breaks.clear();
+    }
+  }
   for (const std::string& s : states) {
     const SmoothedSignal sm = SmoothAndDifferentiate(grid[s], dt, options.derivative, breaks);
     result.Set(s, sm.value);

@@ -19,7 +19,12 @@ struct PreprocessOptions {
   double rate_hz = 0.0;  // 0: the data's own rate (median interval)
   Interpolation interpolation = Interpolation::kCubicSpline;
   DerivativeMethod derivative;
+  // The spline's breaks at the inputs' steps (derivative.h), where the inputs are piecewise
+  // constant. Where half the record lies in stretches between breaks shorter than min_piece_s,
+  // the "steps" are a quantised, noisy or hand-moved input's (a real log's rpm and rudder), the
+  // stretches too short to differentiate, and none are used (said in the notes).
   bool step_breaks = true;
+  double min_piece_s = 1.5;
   // Delay in seconds, or none: estimated when `estimate_delay`.
   double delay_s = 0.0;
   bool estimate_delay = false;

@@ -2,7 +2,8 @@
 # Reproduces docs/real-data.md from the measured data in ../shared/data:
 #   tools/real-data-study.sh [OUT]            (default OUT: results/real-data; usvid built first)
 # 1. imports the KVLCC2 MARIN tests and the USV log (the log's rate of turn from its heading);
-# 2. compares every method on them (docs/studies/*.json): OUT/{kvlcc2,usv}-compare/report.html;
+# 2. compares every method on them and on the Esso Osaka runs (docs/studies/*.json):
+#    OUT/{kvlcc2,usv,esso}-compare/report.html;
 # 3. diagnoses the nominal MMG model on each KVLCC2 test: OUT/diagnose_*/report.html;
 # 4. the 20/20 zig-zag's first overshoots, measured, nominal and diagnosed: OUT/overshoots.md.
 set -euo pipefail
@@ -23,6 +24,7 @@ done
 
 "$usvid" compare --suite "$root/docs/studies/kvlcc2-marin.json" --out "$out/kvlcc2-compare"
 "$usvid" compare --suite "$root/docs/studies/usv-fuzhou.json" --out "$out/usv-compare"
+"$usvid" compare --suite "$root/docs/studies/esso-osaka.json" --out "$out/esso-compare"
 "$usvid" identify --method nomoto --states r --inputs delta --data "$out/usv.csv" \
   --out "$out/usv-nomoto.json"
 

@@ -1,7 +1,9 @@
 // `sindy`: sparse regression on a library of terms (methods/sindy/sindy.h), registered in
 // methods/method_list.h.
 #include <algorithm>
+#include <sstream>
 
+#include "core/error.h"
 #include "core/expression.h"
 #include "core/parse_number.h"
 #include "methods/channel_fit.h"
@@ -47,6 +49,37 @@ sindy::SindyOptions SindyOptionsFor(const MethodOptions& o) {
   return s;
 }
 
+// An equation with no term is a failed fit, not a model "x' = 0": why every term of `state`
+// was cut, from its details (the threshold given, or the held-out path: no term better than
+// none, or none within one standard error of the best).
+std::string EmptyEquationError(const std::string& state, const nlohmann::json& details,
+                               bool given) {
+  std::ostringstream s;
+  s << "sindy: every term of " << state << "' was cut: ";
+  const nlohmann::json& path = details.at("thresholds");
+  if (given) {
+    s << "the threshold " << FormatNumber(details.at("threshold").get<double>()) << " leaves none";
+  } else {
+    const nlohmann::json* least = &path.front();
+    for (const nlohmann::json& p : path)
+      if (p.at("heldout_mse").get<double>() < least->at("heldout_mse").get<double>()) least = &p;
+    const double every = path.front().at("heldout_mse").get<double>();
+    if (least->at("terms").get<int>() == 0)
+      s << "no term predicts the held-out folds' " << state << "' better than none (held-out MSE "
+        << FormatNumber(least->at("heldout_mse").get<double>()) << " with none, "
+        << FormatNumber(every) << " with every term)";
+    else
+      s << "the one-standard-error rule chose the threshold "
+        << FormatNumber(details.at("threshold").get<double>())
+        << ", and the least held-out MSE, " << FormatNumber(least->at("heldout_mse").get<double>())
+        << " with " << least->at("terms").get<int>() << " terms, is within one standard error of "
+        << "none";
+  }
+  s << "; the derivative may be mostly noise at this record's precision: try a smoother "
+       "--derivative (sg:41:3), a smaller --threshold, or more data";
+  return s.str();
+}
+
 nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& request,
                                   const MethodOptions& o, const Logger& log) {
   const sindy::SindyOptions options = SindyOptionsFor(o);
@@ -66,6 +99,9 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
   }
   const sindy::SindyIdentification id = sindy::IdentifyWithSindy(
       fit.prepared, fit.channels.states, fit.channels.variables, library_inputs, options);
+  for (const std::string& state : fit.channels.states)
+    if (id.details.at(state).at("terms").empty())
+      throw InputError(EmptyEquationError(state, id.details.at(state), o.Has("threshold")));
   fit.model["parameters"] = id.parameters;
   fit.model["equations"] = id.equations;
   fit.model["sindy"] = id.details;

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/expression.h"
+#include "methods/identify.h"
 #include "metrics/evaluation.h"
 #include "preprocessing/pipeline.h"
 #include "simulators/msd.h"
@@ -159,6 +160,49 @@ TEST_F(SindyTest, BadInputThrows) {
   negative.thresholds = {0.1, -1.0};
   EXPECT_THROW(IdentifyWithSindy(prep, {"x"}, {"x"}, {}, negative), InputError);
   EXPECT_NO_THROW(IdentifyWithSindy(prep, {"x"}, {"x"}, {}, {}));
+}
+
+// A derivative that is pure noise, unrelated to every candidate: no threshold predicts it better
+// than nothing, and the regression keeps no term (diagnose's residual search reads that as
+// "nothing to propose"). The sindy method turns it into a failed fit that names the state and
+// why: never a model "x' = 0".
+TEST_F(SindyTest, AnEquationWithNoTermIsAFailedFitThatSaysWhy) {
+  const Eigen::Index n = 2000;
+  PreparedData prep;
+  prep.data = Dataset(Eigen::VectorXd::LinSpaced(n, 0.0, 0.1 * static_cast<double>(n - 1)));
+  Eigen::VectorXd x(n), noise(n);
+  uint64_t state = 12345;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    noise(i) = static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
+    x(i) = std::sin(0.01 * static_cast<double>(i));
+  }
+  prep.data.Set("x", x);
+  prep.data.Set("x_dot", noise);
+  const SindyIdentification none = IdentifyWithSindy(prep, {"x"}, {"x"}, {}, {});
+  EXPECT_TRUE(none.details["x"]["terms"].empty());
+  EXPECT_EQ(none.equations["x"], "0");
+
+  prep.data.Set("x_dot", -0.5 * x + 0.01 * noise);
+  const SindyIdentification id = IdentifyWithSindy(prep, {"x"}, {"x"}, {}, {});
+  EXPECT_NEAR(id.parameters.value("x.x", 0.0), -0.5, 0.01);
+
+  // Through the method: a threshold that cuts everything is named in the error.
+  Dataset record = testing::Simulate("odin3dof", "random-steps", 120, 0.005, 1);
+  IdentifyRequest request;
+  request.method = "sindy";
+  request.states = kOdinStates;
+  request.inputs = kOdinInputs;
+  request.options = {{"threshold", 1e6}};
+  try {
+    Identify(record, request);
+    FAIL() << "a model of 0 was returned";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sindy: every term of u' was cut: the threshold 1e+06 "
+                                         "leaves none"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -108,6 +108,7 @@ Fits FitsOf(const nlohmann::json& rows) {
   auto fit = [](const nlohmann::json& v) { return v.is_null() ? -INFINITY : v.get<double>(); };
   Fits fits;
   for (const auto& row : rows) {
+    if (row.at("status") != "ok") continue;  // a failed fit has no fits (checked above)
     const auto& c = row.at("channel_fit_percent");
     fits[{row.at("method"), row.at("test_maneuver")}].emplace_back(fit(c.at("r")),
                                                                    fit(c.at("psi")));
@@ -139,6 +140,13 @@ TEST_F(Kvlcc2MarinTest, MethodsOnTheHeldOutManeuvers) {
   const nlohmann::json results = ReadJsonFile(out + "/results.json");
   std::map<std::pair<std::string, std::string>, double> mean_fit;
   for (const auto& row : results.at("rows")) {
+    if (row.at("method") == "sindy") {
+      // Issue 38: u', logged to three digits, is noise to every candidate term; SINDy says so
+      // instead of returning "u' = 0" (docs/real-data.md).
+      EXPECT_THAT(row.at("status").get<std::string>(),
+                  ::testing::HasSubstr("failed: sindy: every term of u' was cut"));
+      continue;
+    }
     ASSERT_EQ(row.at("status"), "ok") << row.dump();
     mean_fit[{row.at("method"), row.at("test_maneuver")}] = row.at("mean_fit_percent");
   }

@@ -2,6 +2,7 @@
 // docs/real-data.md reports it: the rate of turn from the heading, a first-order Nomoto model
 // (T r' + r = K (delta - delta0)) and GP and SINDy trained on the first 140 s and free-run on
 // the last 70 s (docs/studies/usv-fuzhou.json).
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,7 +45,8 @@ TEST(UsvFuzhouTest, NomotoModelOfTheWholeLog) {
 }
 
 // Held out: the last 70 s. The Nomoto model's two constants carry over. SINDy, which must find
-// its terms in a 2 Hz derivative of a GPS heading, does not. GP's outcome here is chaotic: which
+// its terms in a 2 Hz derivative of a GPS heading, finds none that beats no term by more than
+// the folds' spread, and says so: a failed fit, not "r' = 0" (issue 38). GP's outcome here is chaotic: which
 // terms its search keeps changes with the last bit of libm's results, so on one machine two
 // seeds of three beat Nomoto and on another none did (docs/real-data.md). The test therefore
 // pins only what holds on every machine: each GP seed is scored, with finite fits.
@@ -57,6 +59,11 @@ TEST(UsvFuzhouTest, MethodsOnTheHeldBackPart) {
   const nlohmann::json results = ReadJsonFile((dir / "study" / "results.json").string());
   std::map<std::string, std::vector<std::pair<double, double>>> fits;
   for (const auto& row : results.at("rows")) {
+    if (row.at("method") == "sindy") {
+      EXPECT_THAT(row.at("status").get<std::string>(),
+                  ::testing::HasSubstr("failed: sindy: every term of r' was cut"));
+      continue;
+    }
     ASSERT_EQ(row.at("status"), "ok") << row.dump();
     const auto& c = row.at("channel_fit_percent");
     fits[row.at("method")].emplace_back(c.at("r"), c.at("psi"));
@@ -64,10 +71,6 @@ TEST(UsvFuzhouTest, MethodsOnTheHeldBackPart) {
   ASSERT_EQ(fits.at("nomoto").size(), 1u);
   EXPECT_NEAR(fits.at("nomoto")[0].first, 48.3, 1.0);
   EXPECT_NEAR(fits.at("nomoto")[0].second, 75.7, 1.0);
-  for (const auto& [r_fit, psi_fit] : fits.at("sindy")) {
-    EXPECT_LT(r_fit, fits.at("nomoto")[0].first - 10.0);
-    EXPECT_LT(psi_fit, fits.at("nomoto")[0].second - 30.0);
-  }
   ASSERT_EQ(fits.at("gp[+,-,*]").size(), 3u);
   for (const auto& [r_fit, psi_fit] : fits.at("gp[+,-,*]"))
     EXPECT_TRUE(std::isfinite(r_fit) && std::isfinite(psi_fit));
