@@ -109,7 +109,8 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
   }
   report.Note(s.str());
   if (empty_rows > 0)
-    report.Note("dropped " + std::to_string(empty_rows) + " rows with every cell empty (the first at line " +
+    report.Note("dropped " + std::to_string(empty_rows) +
+                " rows with every cell empty (the first at line " +
                 std::to_string(first_empty_line) + ")");
   if (data.Has("vn") || data.Has("ve")) {
     if (!data.Has("vn") || !data.Has("ve") || !data.Has("psi"))

@@ -23,18 +23,30 @@ constexpr std::array<std::pair<std::string_view, Dimension>, 8> kNames = {{
 
 // The contract's channel names (docs/data.md) by dimension.
 constexpr std::array<std::pair<std::string_view, Dimension>, 24> kChannels = {{
-    {"north", Dimension::kLength},       {"east", Dimension::kLength},
-    {"x", Dimension::kLength},           {"y", Dimension::kLength},
-    {"u", Dimension::kSpeed},            {"v", Dimension::kSpeed},
-    {"U", Dimension::kSpeed},            {"vn", Dimension::kSpeed},
-    {"ve", Dimension::kSpeed},           {"wind_speed", Dimension::kSpeed},
-    {"wind_speed_true", Dimension::kSpeed}, {"r", Dimension::kRate},
-    {"n", Dimension::kRevolutions},      {"rev", Dimension::kRevolutions},
-    {"rpm", Dimension::kRevolutions},    {"psi", Dimension::kAngle},
-    {"delta", Dimension::kAngle},        {"chi", Dimension::kAngle},
-    {"nozzle", Dimension::kAngle},       {"wind_direction", Dimension::kAngle},
-    {"wind_direction_true", Dimension::kAngle}, {"tau_x", Dimension::kForce},
-    {"tau_y", Dimension::kForce},        {"tau_n", Dimension::kMoment},
+    {"north", Dimension::kLength},
+    {"east", Dimension::kLength},
+    {"x", Dimension::kLength},
+    {"y", Dimension::kLength},
+    {"u", Dimension::kSpeed},
+    {"v", Dimension::kSpeed},
+    {"U", Dimension::kSpeed},
+    {"vn", Dimension::kSpeed},
+    {"ve", Dimension::kSpeed},
+    {"wind_speed", Dimension::kSpeed},
+    {"wind_speed_true", Dimension::kSpeed},
+    {"r", Dimension::kRate},
+    {"n", Dimension::kRevolutions},
+    {"rev", Dimension::kRevolutions},
+    {"rpm", Dimension::kRevolutions},
+    {"psi", Dimension::kAngle},
+    {"delta", Dimension::kAngle},
+    {"chi", Dimension::kAngle},
+    {"nozzle", Dimension::kAngle},
+    {"wind_direction", Dimension::kAngle},
+    {"wind_direction_true", Dimension::kAngle},
+    {"tau_x", Dimension::kForce},
+    {"tau_y", Dimension::kForce},
+    {"tau_n", Dimension::kMoment},
 }};
 
 double Factor(Dimension d, double lambda) {
@@ -79,7 +91,9 @@ Dimension DimensionOf(const std::string& channel, const std::map<std::string, Di
     if (n == channel) return d;
   throw InputError("--scale: channel '" + channel +
                    "' has no known dimension: name it by the data contract (docs/data.md) or "
-                   "give one with --dimension " + channel + "=speed (length, speed, rate, "
+                   "give one with --dimension " +
+                   channel +
+                   "=speed (length, speed, rate, "
                    "revolutions, angle, acceleration, force, moment)");
 }
 

@@ -15,7 +15,16 @@
 
 namespace usvid {
 
-enum class Dimension { kLength, kSpeed, kRate, kRevolutions, kAngle, kAcceleration, kForce, kMoment };
+enum class Dimension {
+  kLength,
+  kSpeed,
+  kRate,
+  kRevolutions,
+  kAngle,
+  kAcceleration,
+  kForce,
+  kMoment
+};
 
 // "length", "speed", "rate", "revolutions", "angle", "acceleration", "force", "moment"; throws
 // InputError for another name.

@@ -33,9 +33,8 @@ nlohmann::json Identify(const Method& method, Dataset data, const IdentifyReques
       if (!(d < 0)) {
         undamped.push_back(state);
         if (log)
-          log("warning: " + state + "' has no damping: d(" + state + "')/d" + state +
-              " averages " + FormatNumber(d) +
-              " 1/s on the training data, so a free run can drift or diverge");
+          log("warning: " + state + "' has no damping: d(" + state + "')/d" + state + " averages " +
+              FormatNumber(d) + " 1/s on the training data, so a free run can drift or diverge");
       }
     model["self_damping"] = damping;
     model["undamped"] = undamped;

@@ -33,7 +33,8 @@ std::map<std::string, double> SelfDamping(const nlohmann::json& equations, const
       continue;
     }
     const Channel& x = *channels[static_cast<size_t>(self)];
-    const double rms = std::sqrt(x.values.array().isNaN().select(0.0, x.values.array()).square().mean());
+    const double rms =
+        std::sqrt(x.values.array().isNaN().select(0.0, x.values.array()).square().mean());
     std::vector<double> vars(names.size());
     double sum = 0.0;
     long rows = 0;

@@ -70,10 +70,9 @@ std::string EmptyEquationError(const std::string& state, const nlohmann::json& d
         << FormatNumber(every) << " with every term)";
     else
       s << "the one-standard-error rule chose the threshold "
-        << FormatNumber(details.at("threshold").get<double>())
-        << ", and the least held-out MSE, " << FormatNumber(least->at("heldout_mse").get<double>())
-        << " with " << least->at("terms").get<int>() << " terms, is within one standard error of "
-        << "none";
+        << FormatNumber(details.at("threshold").get<double>()) << ", and the least held-out MSE, "
+        << FormatNumber(least->at("heldout_mse").get<double>()) << " with "
+        << least->at("terms").get<int>() << " terms, is within one standard error of none";
   }
   s << "; the derivative may be mostly noise at this record's precision: try a smoother "
        "--derivative (sg:41:3), a smaller --threshold, or more data";
@@ -92,8 +91,9 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
   std::vector<std::string> library_inputs = fit.channels.inputs;
   nlohmann::json features_json = nlohmann::json::object();  // name -> expression
   for (const DerivedVariable& f : features) {
-    fit.prepared.data.Set(f.Column(), Expression::Parse(f.expression, "feature " + f.name)
-                                          .Evaluate(fit.prepared.data));
+    fit.prepared.data.Set(
+        f.Column(),
+        Expression::Parse(f.expression, "feature " + f.name).Evaluate(fit.prepared.data));
     library_inputs.push_back(f.Column());
     features_json[f.name] = f.expression;
   }

@@ -157,7 +157,8 @@ TEST_F(UsvidCliTest, ImportFroudeScales) {
     EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
     EXPECT_FALSE(fs::exists(out)) << bad;
   }
-  EXPECT_THAT(RunUsvid(args + " --scale 100").err, HasSubstr("channel 'wind' has no known dimension"));
+  EXPECT_THAT(RunUsvid(args + " --scale 100").err,
+              HasSubstr("channel 'wind' has no known dimension"));
 }
 
 // The KVLCC2 acceptance command of issue 2, run through the binary.

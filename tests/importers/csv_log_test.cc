@@ -59,8 +59,9 @@ TEST_F(CsvLogTest, DropsRowsWithEveryCellEmpty) {
       Parse("time,x,y\n0,1,2\n1,,3\n2,5,6\n,,\n , ,\n", {"t=time", "x=x", "y=y"}, &report);
   EXPECT_EQ(d.rows(), 3);
   EXPECT_FALSE(d.Get("x").sampled(1));
-  EXPECT_THAT(report.notes,
-              ::testing::Contains(HasSubstr("dropped 2 rows with every cell empty (the first at line 5)")));
+  EXPECT_THAT(
+      report.notes,
+      ::testing::Contains(HasSubstr("dropped 2 rows with every cell empty (the first at line 5)")));
   EXPECT_THROW(Parse("time,x\n0,1\n,2\n", {"t=time", "x=x"}), InputError);
   EXPECT_THROW(Parse("time,x\n0,1\n,\n", {"t=time", "x=x"}), InputError);  // one row left
 }
@@ -112,7 +113,8 @@ TEST_F(CsvLogTest, RealEssoOsakaZigZagImportsWithMapAlone) {
                       "wind_speed=wind_velo_relative_mid [m/s]",
                       "wind_direction=wind_dir_relative_mid [rad]"}),
       report);
-  EXPECT_THAT(report.notes, ::testing::Contains(HasSubstr("dropped 327 rows with every cell empty")));
+  EXPECT_THAT(report.notes,
+              ::testing::Contains(HasSubstr("dropped 327 rows with every cell empty")));
   EXPECT_GT(d.rows(), 1000);
   EXPECT_TRUE(d.Get("u").FullySampled());
   EXPECT_LT(d["delta"].cwiseAbs().maxCoeff(), 0.7);  // radians already

@@ -50,8 +50,8 @@ TEST(StepBreaksTest, KeptForRampsBetweenLongHolds) {
 }
 
 TEST(StepBreaksTest, DroppedAndSaidWhereTheInputChangesEverySample) {
-  const PreparedData p = Preprocess(
-      Record([](int i) { return 91.7 + 0.1 * ((i * 7919) % 3 - 1); }), {"x"}, {"f"}, {});
+  const PreparedData p =
+      Preprocess(Record([](int i) { return 91.7 + 0.1 * ((i * 7919) % 3 - 1); }), {"x"}, {"f"}, {});
   EXPECT_THAT(p.notes, Contains(HasSubstr("no step breaks: the inputs' ")));
   EXPECT_THAT(p.notes, Contains("derivatives by spline"));
 }

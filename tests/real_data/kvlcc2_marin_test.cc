@@ -133,9 +133,9 @@ TEST_F(Kvlcc2MarinTest, MethodsOnTheHeldOutManeuvers) {
   const std::string out = (dir_ / "study").string();
   const std::string baseline_file =
       std::string(USVID_SOURCE_DIR) + "/tests/real_data/kvlcc2_marin_baseline.json";
-  const auto r = RunUsvid("compare --suite " + std::string(USVID_SOURCE_DIR) +
-                          "/docs/studies/kvlcc2-marin.json --baseline " + baseline_file +
-                          " --out " + out);
+  const auto r =
+      RunUsvid("compare --suite " + std::string(USVID_SOURCE_DIR) +
+               "/docs/studies/kvlcc2-marin.json --baseline " + baseline_file + " --out " + out);
   ASSERT_EQ(r.exit_code, 0) << "compare --baseline found a worse group: " << r.err;
   const nlohmann::json results = ReadJsonFile(out + "/results.json");
   std::map<std::pair<std::string, std::string>, double> mean_fit;

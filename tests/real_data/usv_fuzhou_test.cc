@@ -46,10 +46,10 @@ TEST(UsvFuzhouTest, NomotoModelOfTheWholeLog) {
 
 // Held out: the last 70 s. The Nomoto model's two constants carry over. SINDy, which must find
 // its terms in a 2 Hz derivative of a GPS heading, finds none that beats no term by more than
-// the folds' spread, and says so: a failed fit, not "r' = 0" (issue 38). GP's outcome here is chaotic: which
-// terms its search keeps changes with the last bit of libm's results, so on one machine two
-// seeds of three beat Nomoto and on another none did (docs/real-data.md). The test therefore
-// pins only what holds on every machine: each GP seed is scored, with finite fits.
+// the folds' spread, and says so: a failed fit, not "r' = 0" (issue 38). GP's outcome here is
+// chaotic: which terms its search keeps changes with the last bit of libm's results, so on one
+// machine two seeds of three beat Nomoto and on another none did (docs/real-data.md). The test
+// therefore pins only what holds on every machine: each GP seed is scored, with finite fits.
 TEST(UsvFuzhouTest, MethodsOnTheHeldBackPart) {
   if (!fs::exists(kLog)) GTEST_SKIP() << "shared data absent: " << kLog;
   const fs::path dir = FreshTempDir();
