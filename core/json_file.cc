@@ -6,9 +6,9 @@
 
 namespace usvid {
 
-nlohmann::json ParseJson(const std::string& text, const std::string& file) {
+nlohmann::json ParseJson(const std::string& text, const std::string& file, JsonComments comments) {
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(text, nullptr, true, comments == JsonComments::kAllowed);
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is the 1-based position of the offending byte; turn it into line and column.
     const size_t upto = std::min(e.byte > 0 ? e.byte - 1 : 0, text.size());
@@ -35,7 +35,9 @@ nlohmann::json ParseJson(const std::string& text, const std::string& file) {
   }
 }
 
-nlohmann::json ReadJsonFile(const std::string& path) { return ParseJson(ReadTextFile(path), path); }
+nlohmann::json ReadJsonFile(const std::string& path, JsonComments comments) {
+  return ParseJson(ReadTextFile(path), path, comments);
+}
 
 void WriteJsonFile(const std::string& path, const nlohmann::json& value) {
   WriteFileAtomically(path, value.dump(2) + "\n");

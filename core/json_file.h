@@ -7,8 +7,14 @@
 
 namespace usvid {
 
-nlohmann::json ReadJsonFile(const std::string& path);
-nlohmann::json ParseJson(const std::string& text, const std::string& file);
+// Files people write (suites) may carry // and /* */ comments, as the embedded suites do; files
+// usvid writes and reads back (model, truth, metrics) are plain JSON.
+enum class JsonComments { kRefused, kAllowed };
+
+nlohmann::json ReadJsonFile(const std::string& path,
+                            JsonComments comments = JsonComments::kRefused);
+nlohmann::json ParseJson(const std::string& text, const std::string& file,
+                         JsonComments comments = JsonComments::kRefused);
 void WriteJsonFile(const std::string& path, const nlohmann::json& value);
 
 }  // namespace usvid

@@ -148,7 +148,8 @@ py::dict Compare(const py::object& suite, int threads) {
   if (threads < 0) throw InputError("compare: threads must be >= 0 (0: all cores)");
   const bool path = py::isinstance<py::str>(suite);
   const std::string file = path ? suite.cast<std::string>() : "suite";
-  const Suite s = ParseSuite(path ? ReadJsonFile(file) : ToJson(suite), file);
+  const Suite s =
+      ParseSuite(path ? ReadJsonFile(file, JsonComments::kAllowed) : ToJson(suite), file);
   nlohmann::json results;
   {
     py::gil_scoped_release release;

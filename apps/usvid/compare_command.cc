@@ -35,8 +35,9 @@ struct CompareOptions {
 
 void RunCompare(const CompareOptions& o) {
   if (!o.suite.empty() && o.quick) throw InputError("compare: give --suite or --quick, not both");
-  const Suite suite =
-      o.suite.empty() ? DefaultSuite(o.quick) : ParseSuite(ReadJsonFile(o.suite), o.suite);
+  const Suite suite = o.suite.empty()
+                          ? DefaultSuite(o.quick)
+                          : ParseSuite(ReadJsonFile(o.suite, JsonComments::kAllowed), o.suite);
   // The baseline is read before hours of fitting, not after.
   const nlohmann::json baseline = o.baseline.empty() ? nlohmann::json() : ReadJsonFile(o.baseline);
   EnsureOutputDirectory(o.out);

@@ -41,6 +41,13 @@ TEST_F(JsonFileTest, NumberOverflowIsBadInput) {
   }
 }
 
+// A suite a person writes may explain itself in comments; a model file stays plain JSON.
+TEST_F(JsonFileTest, CommentsOnlyWhereAllowed) {
+  const std::string text = "// the study\n{\"seeds\": [1, 2] /* two */}\n";
+  EXPECT_EQ(ParseJson(text, "s.json", JsonComments::kAllowed), nlohmann::json({{"seeds", {1, 2}}}));
+  EXPECT_THROW(ParseJson(text, "model.json"), InputError);
+}
+
 TEST_F(JsonFileTest, WriteThenReadRoundTrips) {
   const auto path = std::filesystem::temp_directory_path() / "usvid_json_file_test.json";
   const nlohmann::json value = {{"vessel", "odin3dof"}, {"seed", 7}, {"p", {1.5, -2e-9}}};
