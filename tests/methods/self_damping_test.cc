@@ -30,8 +30,8 @@ TEST(SelfDampingTest, MeanSlopeOfEachEquationInItsOwnState) {
   EXPECT_TRUE(SelfDamping({{"u", "-u + gust"}}, Record()).empty());  // a variable the data lack
 }
 
-// Identify writes the check into model.json, for any method with equations: here lti on a
-// record whose heading rate is held constant by the data, and SINDy's known-good odin3dof fit.
+// Identify writes the check into model.json for any method with equations: here lti on odin3dof
+// random steps, whose surge the hull damps.
 TEST(SelfDampingTest, IdentifyReportsUndampedStates) {
   Dataset d = testing::Simulate("odin3dof", "random-steps", 300, 0.005, 3);
   IdentifyRequest request;
