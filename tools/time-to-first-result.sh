@@ -44,6 +44,6 @@ step compare ./build/usvid compare --out "$work/results"
 
 echo
 echo "Slowest objects of the build (ninja's log, seconds):"
-awk 'NR > 1 { printf "%6.1f %s\n", ($2 - $1) / 1000, $4 }' build/.ninja_log | sort -rn | head -8
+awk 'NR > 1 { printf "%6.1f %s\n", ($2 - $1) / 1000, $4 }' build/.ninja_log | sort -rn | sed -n 1,8p
 echo
 echo "The verdict: $work/results/summary.md"
