@@ -26,20 +26,40 @@ namespace usvid {
 template <typename T, int N>
 using StateVector = Eigen::Matrix<T, N, 1>;
 
-// f(const T* x, T* dx) evaluates the derivative. Everything the step calls is inlined into it
-// (flatten): with ceres::Jet the arithmetic is hundreds of small inline operators, and GCC
-// stops inlining them once a translation unit grows (several vessels instantiated in one file
-// made the Jet step 3x slower).
+// How a step calls f (docs/performance.md#build-time). Everything f calls is inlined into it
+// (flatten): with ceres::Jet the arithmetic is hundreds of small inline operators, and GCC stops
+// inlining them once a translation unit grows (several vessels instantiated in one file made the
+// Jet step 3x slower). For a Jet of 8 derivatives or more each of the four stages is one such
+// flattened function, called four times: four inlined copies of a vessel's Jet derivative in one
+// step took GCC 3.6 times as long to compile (62 s against 17 s for the five vessels' Jet
+// benchmark), and the step runs as many instructions. For double and small Jets the whole step
+// is flattened, as there a call per stage costs as much as the stage (msd: 46 ns a step).
+template <typename T>
+concept WideJet = requires { T::DIMENSION; } && T::DIMENSION >= 8;
+
+template <typename T, typename F>
+[[gnu::noinline]] USVID_FLATTEN void Rk4Stage(const F& f, const T* x, T* dx) {
+  f(x, dx);
+}
+
+template <typename T, typename F>
+inline void Rk4Evaluate(const F& f, const T* x, T* dx) {
+  if constexpr (WideJet<T>)
+    Rk4Stage(f, x, dx);
+  else
+    f(x, dx);
+}
+
 template <typename T, int N, typename F>
 USVID_FLATTEN void Rk4Step(const F& f, double h, StateVector<T, N>& x) {
   StateVector<T, N> k1, k2, k3, k4, y;
-  f(x.data(), k1.data());
+  Rk4Evaluate(f, x.data(), k1.data());
   y = x + (0.5 * h) * k1;
-  f(y.data(), k2.data());
+  Rk4Evaluate(f, y.data(), k2.data());
   y = x + (0.5 * h) * k2;
-  f(y.data(), k3.data());
+  Rk4Evaluate(f, y.data(), k3.data());
   y = x + h * k3;
-  f(y.data(), k4.data());
+  Rk4Evaluate(f, y.data(), k4.data());
   x += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
 }
 
