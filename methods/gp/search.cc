@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <unordered_map>
 
 #include "core/error.h"
 #include "core/evenly_spread.h"
@@ -14,6 +15,7 @@
 #include "methods/gp/constant_fit.h"
 #include "methods/gp/interpreter.h"
 #include "methods/gp/ols.h"
+#include "methods/gp/score_cache.h"
 #include "methods/gp/term_selection.h"
 #include "methods/gp/variation.h"
 
@@ -148,28 +150,55 @@ Tree Breed(const GpOptions& opt, const PrimitiveSet& set, int generation, int i,
   return child;
 }
 
+// How many generations a scored tree stays in the cache without being bred again. Most repeats
+// are of the parents' generation; 3 keeps the cache to a few thousand trees.
+constexpr int kCacheGenerations = 3;
+
 // Generation g bred from `population` and scored into `next` (after the first, the elites
-// carried over unchanged); returns the tree nodes evaluated.
+// carried over unchanged); returns the tree nodes evaluated. Each offspring is bred in
+// parallel; a tree already scored in a recent generation, or earlier in this one, takes that
+// score from `cache` (score_cache.h), and only the others are scored, again in parallel.
 template <typename T>
 double BreedAndScore(int g, bool fresh, const PrimitiveSet& set, const Columns<T>& data,
-                     const GpOptions& opt, const std::vector<Model>& population,
+                     const GpOptions& opt, const std::vector<Model>& population, ScoreCache& cache,
                      std::vector<Model>& next) {
   const int n = opt.population;
+  const int first = g > 0 ? opt.elites : 0;
+  for (int i = 0; i < first; ++i) next[i] = population[i];  // the best, sorted first below
+  std::vector<Tree> trees(static_cast<size_t>(n));
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int i = first; i < n; ++i) trees[i] = Breed(opt, set, g, i, fresh, population);
+
+  std::vector<int> to_score;
+  std::vector<std::pair<int, int>> copies;  // (offspring, the earlier one with its tree)
+  {
+    std::unordered_map<Tree, int, ScoreCache::Hash, ScoreCache::Equal> first_of;
+    for (int i = first; i < n; ++i) {
+      if (const Model* known = cache.Find(trees[i], g)) {
+        next[i] = *known;
+      } else if (const auto [it, added] = first_of.try_emplace(trees[i], i); added) {
+        to_score.push_back(i);
+      } else {
+        copies.emplace_back(i, it->second);
+      }
+    }
+  }
+
   double nodes = 0.0;
+  const int m = static_cast<int>(to_score.size());
 #pragma omp parallel reduction(+ : nodes)
   {
     Interpreter<T> interp(data.Pointers());
 #pragma omp for schedule(dynamic, 16)
-    for (int i = 0; i < n; ++i) {
-      if (g > 0 && i < opt.elites) {
-        next[i] = population[i];  // the best, sorted first below
-        continue;
-      }
-      const Tree tree = Breed(opt, set, g, i, fresh, population);
-      next[i] = Score(tree, data, interp, opt);
-      nodes += static_cast<double>(tree.size()) * static_cast<double>(data.rows);
+    for (int j = 0; j < m; ++j) {
+      const int i = to_score[j];
+      next[i] = Score(trees[i], data, interp, opt);
+      nodes += static_cast<double>(trees[i].size()) * static_cast<double>(data.rows);
     }
   }
+  for (const int i : to_score) cache.Insert(trees[i], next[i], g);
+  for (const auto& [i, j] : copies) next[i] = next[j];
+  cache.Forget(g);
   return nodes;
 }
 
@@ -262,10 +291,11 @@ GpResult Run(const GpProblem& p, const GpOptions& opt,
   GpResult result;
   std::vector<Model> population(n), next(n);
   Stagnation stagnation;
+  ScoreCache cache(kCacheGenerations);
   bool fresh = true;  // the next generation is drawn anew
   for (int g = 0; g < opt.generations; ++g) {
     const auto gen_start = Clock::now();
-    const double nodes = BreedAndScore(g, fresh, set, data, opt, population, next);
+    const double nodes = BreedAndScore(g, fresh, set, data, opt, population, cache, next);
     fresh = false;
     std::swap(population, next);
     SortByFitness(population);
