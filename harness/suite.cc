@@ -124,6 +124,10 @@ void ParseMeasuredData(const nlohmann::json& v, const std::string& file, Suite& 
       throw InputError(file + ": '" + key + "' does not apply to a suite on measured data");
   s.train_data = DataList(data["train"], file, "data: train");
   s.test_data = DataList(data["test"], file, "data: test");
+  for (const SuiteData& d : s.test_data)
+    if (d.files.size() > 1)  // a test is one free run, which no gap may cut
+      throw InputError(file + ": data: test: '" + d.name +
+                       "': a test entry is one file (a list of files joins records for training)");
   for (const SuiteData& d : s.train_data) s.train_maneuvers.push_back(d.name);
   for (const SuiteData& d : s.test_data) s.test_maneuvers.push_back(d.name);
   if (v.contains("vessels")) {

@@ -1,5 +1,6 @@
 #include "harness/suite_data.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -7,6 +8,7 @@
 
 #include "core/csv_dataset.h"
 #include "core/error.h"
+#include "core/records.h"
 #include "importers/column_map.h"
 #include "importers/csv_log.h"
 #include "importers/marin_dat.h"
@@ -22,6 +24,11 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
   for (const auto& [key, value] : v.items()) {
     if (!kFields.contains(key)) throw InputError(where + ": unknown field '" + key + "'");
     const bool number = key == "from_s" || key == "to_s";
+    if (key == "file" && value.is_array()) {
+      if (value.empty() || !std::ranges::all_of(value, [](const auto& f) { return f.is_string(); }))
+        throw InputError(where + ": 'file' must be a path or a non-empty list of paths");
+      continue;
+    }
     if (number ? !value.is_number() : !value.is_string())
       throw InputError(where + ": '" + key + "' must be a " + (number ? "number" : "string"));
   }
@@ -29,9 +36,12 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
     if (!v.contains(required)) throw InputError(where + ": missing field '" + required + "'");
   SuiteData d;
   d.name = v["name"].get<std::string>();
-  d.file = v["file"].get<std::string>();
-  if (std::filesystem::path(d.file).is_relative() && !base_dir.empty())
-    d.file = (std::filesystem::path(base_dir) / d.file).lexically_normal().string();
+  for (const auto& f : v["file"].is_array() ? v["file"] : nlohmann::json::array({v["file"]})) {
+    std::string file = f.get<std::string>();
+    if (std::filesystem::path(file).is_relative() && !base_dir.empty())
+      file = (std::filesystem::path(base_dir) / file).lexically_normal().string();
+    d.files.push_back(file);
+  }
   d.format = v.value("format", d.format);
   if (d.format != "csv" && d.format != "marin-dat" && d.format != "csv-log")
     throw InputError(where + ": format '" + d.format + "' (known: csv, marin-dat, csv-log)");
@@ -50,7 +60,10 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
 }
 
 nlohmann::json SuiteDataToJson(const SuiteData& d) {
-  nlohmann::json j = {{"name", d.name}, {"file", d.file}, {"format", d.format}};
+  nlohmann::json j = {
+      {"name", d.name},
+      {"file", d.files.size() == 1 ? nlohmann::json(d.files.front()) : nlohmann::json(d.files)},
+      {"format", d.format}};
   if (!d.map.empty()) j["map"] = d.map;
   if (!d.rate_from.empty()) j["rate_from"] = d.rate_from;
   if (!d.maneuver.empty()) j["maneuver"] = d.maneuver;
@@ -59,18 +72,21 @@ nlohmann::json SuiteDataToJson(const SuiteData& d) {
   return j;
 }
 
-Dataset LoadSuiteData(const SuiteData& d) {
+namespace {
+
+// One file of the entry, read and cut as the entry says.
+Dataset LoadRecord(const SuiteData& d, const std::string& file) {
   ImportReport report;
   Dataset data;
   if (d.format == "marin-dat") {
-    data = ImportMarinDat(d.file, report);
+    data = ImportMarinDat(file, report);
   } else if (d.format == "csv-log") {
     std::vector<std::string> items;
     std::stringstream s(d.map);
     for (std::string item; std::getline(s, item, ',');) items.push_back(item);
-    data = ImportCsvLog(d.file, ParseColumnMap(items), report);
+    data = ImportCsvLog(file, ParseColumnMap(items), report);
   } else {
-    data = ReadDatasetCsv(d.file);
+    data = ReadDatasetCsv(file);
   }
   if (!d.rate_from.empty()) data.Set("r", RateFromHeading(data, d.rate_from));
   if (std::isfinite(d.from_s) || std::isfinite(d.to_s)) {
@@ -79,10 +95,18 @@ Dataset LoadSuiteData(const SuiteData& d) {
       keep[k] = data.t()(k) >= d.from_s && data.t()(k) < d.to_s;
     data.KeepRows(keep);
     if (data.rows() < 4)
-      throw InputError(d.file + ": fewer than 4 rows in [" + std::to_string(d.from_s) + ", " +
+      throw InputError(file + ": fewer than 4 rows in [" + std::to_string(d.from_s) + ", " +
                        std::to_string(d.to_s) + ") s");
   }
   return data;
+}
+
+}  // namespace
+
+Dataset LoadSuiteData(const SuiteData& d) {
+  std::vector<Dataset> records;
+  for (const std::string& file : d.files) records.push_back(LoadRecord(d, file));
+  return JoinRecords(std::move(records));
 }
 
 }  // namespace usvid

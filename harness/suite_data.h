@@ -3,7 +3,9 @@
 //   {"name": "zigzag 20/-20", "file": "path", "format": "csv" | "marin-dat" | "csv-log",
 //    "map": "t=time,psi=psi,delta=delta" (csv-log: import --map), "rate_from": "psi",
 //    "from_s": 0, "to_s": 140, "maneuver": "zigzag:-20/20"}
-// Paths are relative to the suite file's folder. "rate_from" adds the rate of turn r from that
+// "file" may be a list of paths: the records, each read and cut alike, are joined for one
+// joint fit (core/records.h; a training entry only). Paths are relative to the suite file's
+// folder. "rate_from" adds the rate of turn r from that
 // heading (preprocessing/heading_rate.h) for logs without a gyro. A file is read as
 // `usvid import` would read it, with the same repairs. "from_s" and "to_s" keep the rows with
 // from_s <= t < to_s (a held-back part of one log as its own test set). "maneuver" names the
@@ -22,7 +24,8 @@
 namespace usvid {
 
 struct SuiteData {
-  std::string name, file, format = "csv", map, rate_from, maneuver;
+  std::string name, format = "csv", map, rate_from, maneuver;
+  std::vector<std::string> files;  // one, or several records joined
   double from_s = -INFINITY, to_s = INFINITY;
 };
 

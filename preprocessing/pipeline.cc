@@ -5,9 +5,13 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/stretches.h"
 
 namespace usvid {
 namespace {
+
+// The fewest rows a stretch between gaps needs to be smoothed and differentiated.
+constexpr Eigen::Index kMinStretchRows = 10;
 
 // The length, in samples, of the stretch between breaks that the median sample lies in: half
 // the record is in stretches at least this long. A ramp's many breaks close together weigh
@@ -31,10 +35,45 @@ Eigen::Index TypicalPiece(const std::vector<Eigen::Index>& breaks, Eigen::Index 
 // The data's own rate: one over the median interval between rows.
 double NativeRate(const Dataset& d) { return 1.0 / MedianInterval(d.t()); }
 
-// u(t - delay) on the same grid (zero-order hold, the first value before the start).
-Eigen::VectorXd Shift(const Eigen::VectorXd& u, int samples) {
+// u(t - delay) on the same grid (zero-order hold, each stretch's first value before its start:
+// no input crosses a gap).
+Eigen::VectorXd Shift(const Eigen::VectorXd& u, int samples,
+                      const std::vector<Stretch>& stretches) {
   Eigen::VectorXd out(u.size());
-  for (Eigen::Index k = 0; k < u.size(); ++k) out(k) = u(std::max<Eigen::Index>(0, k - samples));
+  for (const Stretch& s : stretches)
+    for (Eigen::Index k = s.first; k < s.end; ++k)
+      out(k) = u(std::max<Eigen::Index>(s.first, k - samples));
+  return out;
+}
+
+// The stretches of consecutive kept rows, as rows of the grid after the others are dropped.
+std::vector<Stretch> KeptStretches(const std::vector<bool>& keep) {
+  std::vector<Stretch> out;
+  Eigen::Index at = 0;
+  bool open = false;
+  for (const bool k : keep) {
+    if (k && !open) out.push_back({at, at});
+    if (k) out.back().end = ++at;
+    open = k;
+  }
+  return out;
+}
+
+// Each stretch smoothed and differentiated on its own, with the breaks inside it.
+SmoothedSignal SmoothStretches(const Eigen::VectorXd& y, double dt, const DerivativeMethod& method,
+                               const std::vector<Stretch>& stretches,
+                               const std::vector<Eigen::Index>& breaks) {
+  if (stretches.size() == 1) return SmoothAndDifferentiate(y, dt, method, breaks);
+  SmoothedSignal out{Eigen::VectorXd(y.size()), Eigen::VectorXd(y.size())};
+  for (const Stretch& s : stretches) {
+    std::vector<Eigen::Index> inside;
+    for (const Eigen::Index b : breaks)
+      if (b > s.first && b < s.end) inside.push_back(b - s.first);
+    const SmoothedSignal piece =
+        SmoothAndDifferentiate(y.segment(s.first, s.rows()), dt, method, inside);
+    out.value.segment(s.first, s.rows()) = piece.value;
+    out.derivative.segment(s.first, s.rows()) = piece.derivative;
+  }
   return out;
 }
 
@@ -63,8 +102,36 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
   for (const auto& names : {states, inputs})
     for (const std::string& n : names)
       for (Eigen::Index k = 0; k < grid.rows(); ++k) keep[k] = keep[k] && grid.Get(n).sampled(k);
-  const long dropped = std::count(keep.begin(), keep.end(), false);
-  if (dropped > 0) grid.KeepRows(keep);
+  // Stretches too short to differentiate (under 10 rows) are dropped too.
+  long short_stretches = 0;
+  for (Eigen::Index k = 0; k < grid.rows();) {
+    if (!keep[k]) {
+      ++k;
+      continue;
+    }
+    Eigen::Index end = k;
+    while (end < grid.rows() && keep[end]) ++end;
+    if (end - k < kMinStretchRows) {
+      std::fill(keep.begin() + k, keep.begin() + end, false);
+      ++short_stretches;
+    }
+    k = end;
+  }
+  // Grid points between records, or in a dropout of the whole log, are not data lost: counted
+  // apart.
+  long between = 0;
+  {
+    const std::vector<Stretch> raw = Stretches(data.t(), kRawGapFactor);
+    size_t s = 0;
+    for (Eigen::Index k = 0; k < grid.rows(); ++k) {
+      const double t = grid.t()(k);
+      while (s + 1 < raw.size() && t >= data.t()(raw[s + 1].first)) ++s;
+      if (!keep[k] && t > data.t()(raw[s].end - 1)) ++between;
+    }
+  }
+  const long dropped = std::count(keep.begin(), keep.end(), false) - between;
+  const std::vector<Stretch> stretches = KeptStretches(keep);
+  if (dropped + between > 0) grid.KeepRows(keep);
   if (grid.rows() < 10) throw InputError("preprocess: fewer than 10 rows have every channel");
   const double dt = 1.0 / ro.rate_hz;
   std::ostringstream note;
@@ -72,6 +139,11 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
        << (ro.interpolation == Interpolation::kLinear ? "linear" : "cubic spline") << "), "
        << grid.rows() << " rows";
   if (dropped > 0) note << ", " << dropped << " rows without every channel dropped";
+  if (short_stretches > 0)
+    note << " (with " << short_stretches << " stretches under " << kMinStretchRows << " rows)";
+  if (stretches.size() > 1)
+    note << "; " << stretches.size()
+         << " stretches between gaps or records, each smoothed and differentiated on its own";
   out.notes.push_back(note.str());
 
   // Delay: estimated on derivatives without breaks (the breaks depend on the delay).
@@ -80,7 +152,7 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
     DelayProblem p;
     p.dt = dt;
     for (const std::string& s : states) {
-      const SmoothedSignal sm = SmoothAndDifferentiate(grid[s], dt, options.derivative);
+      const SmoothedSignal sm = SmoothStretches(grid[s], dt, options.derivative, stretches, {});
       p.states.push_back({s, sm.value});
       p.derivatives.push_back({s + "_dot", sm.derivative});
     }
@@ -96,11 +168,20 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
 
   Dataset result(grid.t());
   std::vector<Eigen::VectorXd> shifted;
-  for (const std::string& u : inputs) shifted.push_back(Shift(grid[u], shift));
-  std::vector<Eigen::Index> breaks =
-      options.step_breaks ? StepBreaks(shifted) : std::vector<Eigen::Index>{};
+  for (const std::string& u : inputs) shifted.push_back(Shift(grid[u], shift, stretches));
+  std::vector<Eigen::Index> breaks;
+  if (options.step_breaks)
+    for (const Stretch& st : stretches) {
+      std::vector<Eigen::VectorXd> piece;
+      for (const Eigen::VectorXd& u : shifted) piece.push_back(u.segment(st.first, st.rows()));
+      for (const Eigen::Index b : StepBreaks(piece)) breaks.push_back(st.first + b);
+    }
   if (!breaks.empty()) {
-    const double typical_s = static_cast<double>(TypicalPiece(breaks, grid.rows())) * dt;
+    std::vector<Eigen::Index> edges = breaks;  // the stretches' ends cut pieces too
+    for (const Stretch& st : stretches)
+      if (st.first > 0) edges.push_back(st.first);
+    std::ranges::sort(edges);
+    const double typical_s = static_cast<double>(TypicalPiece(edges, grid.rows())) * dt;
     if (typical_s < options.min_piece_s) {
       std::ostringstream d;
       d << "no step breaks: the inputs' " << breaks.size()
@@ -111,7 +192,7 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
     }
   }
   for (const std::string& s : states) {
-    const SmoothedSignal sm = SmoothAndDifferentiate(grid[s], dt, options.derivative, breaks);
+    const SmoothedSignal sm = SmoothStretches(grid[s], dt, options.derivative, stretches, breaks);
     result.Set(s, sm.value);
     result.Set(s + "_dot", sm.derivative);
     result.Set(s + "_raw", grid[s]);

@@ -1,8 +1,10 @@
 #include "simulation/segment_error.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
+#include "core/stretches.h"
 
 namespace usvid {
 
@@ -18,10 +20,18 @@ double SegmentedSimulationError(const VesselSimulator& sim, const std::vector<do
   }
   double total = 0.0;
   long count = 0;
+  const Eigen::VectorXd& t = data.t();
+  const double gap = GapLimit(t, kRawGapFactor);  // no segment runs across a gap
   Eigen::Index start = 0;
   while (start + 1 < data.rows()) {
+    if (t(start + 1) - t(start) > std::min(gap, segment_s)) {
+      ++start;
+      continue;
+    }
     Eigen::Index end = start;
-    while (end + 1 < data.rows() && data.t()(end + 1) - data.t()(start) <= segment_s) ++end;
+    while (end + 1 < data.rows() && t(end + 1) - t(start) <= segment_s &&
+           t(end + 1) - t(end) <= gap)
+      ++end;
     std::vector<bool> keep(data.rows(), false);
     for (Eigen::Index i = start; i <= end; ++i) keep[i] = true;
     Dataset segment = data;

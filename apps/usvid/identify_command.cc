@@ -1,4 +1,4 @@
-// usvid identify --method M --data F.csv (--vessel V | --states u,v,r --inputs a,b)
+// usvid identify --method M --data F.csv[,G.csv...] (--vessel V | --states u,v,r --inputs a,b)
 //                [preprocessing flags] [the method's options: docs/options.md]
 //                [--seed N] [--threads N] --out model.json
 // Fits one method and writes model.json (docs/data.md#modeljson). Every method's options are
@@ -18,6 +18,7 @@
 #include "core/json_file.h"
 #include "methods/identify.h"
 #include "methods/registry.h"
+#include "preprocessing/waterjet_forces.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -74,8 +75,17 @@ void RunIdentify(const IdentifyOptions& o) {
     if (r.vessel.empty()) throw InputError("--params: needs --vessel");
     r.start_params = FindVessel(r.vessel).Info().ParamsFromFile(o.params);
   }
-  Dataset data = ReadDataFile(o.data, "usvid identify");
-  SimulateMissingActuators(data, o.pre.actuators);
+  // Every record needs the named channels, except those identify derives (speed and course,
+  // a force map's forces).
+  std::vector<std::string> required;
+  for (const auto* names : {&r.states, &r.inputs})
+    for (const std::string& c : *names)
+      if (c != "U" && c != "chi" &&
+          std::ranges::find(kWaterjetForceChannels, c) == kWaterjetForceChannels.end())
+        required.push_back(c);
+  Dataset data = ReadDataFiles(o.data, "usvid identify", required, [&](Dataset& record) {
+    SimulateMissingActuators(record, o.pre.actuators);
+  });
   const nlohmann::json model = Identify(std::move(data), r, [](const std::string& line) {
     std::cerr << "usvid identify: " << line << '\n';
   });
@@ -142,7 +152,9 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--method", o->request.method, methods_help)
       ->required()
       ->check(CLI::IsMember(names));
-  cmd->add_option("--data", o->data, "Training data CSV")->required();
+  cmd->add_option("--data", o->data,
+                  "Training data CSV, or several (a.csv,b.csv,...) fitted jointly")
+      ->required();
   cmd->add_option("--vessel", o->request.vessel, "Take states and inputs from this simulator");
   cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');
   cmd->add_option("--inputs", o->request.inputs, "Input channels")->delimiter(',');

@@ -182,7 +182,7 @@ double UniformStep(const Eigen::VectorXd& t) {
   for (Eigen::Index k = 1; k < n; ++k)
     if (std::abs(t(k) - t(k - 1) - dt) > 1e-3 * dt)
       throw InputError("eb-lr: the time grid is not uniform at t = " + FormatNumber(t(k)) +
-                       " s (resample first)");
+                       " s: eb-lr fits one record without gaps (resample it first)");
   return dt;
 }
 

@@ -3,8 +3,6 @@
 // compiles in parallel.
 #pragma once
 
-#include "methods/fossen_ceres/fossen_fit.h"
-
 #include <ceres/ceres.h>
 
 #include <chrono>
@@ -13,6 +11,8 @@
 #include "core/error.h"
 #include "core/evenly_spread.h"
 #include "core/parse_number.h"
+#include "core/stretches.h"
+#include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/fossen_ceres/jet_force_model.h"
 #include "methods/parameter_sd.h"
@@ -328,11 +328,15 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
     track.Append(d.t()(k), u);
   }
   const std::array<double, 3> scale = {Sd(d["u_raw"]), Sd(d["v_raw"]), Sd(d["r_raw"])};
-  // Segment boundaries [b_j, b_{j+1}]: consecutive segments share their boundary row.
+  // Segment boundaries [b_j, b_{j+1}]: consecutive segments share their boundary row. A segment
+  // ends at a gap (core/stretches.h), and the one across it is not fitted.
+  const double gap = GapLimit(d.t(), kGridGapFactor);
   std::vector<Eigen::Index> bounds = {0};
   while (bounds.back() < d.rows() - 1) {
     Eigen::Index e = bounds.back();
-    while (e + 1 < d.rows() && d.t()(e + 1) - d.t()(bounds.back()) <= options.segment_s) ++e;
+    while (e + 1 < d.rows() && d.t()(e + 1) - d.t()(bounds.back()) <= options.segment_s &&
+           d.t()(e + 1) - d.t()(e) <= gap)
+      ++e;
     bounds.push_back(std::max(e, bounds.back() + 1));
   }
   const size_t segments = bounds.size() - 1;
@@ -357,6 +361,8 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
                                                rows_per_segment))
                : 0))
     fitted[static_cast<size_t>(j)] = true;
+  for (size_t j = 0; j < segments; ++j)
+    if (d.t()(bounds[j + 1]) - d.t()(bounds[j + 1] - 1) > gap) fitted[j] = false;
   long rows = 0;
   for (size_t j = 0; j < segments; ++j) {
     if (!fitted[j]) continue;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "core/dataset.h"
 #include "core/error.h"
 #include "methods/gp/segment_simulator.h"
 
@@ -142,7 +143,7 @@ void ChooseFreeRunning(const SelectionData& data, const std::vector<int>& state_
     std::vector<const Model*> models;
     for (size_t s = 0; s < states.size(); ++s) models.push_back(&states[s].models[combo[s]]);
     bool diverged = false;
-    joint.Error(models, {0}, rows - 1, diverged);
+    joint.FreeRunError(models, diverged);
     if (!diverged) {
       out.chosen = combo;
       out.free_run_diverged = false;
@@ -161,10 +162,11 @@ Selection SelectModels(const SelectionData& data, const std::vector<StateCandida
     throw InputError("gp model selection: the validation part has fewer than 2 samples");
 
   // Segments of the horizon over the validation rows (one shorter segment when it is short).
-  const double dt = (data.t(rows - 1) - data.t(0)) / static_cast<double>(rows - 1);
+  const double dt = MedianInterval(data.t);
   const long span = rows - 1 - data.validation_begin;
   const long steps = std::clamp<long>(std::lround(data.horizon_s / dt), 1, span);
-  const std::vector<long> starts = SegmentSimulator::Starts(data.validation_begin, rows, steps);
+  const std::vector<long> starts =
+      SegmentSimulator::Starts(data.t, data.validation_begin, rows, steps);
 
   Selection out;
   out.candidate_scores.resize(states.size());

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "core/stretches.h"
 #include "methods/gp/interpreter.h"
 
 namespace usvid::gp {
@@ -21,10 +22,31 @@ SegmentSimulator::SegmentSimulator(const SelectionData& data, const std::vector<
   }
 }
 
-std::vector<long> SegmentSimulator::Starts(long first, long end, long steps) {
+std::vector<long> SegmentSimulator::Starts(const Eigen::VectorXd& t, long first, long end,
+                                           long steps) {
   std::vector<long> starts;
-  for (long s = first; s + steps < end; s += steps) starts.push_back(s);
+  for (const Stretch& st : Stretches(t, kGridGapFactor)) {
+    const long stop = std::min<long>(end, st.end);
+    for (long s = std::max<long>(first, st.first); s + steps < stop; s += steps)
+      starts.push_back(s);
+  }
   return starts;
+}
+
+double SegmentSimulator::FreeRunError(const std::vector<const Model*>& models,
+                                      bool& diverged) const {
+  diverged = false;
+  double total = 0.0;
+  long steps = 0;
+  for (const Stretch& st : Stretches(data_.t, kGridGapFactor)) {
+    if (st.rows() < 2) continue;
+    bool out = false;
+    total += Error(models, {static_cast<long>(st.first)}, st.rows() - 1, out) *
+             static_cast<double>(st.rows() - 1);
+    steps += st.rows() - 1;
+    diverged |= out;
+  }
+  return steps > 0 ? total / static_cast<double>(steps) : 0.0;
 }
 
 double SegmentSimulator::Error(const std::vector<const Model*>& models,

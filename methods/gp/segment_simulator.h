@@ -36,8 +36,9 @@ struct SelectionData {
 // state that leaves its bounds (ten times its largest measured magnitude) ends its segment.
 class SegmentSimulator {
  public:
-  // Segment starts every `steps` rows from `first`, each segment ending before row `end`.
-  static std::vector<long> Starts(long first, long end, long steps);
+  // Segment starts every `steps` rows from `first`, each segment ending before row `end` and
+  // inside one stretch of `t` between gaps (core/stretches.h): the segments restart after a gap.
+  static std::vector<long> Starts(const Eigen::VectorXd& t, long first, long end, long steps);
 
   // Variances per sample charged to a segment for each sample after it left the bounds.
   static constexpr double kDivergedPenalty = 100.0;
@@ -52,6 +53,10 @@ class SegmentSimulator {
   double Error(const std::vector<const Model*>& models, const std::vector<long>& starts, long steps,
                bool& diverged, std::vector<double>* per_segment = nullptr,
                std::vector<double>* residuals = nullptr) const;
+
+  // The whole record free-run, each stretch between gaps from its first row: the stretches'
+  // Error, weighted by their steps.
+  double FreeRunError(const std::vector<const Model*>& models, bool& diverged) const;
 
  private:
   const SelectionData& data_;

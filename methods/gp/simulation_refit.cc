@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/dataset.h"
 #include "core/evenly_spread.h"
 
 namespace usvid::gp {
@@ -29,6 +30,13 @@ double Error(const SegmentSimulator& sim, const std::vector<Model>& models,
   std::vector<const Model*> pointers;
   for (const Model& m : models) pointers.push_back(&m);
   return sim.Error(pointers, starts, steps, diverged, nullptr, residuals);
+}
+
+// The free run of the whole record (each stretch between gaps from its start).
+double FreeRunError(const SegmentSimulator& sim, const std::vector<Model>& models, bool& diverged) {
+  std::vector<const Model*> pointers;
+  for (const Model& m : models) pointers.push_back(&m);
+  return sim.FreeRunError(pointers, diverged);
 }
 
 // Residuals of every segment for the models with the parameter blocks' biases and weights;
@@ -67,15 +75,15 @@ SimulationRefit RefitBySimulation(const SelectionData& data, const std::vector<i
     out.reason = "too few rows or no equations";
     return out;
   }
-  const double dt = (data.t(rows - 1) - data.t(0)) / static_cast<double>(rows - 1);
+  const double dt = MedianInterval(data.t);
   const long steps = std::clamp<long>(std::lround(options.horizon_s / dt), 1, rows - 1);
   const long fit_rows = std::clamp<long>(options.fit_rows, 0, rows);
-  const std::vector<long> all = SegmentSimulator::Starts(0, fit_rows, steps);
+  const std::vector<long> all = SegmentSimulator::Starts(data.t, 0, fit_rows, steps);
   std::vector<long> starts;
   for (const long i :
        EvenlySpread(static_cast<long>(all.size()), std::max<long>(1, options.max_rows / steps)))
     starts.push_back(all[static_cast<size_t>(i)]);
-  const std::vector<long> check = SegmentSimulator::Starts(fit_rows, rows, steps);
+  const std::vector<long> check = SegmentSimulator::Starts(data.t, fit_rows, rows, steps);
   out.segments = static_cast<int>(starts.size());
   out.validation_segments = static_cast<int>(check.size());
   if (starts.empty() || check.empty()) {
@@ -85,7 +93,7 @@ SimulationRefit RefitBySimulation(const SelectionData& data, const std::vector<i
   const SegmentSimulator sim(data, state_vars);
 
   bool diverged = false;
-  out.free_run_error_before = Error(sim, models, {0}, rows - 1, diverged);
+  out.free_run_error_before = FreeRunError(sim, models, diverged);
   out.validation_error_before = Error(sim, models, check, steps, diverged);
 
   std::vector<std::vector<double>> p;
@@ -126,7 +134,7 @@ SimulationRefit RefitBySimulation(const SelectionData& data, const std::vector<i
     out.reason = "the refitted weights did not lower the simulation error of the validation part";
     return out;
   }
-  out.free_run_error_after = Error(sim, refitted, {0}, rows - 1, diverged);
+  out.free_run_error_after = FreeRunError(sim, refitted, diverged);
   if (diverged) {
     out.reason = "the refitted model left the bounds in a free run of the record";
     return out;

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
+#include "core/stretches.h"
 #include "methods/parameter_sd.h"
 
 namespace usvid::nomoto {
@@ -109,19 +110,26 @@ NomotoFit FitNomoto(const PreparedData& prepared, const std::string& rate,
   const Eigen::VectorXd& input = d[yaw_input];
   const Eigen::VectorXd& measured = d[d.Has(rate + "_raw") ? rate + "_raw" : rate];
   const Eigen::VectorXd& smoothed = d[rate];
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> segments;  // [first, last] rows
+  // [first, last] rows, none across a gap (core/stretches.h).
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> segments;
+  const double gap = GapLimit(t, kGridGapFactor);
   for (Eigen::Index first = 0; first < d.rows();) {
     Eigen::Index last = first;
-    while (last + 1 < d.rows() && t(last + 1) - t(first) < segment_s) ++last;
-    if (last == first && !segments.empty())
-      segments.back().second = last;  // no segment of one row
-    else
+    while (last + 1 < d.rows() && t(last + 1) - t(first) < segment_s &&
+           t(last + 1) - t(last) <= gap)
+      ++last;
+    const bool after_gap = first > 0 && t(first) - t(first - 1) > gap;
+    if (last == first && !segments.empty()) {
+      if (!after_gap) segments.back().second = last;  // no segment of one row; after a gap, none
+    } else {
       segments.emplace_back(first, last);
+    }
     first = last + 1;
   }
   double max_step = 0.0;
   for (Eigen::Index k = 0; k + 1 < d.rows(); ++k)
-    max_step = std::max(max_step, (t(k + 1) - t(k)) / Substeps(t(k + 1) - t(k)));
+    if (t(k + 1) - t(k) <= gap)
+      max_step = std::max(max_step, (t(k + 1) - t(k)) / Substeps(t(k + 1) - t(k)));
   // RK4 on r' = -r/T is stable for h/T < 2.78: the bound keeps every rollout stable.
   const double min_t = std::max(1e-3, 0.5 * max_step);
 

@@ -13,6 +13,7 @@
 #include "core/correlation_time.h"
 #include "core/error.h"
 #include "core/evenly_spread.h"
+#include "core/stretches.h"
 #include "methods/refit/free_information.h"
 #include "methods/refit/refit.h"
 #include "methods/refit/refit_instances.h"
@@ -210,13 +211,20 @@ inline MissingTerms ResolveMissingTerms(const VesselInfo& info,
 }
 
 // Segments of segment_s seconds as rows [first, last] (the last may be shorter; at least two
-// rows each). Throws InputError for fewer than two rows.
+// rows each), none across a gap of the log (core/stretches.h). Throws InputError for fewer
+// than two rows.
 inline std::vector<std::pair<Eigen::Index, Eigen::Index>> SegmentBounds(const Dataset& data,
                                                                         double segment_s) {
   std::vector<std::pair<Eigen::Index, Eigen::Index>> bounds;
+  const Eigen::VectorXd& t = data.t();
+  const double gap = GapLimit(t, kRawGapFactor);
   for (Eigen::Index a = 0; a + 1 < data.rows();) {
+    if (t(a + 1) - t(a) > gap) {  // the next segment starts after the gap
+      ++a;
+      continue;
+    }
     Eigen::Index b = a + 1;
-    while (b + 1 < data.rows() && data.t()(b + 1) - data.t()(a) <= segment_s) ++b;
+    while (b + 1 < data.rows() && t(b + 1) - t(a) <= segment_s && t(b + 1) - t(b) <= gap) ++b;
     bounds.emplace_back(a, b);
     a = b;
   }

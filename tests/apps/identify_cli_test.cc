@@ -17,6 +17,7 @@ namespace {
 using testing::FreshTempDir;
 using ::testing::HasSubstr;
 using testing::RunUsvid;
+using testing::WriteText;
 namespace fs = std::filesystem;
 
 class IdentifyCliTest : public ::testing::Test {
@@ -250,6 +251,48 @@ TEST_F(IdentifyCliTest, ActuatorModelsDriveTheJetForcesOfALogOfCommandsAlone) {
 
 // Bad options: exit 2, one line naming the method, the option and what it allows, no model
 // written. Each method's options come from its declaration (docs/options.md).
+// Several records fitted jointly (issue 38): two msd runs from other seeds, each shorter than
+// the one record above, give SINDy the true equation (docs/data.md#several-records-and-gaps):
+// nothing is smoothed or simulated across the join. A record without a named channel, or an
+// empty name in the list, is exit 2 naming it, and nothing is written.
+TEST_F(IdentifyCliTest, SeveralRecordsAreFittedJointly) {
+  const std::string a = (dir_ / "a.csv").string(), b = (dir_ / "b.csv").string();
+  for (const auto& [file, seed] : {std::pair{a, 4}, std::pair{b, 5}})
+    ASSERT_EQ(RunUsvid("simulate --vessel msd --maneuver random-steps --duration 150 --noise 0.01 "
+                       "--seed " +
+                       std::to_string(seed) + " --out " + file)
+                  .exit_code,
+              0);
+  const auto out = (dir_ / "joint.json").string();
+  const auto r =
+      RunUsvid("identify --method sindy --vessel msd --data " + a + "," + b + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("2 records, 300.0 s in all, fitted jointly"));
+  EXPECT_THAT(r.err, HasSubstr("2 stretches between gaps or records"));
+  const nlohmann::json m = ReadJsonFile(out);
+  EXPECT_EQ(m.at("train").at("data"), a + "," + b);
+  // The truth file's v' = (f - d v - k x) / m.
+  const nlohmann::json truth = ReadJsonFile(dir_ / "a.truth.json").at("parameters");
+  const double mass = truth.at("m"), k = truth.at("k");
+  const nlohmann::json& p = m.at("parameters");
+  ASSERT_TRUE(p.contains("v.x") && p.contains("v.f")) << p.dump();
+  EXPECT_NEAR(p.at("v.f").get<double>(), 1.0 / mass, 0.05 / mass);
+  EXPECT_NEAR(p.at("v.x").get<double>(), -k / mass, 0.05 * k / mass);
+
+  WriteText(dir_ / "no_f.csv", "t,x,v\n0,0,0\n0.1,0,0\n");
+  const auto missing = (dir_ / "missing.json").string();
+  const auto bad = RunUsvid("identify --method sindy --vessel msd --states v --inputs f --data " +
+                            a + "," + (dir_ / "no_f.csv").string() + " --out " + missing);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("no_f.csv: no channel 'f' (every record of --data needs it)"));
+  EXPECT_FALSE(fs::exists(missing));
+  const auto empty =
+      RunUsvid("identify --method sindy --vessel msd --data " + a + ", --out " + missing);
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_THAT(empty.err, HasSubstr("--data: an empty file name"));
+  EXPECT_FALSE(fs::exists(missing));
+}
+
 TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
   const auto out = (dir_ / "bad.json").string();
   const std::vector<std::pair<std::string, std::string>> cases = {

@@ -283,8 +283,8 @@ TEST_F(SuiteTest, MeasuredDataSuitesAreReadStrictly) {
       {"methods", {"nominal", "refit", "diagnose", "nomoto"}}};
   const Suite suite = ParseSuite(ok, "/studies/s.json");
   ASSERT_TRUE(suite.Measured());
-  EXPECT_EQ(suite.train_data.at(0).file, "/studies/logs/a.csv");
-  EXPECT_EQ(suite.test_data.at(0).file, "/abs/b.dat");
+  EXPECT_EQ(suite.train_data.at(0).files, std::vector<std::string>{"/studies/logs/a.csv"});
+  EXPECT_EQ(suite.test_data.at(0).files, std::vector<std::string>{"/abs/b.dat"});
   EXPECT_EQ(suite.train_maneuvers, std::vector<std::string>{"a"});
   EXPECT_EQ(suite.noise, std::vector<double>{0.0});
   auto expect = [](nlohmann::json suite, const std::string& what) {

@@ -1,0 +1,77 @@
+#include "core/records.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+
+namespace usvid {
+
+Dataset JoinRecords(std::vector<Dataset> records, std::vector<std::string>* dropped) {
+  if (records.empty()) throw InputError("no records to join");
+  if (records.size() == 1) return std::move(records.front());
+  std::vector<std::string> kept;
+  for (const Channel& c : records.front().channels()) {
+    const bool everywhere =
+        std::ranges::all_of(records, [&](const Dataset& d) { return d.Has(c.name); });
+    if (everywhere) kept.push_back(c.name);
+  }
+  if (dropped)
+    for (const Dataset& d : records)
+      for (const Channel& c : d.channels())
+        if (std::ranges::find(kept, c.name) == kept.end() &&
+            std::ranges::find(*dropped, c.name) == dropped->end())
+          dropped->push_back(c.name);
+
+  Eigen::Index rows = 0;
+  for (const Dataset& d : records) rows += d.rows();
+  Eigen::VectorXd t(rows);
+  std::vector<Eigen::VectorXd> values(kept.size(), Eigen::VectorXd(rows));
+  std::vector<Eigen::Array<bool, Eigen::Dynamic, 1>> sampled(
+      kept.size(), Eigen::Array<bool, Eigen::Dynamic, 1>(rows));
+  Eigen::Index at = 0;
+  double end = 0.0;
+  std::string sources;
+  for (size_t r = 0; r < records.size(); ++r) {
+    const Dataset& d = records[r];
+    if (d.rows() == 0) continue;
+    const double shift = at == 0 ? 0.0 : end + kRecordGapS - d.t()(0);
+    t.segment(at, d.rows()) = d.t().array() + shift;
+    end = t(at + d.rows() - 1);
+    for (size_t c = 0; c < kept.size(); ++c) {
+      const Channel& channel = d.Get(kept[c]);
+      values[c].segment(at, d.rows()) = channel.values;
+      sampled[c].segment(at, d.rows()) = channel.sampled;
+    }
+    at += d.rows();
+    sources += (sources.empty() ? "" : ", ") +
+               (d.Source().empty() ? "record " + std::to_string(r + 1) : d.Source());
+  }
+  Dataset out(std::move(t));
+  for (size_t c = 0; c < kept.size(); ++c)
+    out.Set(kept[c], std::move(values[c]), std::move(sampled[c]));
+  for (const Dataset& d : records)
+    for (const Dataset::TextColumn& text : d.text_columns())
+      if (std::ranges::none_of(out.text_columns(),
+                               [&](const Dataset::TextColumn& o) { return o.name == text.name; }))
+        out.AddTextColumn(text);
+  out.metadata() = records.front().metadata();
+  out.metadata()["records"] = std::to_string(records.size());
+  out.metadata()["source"] = sources;
+  return out;
+}
+
+std::vector<std::string> RecordList(const std::string& text, const std::string& what) {
+  std::vector<std::string> names;
+  size_t from = 0;
+  while (true) {
+    const size_t comma = text.find(',', from);
+    names.push_back(
+        text.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+    if (names.back().empty()) throw InputError(what + ": an empty file name in '" + text + "'");
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+  return names;
+}
+
+}  // namespace usvid

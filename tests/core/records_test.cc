@@ -1,0 +1,93 @@
+// Records joined for one fit (core/records.h) and the stretches between gaps
+// (core/stretches.h): each record's time follows the one before after kRecordGapS, every
+// record's rows are kept in order, the channels only some records have are left out and named,
+// and the join is a gap that cuts the joined series into exactly its records.
+#include "core/records.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "core/stretches.h"
+
+namespace usvid {
+namespace {
+
+// `rows` samples at `dt` from `t0`, a channel x = offset + k and, when `with_y`, y = -k.
+Dataset Record(double t0, double dt, int rows, double offset, bool with_y, std::string source) {
+  Eigen::VectorXd t(rows), x(rows), y(rows);
+  for (int k = 0; k < rows; ++k) {
+    t(k) = t0 + k * dt;
+    x(k) = offset + k;
+    y(k) = -k;
+  }
+  Dataset d(t);
+  d.Set("x", x);
+  if (with_y) d.Set("y", y);
+  d.metadata()["source"] = std::move(source);
+  return d;
+}
+
+TEST(RecordsTest, JoinsRecordsInOrderWithAGapBetweenThem) {
+  // The second record's time starts at 1894 s, as a log continuing a session does.
+  std::vector<std::string> dropped;
+  const Dataset joined = JoinRecords(
+      {Record(0.0, 0.1, 30, 0.0, true, "a.csv"), Record(1894.0, 0.1, 20, 100.0, false, "b.csv")},
+      &dropped);
+  ASSERT_EQ(joined.rows(), 50);
+  EXPECT_DOUBLE_EQ(joined.t()(29), 2.9);
+  EXPECT_DOUBLE_EQ(joined.t()(30), 2.9 + kRecordGapS);      // the second starts after the gap
+  EXPECT_NEAR(joined.t()(49) - joined.t()(30), 1.9, 1e-9);  // and keeps its own intervals
+  EXPECT_EQ(joined["x"](29), 29.0);
+  EXPECT_EQ(joined["x"](30), 100.0);
+  EXPECT_FALSE(joined.Has("y"));  // only the first record has it
+  EXPECT_EQ(dropped, std::vector<std::string>{"y"});
+  EXPECT_EQ(joined.metadata().at("records"), "2");
+  EXPECT_EQ(joined.Source(), "a.csv, b.csv");
+}
+
+TEST(RecordsTest, OneRecordIsReturnedAsItIsAndNoneIsAnError) {
+  const Dataset one = JoinRecords({Record(5.0, 0.1, 12, 0.0, true, "a.csv")});
+  EXPECT_EQ(one.t()(0), 5.0);
+  EXPECT_TRUE(one.Has("y"));
+  EXPECT_FALSE(one.metadata().contains("records"));
+  EXPECT_THROW(JoinRecords({}), InputError);
+}
+
+TEST(RecordsTest, TheJoinIsAGapThatCutsTheSeriesIntoItsRecords) {
+  const Dataset joined =
+      JoinRecords({Record(0.0, 0.1, 30, 0.0, false, "a"), Record(0.0, 0.1, 20, 0.0, false, "b"),
+                   Record(0.0, 0.1, 25, 0.0, false, "c")});
+  for (const double factor : {kGridGapFactor, kRawGapFactor}) {
+    const std::vector<Stretch> s = Stretches(joined.t(), factor);
+    ASSERT_EQ(s.size(), 3u);
+    EXPECT_EQ(s[0].first, 0);
+    EXPECT_EQ(s[0].end, 30);
+    EXPECT_EQ(s[1].first, 30);
+    EXPECT_EQ(s[1].rows(), 20);
+    EXPECT_EQ(s[2].end, 75);
+  }
+}
+
+TEST(StretchesTest, ADropoutInsideARecordIsAGapAndJitterIsNot) {
+  // 10 Hz with +-20 % jitter, then 0.5 s without a sample, then 10 Hz again.
+  std::vector<double> times;
+  for (int k = 0; k < 40; ++k) times.push_back(0.1 * k + (k % 2 ? 0.02 : -0.02));
+  for (int k = 0; k < 40; ++k) times.push_back(4.4 + 0.1 * k);
+  const Eigen::VectorXd t = Eigen::Map<Eigen::VectorXd>(times.data(), 80);
+  const std::vector<Stretch> raw = Stretches(t, kRawGapFactor);
+  ASSERT_EQ(raw.size(), 2u);
+  EXPECT_EQ(raw[1].first, 40);
+  EXPECT_EQ(Stretches(t.head(40), kRawGapFactor).size(), 1u);
+  EXPECT_TRUE(Stretches(Eigen::VectorXd(), kRawGapFactor).empty());
+}
+
+TEST(RecordsTest, ListsOfFilesSplitAtCommasAndRejectEmptyNames) {
+  EXPECT_EQ(RecordList("a.csv,b.csv", "--data"), (std::vector<std::string>{"a.csv", "b.csv"}));
+  EXPECT_EQ(RecordList("a.csv", "--data"), std::vector<std::string>{"a.csv"});
+  EXPECT_THROW(RecordList("", "--data"), InputError);
+  EXPECT_THROW(RecordList("a.csv,", "--data"), InputError);
+  EXPECT_THROW(RecordList("a.csv,,b.csv", "--data"), InputError);
+}
+
+}  // namespace
+}  // namespace usvid
