@@ -22,6 +22,14 @@ RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
   if (options.abs_terms)
     for (const NamedSignal& x : states) names.push_back("abs(" + x.name + ")*" + x.name);
   for (const NamedSignal& u : inputs) names.push_back(u.name);
+  if (options.input_products) {
+    for (const NamedSignal& x : states)
+      for (const NamedSignal& u : inputs) names.push_back(x.name + "*" + u.name);
+    for (size_t j = 0; j < inputs.size(); ++j)
+      for (size_t m = j; m < inputs.size(); ++m)
+        names.push_back(inputs[j].name + "*" + inputs[m].name);
+    for (const NamedSignal& u : inputs) names.push_back("abs(" + u.name + ")*" + u.name);
+  }
 
   RegressorLibrary lib{names, Eigen::MatrixXd(n, static_cast<Eigen::Index>(names.size()))};
   Eigen::Index c = 0;
@@ -35,6 +43,15 @@ RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
     for (const NamedSignal& x : states)
       lib.columns.col(c++) = x.values.cwiseAbs().cwiseProduct(x.values);
   for (const NamedSignal& u : inputs) lib.columns.col(c++) = u.values;
+  if (options.input_products) {
+    for (const NamedSignal& x : states)
+      for (const NamedSignal& u : inputs) lib.columns.col(c++) = x.values.cwiseProduct(u.values);
+    for (size_t j = 0; j < inputs.size(); ++j)
+      for (size_t m = j; m < inputs.size(); ++m)
+        lib.columns.col(c++) = inputs[j].values.cwiseProduct(inputs[m].values);
+    for (const NamedSignal& u : inputs)
+      lib.columns.col(c++) = u.values.cwiseAbs().cwiseProduct(u.values);
+  }
   return lib;
 }
 

@@ -1,5 +1,7 @@
 // Candidate regressors for equation-error fits (delay scans, SINDy): from state channels x and
-// input channels u, the columns 1, x_i, u_j, x_i x_k (i <= k) and |x_i| x_i, each named in the
+// input channels u, the columns 1, x_i, x_i x_k (i <= k), |x_i| x_i, u_j and, when asked, the
+// input products x_i u_j, u_j u_m (j <= m) and |u_j| u_j (a ship's rudder force grows with
+// u delta at a given speed, its thrust with |n| n), each named in the
 // equation syntax (docs/data.md#equation-syntax: "u", "v*r", "abs(u)*u", "tau_x") so a fitted
 // row of weights is an equation that can be written out.
 #pragma once
@@ -19,6 +21,9 @@ struct LibraryOptions {
   bool constant = true;
   bool products = true;   // x_i x_k
   bool abs_terms = true;  // |x_i| x_i
+  // x_i u_j, u_j u_m (j <= m), |u_j| u_j: after the inputs, so the other columns keep their
+  // order.
+  bool input_products = false;
 };
 
 struct RegressorLibrary {

@@ -10,6 +10,7 @@
 #include "methods/gp/model_selection.h"
 #include "methods/gp/simulation_refit.h"
 #include "methods/gp/term_completion.h"
+#include "methods/gp/validation_split.h"
 
 namespace usvid::gp {
 
@@ -93,10 +94,13 @@ void AddFeatures(const std::vector<DerivedVariable>& features, const PreparedDat
   }
 }
 
-// The rows searched on: all but the last fraction `f` (the validation part), or every row when
-// f is 0. Throws InputError when either part is too short.
-long TrainRows(long rows, double f) {
-  const long train_rows = f > 0 ? std::lround((1.0 - f) * static_cast<double>(rows)) : rows;
+// The rows searched on: all but the last fraction `f` (the validation part; of each stretch
+// when the split says), or every row when f is 0. Throws InputError when either part is too
+// short.
+long TrainRows(long rows, double f, const ValidationSplit& split) {
+  const long train_rows = split.reordered ? split.train_rows
+                          : f > 0         ? std::lround((1.0 - f) * static_cast<double>(rows))
+                                          : rows;
   if (f > 0 && (train_rows < 10 || rows - train_rows < 2))
     throw InputError("gp: --validation-fraction " + FormatNumber(f) + " leaves " +
                      std::to_string(train_rows) + " rows to search on and " +
@@ -297,15 +301,17 @@ nlohmann::json WeightsJson(const SimulationRefit& refit, bool refine, double hor
 }  // namespace
 
 GpIdentification IdentifyWithGp(
-    const PreparedData& prepared, const std::vector<std::string>& states,
+    const PreparedData& given, const std::vector<std::string>& states,
     const std::vector<std::string>& variables, const std::vector<std::string>& inputs,
     const GpIdentifyOptions& options,
     const std::function<void(const std::string&, const GenerationLog&)>& progress) {
+  const double f = options.validation_fraction;
+  const ValidationSplit split = SplitForValidation(given, f);
+  const PreparedData& prepared = split.reordered ? *split.reordered : given;
   GpProblem all = MeasuredVariables(prepared, variables, inputs);
   std::vector<DerivedColumn> derived;
   AddFeatures(options.features, prepared, &all, &derived);
-  const double f = options.validation_fraction;
-  const long train_rows = TrainRows(prepared.data.rows(), f);
+  const long train_rows = TrainRows(prepared.data.rows(), f, split);
 
   GpIdentification out;
   std::vector<GpResult> results;

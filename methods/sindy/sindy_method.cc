@@ -29,9 +29,11 @@ std::vector<OptionSpec> SindyOptionSpecs() {
                    "relative ridge during thresholding, at least the squared relative noise of "
                    "the library's columns"),
       IntegerOption("folds", d.folds, 2, 1000, "contiguous-block folds that choose the threshold"),
-      ListOption("library", {"constant", "products", "abs"}, {"constant", "products", "abs"},
+      ListOption("library", {"constant", "products", "abs"},
+                 {"constant", "products", "abs", "inputs"},
                  "the candidate terms besides each variable and input: constant, products "
-                 "(x_i x_k of the variables), abs (|x_i| x_i)"),
+                 "(x_i x_k of the variables), abs (|x_i| x_i), inputs (x_i u_j, u_j u_m and "
+                 "|u_j| u_j: a rudder's force with speed, a propeller's thrust)"),
       RegimeFeaturesOption(kSindyFroudeHinges),
   };
 }
@@ -46,6 +48,7 @@ sindy::SindyOptions SindyOptionsFor(const MethodOptions& o) {
   s.library.constant = has("constant");
   s.library.products = has("products");
   s.library.abs_terms = has("abs");
+  s.library.input_products = has("inputs");
   return s;
 }
 

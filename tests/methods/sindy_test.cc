@@ -116,6 +116,33 @@ TEST_F(SindyTest, MsdRecoveredToOnePercentOnHeldOutData) {
   EXPECT_EQ(TermNames(id.equations["v"]), TermNames("x + v + f"));
 }
 
+// A ship's rudder turns it in proportion to speed: r' = -0.5 r + 0.8 u delta, with u and the
+// rudder delta stepped at random (u an input here). The library's input products (issue 38)
+// hold u*delta, and SINDy finds exactly the two true terms, to 2 %.
+TEST_F(SindyTest, InputProductsFindARudderForceThatGrowsWithSpeed) {
+  const int n = 6001;  // 300 s at 20 Hz
+  Dataset d(Eigen::VectorXd::LinSpaced(n, 0.0, 300.0));
+  Eigen::VectorXd r(n), u(n), delta(n);
+  double state = 0.0;
+  for (int i = 0; i < n; ++i) {
+    u(i) = 1.0 + 0.5 * ((i / 170) % 3);                  // 1, 1.5, 2 m/s
+    delta(i) = 0.3 * (((i / 90) * 7919) % 5 - 2) / 2.0;  // -0.3 .. 0.3 rad
+    r(i) = state;
+    for (int k = 0; k < 50; ++k) state += 0.001 * (-0.5 * state + 0.8 * u(i) * delta(i));
+  }
+  d.Set("r", r);
+  d.Set("U", u);
+  d.Set("delta", delta);
+  const PreparedData prep = Preprocess(d, {"r"}, {"U", "delta"}, {});
+  SindyOptions o;
+  o.library.input_products = true;
+  const SindyIdentification id = IdentifyWithSindy(prep, {"r"}, {"r"}, {"U", "delta"}, o);
+  EXPECT_EQ(TermNames(id.equations["r"]), TermNames("r + U*delta"))
+      << id.equations["r"].get<std::string>();
+  EXPECT_NEAR(id.parameters["r.r"].get<double>(), -0.5, 0.01);
+  EXPECT_NEAR(id.parameters["r.U*delta"].get<double>(), 0.8, 0.016);
+}
+
 // On noisy data the held-out error picks a threshold above the smallest candidate: the
 // selection prunes, rather than keeping the dense least-squares model.
 TEST_F(SindyTest, ChosenThresholdIsNotTheSmallestOnNoisyData) {
