@@ -7,9 +7,12 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
+#include "core/stretches.h"
 #include "methods/gp/model_selection.h"
+#include "methods/gp/ols.h"
 #include "methods/gp/simulation_refit.h"
 #include "methods/gp/term_completion.h"
+#include "methods/gp/tree.h"
 #include "methods/gp/validation_split.h"
 
 namespace usvid::gp {
@@ -213,6 +216,71 @@ SimulationRefit RefineBySimulation(const PreparedData& prepared,
   return RefitBySimulation(lent.data(), state_vars, *bests, {horizon_s, 30, train_rows});
 }
 
+// Whether `model` of the state `var` damps or restores its own state, by d(x')/dx (central
+// differences) over the rows of `t`: below 0 on average over each stretch between gaps (each
+// record of a joint fit; kUndamped), or at every row (kEveryRow), where an equation whose
+// damping comes and goes with other states fails (v' = c r u |v| damps in one turn and drives
+// in the other, or in reverse).
+bool Damps(const Model& model, int var, std::vector<Eigen::VectorXd> variables,
+           const Eigen::VectorXd& t, DampingOffer rule) {
+  Eigen::VectorXd& x = variables[static_cast<size_t>(var)];
+  const double h = 1e-6 * (std::sqrt(x.squaredNorm() / std::max<double>(1, x.size())) + 1e-12);
+  x.array() += h;
+  const Eigen::VectorXd up = Predict(model, variables);
+  x.array() -= 2 * h;
+  const Eigen::VectorXd slope = (up - Predict(model, variables)) / (2 * h);
+  if (rule == DampingOffer::kEveryRow) return (slope.array() < 0).all();
+  for (const Stretch& s : Stretches(t, kGridGapFactor))
+    if (!(slope.segment(s.first, s.rows()).mean() < 0)) return false;
+  return true;
+}
+
+// `model` with the variable `var` added as one more term of weight 0.
+Model WithTerm(Model model, int var) {
+  model.tree.push_back({Op::kVar, static_cast<uint16_t>(var), 1, 0.0});
+  model.tree.push_back({Op::kAdd, 0, 1, 0.0});
+  UpdateLengths(model.tree);
+  model.term_roots = SplitTerms(model.tree);
+  model.weights.push_back(0.0);
+  return model;
+}
+
+// The weights refitted by simulation error, each chosen equation that does not damp its own
+// state (by `rule`, Damps) first offered a linear term in it, of weight 0, for the simulation
+// refit to size: the linear damping every hull has (X_u u, Y_v v, N_r r), which a real log's
+// noisy derivative rarely shows, although it sets a free run's course over minutes (issue 38:
+// on the Esso Osaka runs GP's surge and sway had none and diverged). The offer stays only when that
+// refit is accepted (it lowers the simulation error of the fit and the validation parts, and
+// free-runs the record); otherwise the equations are refitted as they were chosen. `damped` lists
+// the states offered and kept.
+SimulationRefit RefineWithDamping(const PreparedData& prepared,
+                                  const std::vector<std::string>& states, GpProblem* all,
+                                  const std::vector<DerivedColumn>& derived, long train_rows,
+                                  double horizon_s, DampingOffer rule, std::vector<Model>* bests,
+                                  std::vector<std::string>* damped) {
+  std::vector<Model> offered = *bests;
+  std::vector<std::string> names;
+  for (size_t i = 0; i < states.size(); ++i) {
+    const int var = static_cast<int>(std::find(all->names.begin(), all->names.end(), states[i]) -
+                                     all->names.begin());
+    if (rule == DampingOffer::kNone ||
+        Damps(offered[i], var, all->variables, prepared.data.t(), rule))
+      continue;
+    offered[i] = WithTerm(offered[i], var);
+    names.push_back(states[i]);
+  }
+  if (!names.empty()) {
+    SimulationRefit refit =
+        RefineBySimulation(prepared, states, all, derived, train_rows, horizon_s, &offered);
+    if (refit.accepted) {
+      *bests = std::move(offered);
+      *damped = std::move(names);
+      return refit;
+    }
+  }
+  return RefineBySimulation(prepared, states, all, derived, train_rows, horizon_s, bests);
+}
+
 // The equation error's r^2 of the refitted weights, on every row.
 double RefittedR2(const PreparedData& prepared, const std::string& state, const Model& best,
                   const std::vector<Eigen::VectorXd>& variables) {
@@ -337,9 +405,10 @@ GpIdentification IdentifyWithGp(
       FitChosen(prepared, states, candidates, selection, options.search, &all);
   SimulationRefit refit;
   const bool refine = select && options.weight_fit == WeightFit::kSimulation;
+  std::vector<std::string> damped;
   if (refine)
-    refit =
-        RefineBySimulation(prepared, states, &all, derived, train_rows, options.horizon_s, &bests);
+    refit = RefineWithDamping(prepared, states, &all, derived, train_rows, options.horizon_s,
+                              options.damping_offer, &bests, &damped);
 
   for (size_t i = 0; i < states.size(); ++i) {
     const std::string& state = states[i];
@@ -353,6 +422,8 @@ GpIdentification IdentifyWithGp(
     nlohmann::json chosen =
         ChosenJson(candidates[i].models, i, selection, select, options.horizon_s, f, all.names);
     chosen["weights"] = WeightsJson(refit, refine, options.horizon_s);
+    // Whether the equation was offered its own state as a damping term, which the refit kept.
+    chosen["weights"]["damping_term_added"] = std::ranges::find(damped, state) != damped.end();
     out.details[state] = {{"r2_train", best.r2},          {"r2_heldout", best.r2_heldout},
                           {"size", best.Size()},          {"generations", r.log.size()},
                           {"restarts", r.restarts},       {"stop_reason", r.stop_reason},

@@ -32,11 +32,17 @@ std::string OperatorList(const std::vector<Op>& ops);
 // the derivatives), or by that and then by simulation error (simulation_refit.h).
 enum class WeightFit { kEquation, kSimulation };
 
+// Which chosen equations the simulation refit offers a linear damping term in their own state
+// (gp_identify.cc, RefineWithDamping): those that do not damp it on average over some record
+// (model.json's "undamped"), those that do not damp it at every row, or none.
+enum class DampingOffer { kUndamped, kEveryRow, kNone };
+
 struct GpIdentifyOptions {
   GpOptions search;
   double validation_fraction = 0.2;  // the record's last part; 0: the search's best is kept
   double horizon_s = 10.0;           // of the short-horizon simulations
   WeightFit weight_fit = WeightFit::kSimulation;  // needs a validation part
+  DampingOffer damping_offer = DampingOffer::kUndamped;  // with the simulation refit
   // Variables computed from the states (regime_features.h): searched like any other, written
   // into the equations as their expressions, recomputed from the simulated states when
   // candidates are simulated.

@@ -48,12 +48,15 @@ std::vector<OptionSpec> GpOptionSpecs() {
                     "(0: none)"),
       IntegerOption("restarts", d.restarts, 0, 1000,
                     "restarts on stagnation before the search stops"),
-      ChoiceOption("fitness", "r2", {"r2", "mse"},
-                   "r2 (held-out, with a size penalty) or mse"),
+      ChoiceOption("fitness", "r2", {"r2", "mse"}, "r2 (held-out, with a size penalty) or mse"),
       ChoiceOption("fit", "simulation", {"simulation", "equation"},
                    "the chosen terms' weights by equation error, then by short-horizon "
                    "simulation error (simulation), or by equation error alone; the report "
                    "preset's: equation"),
+      ChoiceOption("damping", "undamped", {"undamped", "every-row", "none"},
+                   "which chosen equations the simulation refit offers a linear damping term in "
+                   "their own state, kept if the refit is: those that do not damp it on average "
+                   "over some record (undamped), or at every row (every-row), or none"),
       IntegerOption("fit_rows", d.fit_rows, 0, kUnbounded,
                     "rows the search scores on, spread over the record (0: all)"),
       RegimeFeaturesOption(kGpFroudeHinges),
@@ -90,6 +93,9 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& request, const MethodO
   g.horizon_s = o.OptionalNumber("horizon_s").value_or(g.horizon_s);
   const bool simulation = o.Given("fit") ? o.Text("fit") == "simulation" : !report;
   g.weight_fit = simulation ? gp::WeightFit::kSimulation : gp::WeightFit::kEquation;
+  g.damping_offer = o.Text("damping") == "every-row" ? gp::DampingOffer::kEveryRow
+                    : o.Text("damping") == "none"    ? gp::DampingOffer::kNone
+                                                     : gp::DampingOffer::kUndamped;
   if (std::string error; !s.IsValid(&error))
     throw InputError("method gp: option " + error);  // IsValid names the field, the option's key
   return g;
@@ -119,6 +125,7 @@ nlohmann::json GpDetails(const MethodOptions& o, const gp::GpIdentifyOptions& gp
           {"validation_fraction", gpo.validation_fraction},
           {"horizon_s", gpo.horizon_s},
           {"weight_fit", weight_fit},
+          {"damping", o.Text("damping")},
           {"fitness", o.Text("fitness")},
           {"fit_rows", so.fit_rows},
           {"node_evaluations", gp.node_evaluations},

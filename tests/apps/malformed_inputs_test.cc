@@ -179,6 +179,14 @@ const Malformed kCatalogue[] = {
      "identify --method fossen-ceres --data {D}/good.csv --vessel odin3dof --fit-rows -1 --out "
      "{OUT}.json",
      "--fit-rows"},
+    // Several records (issue 38): an empty list or name, a record without a named channel.
+    {"identify_empty_data_list",
+     "identify --method sindy --vessel odin3dof --data '' --out {OUT}.json",
+     "--data: an empty file name"},
+    {"identify_record_without_channel",
+     "identify --method sindy --states u,v,r --inputs tau_x --data {D}/good.csv,{D}/no_inputs.csv "
+     "--out {OUT}.json",
+     "no_inputs.csv: no channel 'tau_x' (every record of --data needs it)"},
     {"negative_threads", "diagnose --data {D}/good.csv --vessel odin3dof --threads -1 --out {OUT}",
      "--threads"},
     {"unknown_option", "info --data {D}/good.csv --colour blue", "--colour"},

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/expression.h"
+#include "importers/froude_scaling.h"
 #include "methods/identify.h"
 #include "metrics/evaluation.h"
 #include "preprocessing/pipeline.h"
@@ -141,6 +142,47 @@ TEST_F(SindyTest, InputProductsFindARudderForceThatGrowsWithSpeed) {
       << id.equations["r"].get<std::string>();
   EXPECT_NEAR(id.parameters["r.r"].get<double>(), -0.5, 0.01);
   EXPECT_NEAR(id.parameters["r.U*delta"].get<double>(), 0.8, 0.016);
+}
+
+// Scale-free (issue 38): the same record Froude-scaled from a 3 m model to a 300 m ship
+// (lambda 100: time and speed x10, rate / 10) gives the same model in nondimensional form. With
+// r_s = r / sqrt(lambda), U_s = U sqrt(lambda) and t_s = t sqrt(lambda), r' = a r + b U delta
+// becomes r_s' = (a / sqrt(lambda)) r_s + (b / lambda^1.5) U_s delta: the same terms, and
+// coefficients that scale back to the model's. SINDy's thresholds act on unit-RMS columns and
+// targets, so the same defaults serve both scales.
+TEST_F(SindyTest, AFroudeScaledRecordGivesTheSameNondimensionalModel) {
+  const int n = 6001;
+  Dataset d(Eigen::VectorXd::LinSpaced(n, 0.0, 300.0));
+  Eigen::VectorXd r(n), u(n), delta(n);
+  double state = 0.0;
+  for (int i = 0; i < n; ++i) {
+    u(i) = 0.2 + 0.1 * ((i / 170) % 3);
+    delta(i) = 0.3 * (((i / 90) * 7919) % 5 - 2) / 2.0;
+    r(i) = state;
+    for (int k = 0; k < 50; ++k) state += 0.001 * (-0.1 * state + 0.5 * u(i) * delta(i));
+  }
+  // 0.1 % noise on the rate, as a gyro's.
+  for (int i = 0; i < n; ++i) r(i) += 1e-3 * r.cwiseAbs().maxCoeff() * std::sin(1.7e3 * i);
+  d.Set("r", r);
+  d.Set("U", u);
+  d.Set("delta", delta);
+  Dataset ship = d;
+  const double lambda = 100.0;
+  FroudeScale(ship, lambda);
+  SindyOptions o;
+  o.library.input_products = true;
+  const auto fit = [&](const Dataset& data) {
+    return IdentifyWithSindy(Preprocess(data, {"r"}, {"U", "delta"}, {}), {"r"}, {"r"},
+                             {"U", "delta"}, o);
+  };
+  const SindyIdentification model = fit(d), full = fit(ship);
+  EXPECT_EQ(TermNames(model.equations["r"]), TermNames(full.equations["r"]))
+      << model.equations["r"] << " against " << full.equations["r"];
+  for (const auto& [term, power] : {std::pair{"r.r", 0.5}, std::pair{"r.U*delta", 1.5}}) {
+    ASSERT_TRUE(model.parameters.contains(term) && full.parameters.contains(term)) << term;
+    const double m = model.parameters[term], f = full.parameters[term];
+    EXPECT_NEAR(f * std::pow(lambda, power), m, 1e-3 * std::abs(m)) << term;
+  }
 }
 
 // On noisy data the held-out error picks a threshold above the smallest candidate: the
