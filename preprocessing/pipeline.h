@@ -1,7 +1,10 @@
 // The preprocessing every derivative-based identification runs, in one call: multi-rate data
 // onto a uniform grid, the input delay (given, or estimated by the equation-error scan) taken
 // out by shifting the inputs, then each state smoothed and differentiated (by default with
-// breaks where the shifted inputs step). Used by `usvid preprocess` and `usvid identify`.
+// breaks where the shifted inputs step). A record with gaps, or records joined for one fit
+// (core/records.h), is processed one stretch between gaps at a time (core/stretches.h): no
+// derivative or shifted input crosses a gap, and the grid keeps it. Used by `usvid preprocess`
+// and `usvid identify`.
 #pragma once
 
 #include <optional>

@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/records.h"
 #include "diagnosis/diagnose.h"
 #include "diagnosis/diagnosis_json.h"
 #include "effects/effect.h"
@@ -84,7 +85,7 @@ py::dict Simulate(const std::string& vessel, const py::object& maneuver, const p
 
 // identify's keyword options: the method's declared options and the keys every method shares,
 // as a suite's method entry takes them (harness/suite.h), plus threads and seed.
-py::dict Identify(const py::dict& data, const std::string& method, const py::object& vessel,
+py::dict Identify(const py::object& data, const std::string& method, const py::object& vessel,
                   const py::object& states, const py::object& inputs, const py::kwargs& kwargs) {
   nlohmann::json options = ToJson(kwargs);
   // threads and seed, as `usvid identify --threads --seed`; the rest as a suite's options.
@@ -106,7 +107,17 @@ py::dict Identify(const py::dict& data, const std::string& method, const py::obj
   IdentifyRequest request = MethodRequest({method, options}, vessel_name, seed);
   request.threads = threads;
   request.data_name = "python";
-  Dataset d = ToDataset(data);
+  // One record (a dict), or several fitted jointly (a list of dicts; core/records.h).
+  Dataset d;
+  if (py::isinstance<py::dict>(data)) {
+    d = ToDataset(data.cast<py::dict>());
+  } else {
+    std::vector<Dataset> records;
+    for (const py::handle record : data.cast<py::list>())
+      records.push_back(ToDataset(record.cast<py::dict>()));
+    if (records.empty()) throw InputError("identify: data: an empty list of records");
+    d = JoinRecords(std::move(records));
+  }
   nlohmann::json model;
   {
     py::gil_scoped_release release;
@@ -181,8 +192,8 @@ PYBIND11_MODULE(_usvid, m) {
         "A maneuver (or recorded inputs, a dict with 't') on a vessel: a dict of numpy arrays.");
   m.def("identify", &Identify, arg("data"), arg("method"), arg("vessel") = py::none(),
         arg("states") = py::none(), arg("inputs") = py::none(),
-        "Fit a method to data: model.json as a dict. Options as a suite's (population=..., "
-        "seed=..., threads=...).");
+        "Fit a method to data (a dict, or a list of dicts fitted jointly): model.json as a dict. "
+        "Options as a suite's (population=..., seed=..., threads=...).");
   m.def("evaluate", &Evaluate, arg("model"), arg("data"),
         "Free-run a model on data: metrics.json as a dict.");
   m.def("diagnose", &Diagnose, arg("data"), arg("vessel"), arg("causes") = 3,

@@ -76,12 +76,13 @@ void RunIdentify(const IdentifyOptions& o) {
     r.start_params = FindVessel(r.vessel).Info().ParamsFromFile(o.params);
   }
   // Every record needs the named channels, except those identify derives (speed and course,
-  // a force map's forces).
+  // and a force map's forces when one is given).
   std::vector<std::string> required;
+  const bool forces = !r.preprocess.forces.empty();
   for (const auto* names : {&r.states, &r.inputs})
     for (const std::string& c : *names)
       if (c != "U" && c != "chi" &&
-          std::ranges::find(kWaterjetForceChannels, c) == kWaterjetForceChannels.end())
+          !(forces && std::ranges::find(kWaterjetForceChannels, c) != kWaterjetForceChannels.end()))
         required.push_back(c);
   Dataset data = ReadDataFiles(o.data, "usvid identify", required, [&](Dataset& record) {
     SimulateMissingActuators(record, o.pre.actuators);

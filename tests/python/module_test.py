@@ -95,6 +95,14 @@ class ModuleTest(unittest.TestCase):
         fit_seconds = time.monotonic() - start
         self.assertLess(longest_pause, 0.5 * fit_seconds, (longest_pause, fit_seconds))
 
+    def test_several_records_are_fitted_jointly(self):
+        # A list of records is one joint fit, nothing run across the joins (docs/data.md).
+        runs = [usvid.simulate(vessel="msd", maneuver="random-steps", seed=s, duration=150)
+                for s in (1, 2)]
+        model = usvid.identify(runs, method="lti", vessel="msd")
+        self.assertEqual(model["train"]["samples"], sum(len(r["t"]) for r in runs))
+        self.assertTrue(any("2 stretches" in n for n in model["preprocessing"]["notes"]))
+
     def test_bad_arguments_raise_value_error_and_write_nothing(self):
         before = set(os.listdir(tempfile.gettempdir()))
         cases = [
@@ -120,6 +128,8 @@ class ModuleTest(unittest.TestCase):
              "option 'library' [\"cubic\"] is not allowed: a list of constant, products, abs"),
             (lambda: usvid.identify(self.train, method="gp", vessel="odin3dof", threads=-1),
              "threads must be a whole number"),
+            (lambda: usvid.identify([], method="sindy", vessel="odin3dof"),
+             "an empty list of records"),
             (lambda: usvid.identify({"u": np.zeros(3)}, method="sindy", vessel="odin3dof"),
              "no time channel 't'"),
             (lambda: usvid.identify({"t": np.array([0.0, 2.0, 1.0])}, method="sindy",
