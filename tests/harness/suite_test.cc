@@ -321,6 +321,16 @@ TEST_F(SuiteTest, MeasuredDataSuitesAreReadStrictly) {
   s = ok;
   s["data"]["train"] = nlohmann::json::array();
   expect(s, "data: train");
+  // Several records in one training entry, fitted jointly (core/records.h); a test is one file.
+  s = ok;
+  s["data"]["train"][0]["file"] = {"logs/a.csv", "/abs/c.csv"};
+  EXPECT_EQ(ParseSuite(s, "/studies/s.json").train_data.at(0).files,
+            (std::vector<std::string>{"/studies/logs/a.csv", "/abs/c.csv"}));
+  s["data"]["train"][0]["file"] = nlohmann::json::array();
+  expect(s, "a non-empty list of paths");
+  s = ok;
+  s["data"]["test"][0]["file"] = {"b.dat", "c.dat"};
+  expect(s, "a test entry is one file");
 }
 
 // Trained and tested on files: the nominal vessel fits its own clean data exactly, every method
