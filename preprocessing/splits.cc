@@ -15,16 +15,22 @@ std::vector<RowRange> ContiguousBlocks(Eigen::Index rows, int count) {
   return blocks;
 }
 
-std::vector<Fold> BlockFolds(Eigen::Index rows, int k) {
+std::vector<Fold> BlockFolds(Eigen::Index rows, int k) { return BlockFolds({{0, rows}}, k); }
+
+std::vector<Fold> BlockFolds(const std::vector<RowRange>& pieces, int k) {
   if (k < 2) throw InputError("split: k-fold needs k >= 2");
-  const std::vector<RowRange> blocks = ContiguousBlocks(rows, k);
-  std::vector<Fold> folds;
-  for (int i = 0; i < k; ++i) {
-    Fold f;
-    f.held_out = blocks[i];
-    for (int j = 0; j < k; ++j)
-      if (j != i) f.train.push_back(blocks[j]);
-    folds.push_back(f);
+  std::vector<Fold> folds(static_cast<size_t>(k));
+  for (const auto& [first, end] : pieces) {
+    if (end - first < k) {
+      for (Fold& f : folds) f.train.push_back({first, end});
+      continue;
+    }
+    const std::vector<RowRange> blocks = ContiguousBlocks(end - first, k);
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j) {
+        const RowRange block{first + blocks[j].first, first + blocks[j].second};
+        (j == i ? folds[i].held_out : folds[i].train).push_back(block);
+      }
   }
   return folds;
 }

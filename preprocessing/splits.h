@@ -18,11 +18,18 @@ std::vector<RowRange> ContiguousBlocks(Eigen::Index rows, int count);
 
 struct Fold {
   std::vector<RowRange> train;
-  RowRange held_out;
+  std::vector<RowRange> held_out;
 };
 
 // k folds: fold i holds out block i and trains on the others. Throws InputError for k < 2.
 std::vector<Fold> BlockFolds(Eigen::Index rows, int k);
+
+// k folds over several pieces (records, or stretches between gaps): each piece is cut into k
+// contiguous blocks and fold i holds out block i of every piece, so every fold holds out a
+// share of every maneuver rather than whole maneuvers the others never saw. A piece of fewer
+// than k rows is never held out (it trains every fold). One piece: BlockFolds(rows, k).
+// Throws InputError for k < 2.
+std::vector<Fold> BlockFolds(const std::vector<RowRange>& pieces, int k);
 
 // The rows of a range as a dataset of its own (time kept as it is).
 Dataset Rows(const Dataset& data, RowRange range);

@@ -6,9 +6,8 @@
 
 namespace usvid {
 
-double AutomaticSegmentSeconds(const Dataset& data, const VesselInfo& info) {
-  constexpr double kMinimum = 10.0;
-  if (!(info.length_m > 0)) return kMinimum;
+double HullLengthSeconds(const Dataset& data, const VesselInfo& info) {
+  if (!(info.length_m > 0)) return 0.0;
   std::vector<double> speed;
   const Channel* U = data.Find("U");
   const Channel* u = data.Find("u");
@@ -21,10 +20,16 @@ double AutomaticSegmentSeconds(const Dataset& data, const VesselInfo& info) {
       speed.push_back(std::hypot(u->values(k), vk));
     }
   }
-  if (speed.empty()) return kMinimum;
+  if (speed.empty()) return 0.0;
   std::nth_element(speed.begin(), speed.begin() + speed.size() / 2, speed.end());
   const double median = speed[speed.size() / 2];
-  return median > 0 ? std::max(kMinimum, std::round(1.5 * info.length_m / median)) : kMinimum;
+  return median > 0 ? info.length_m / median : 0.0;
+}
+
+double AutomaticSegmentSeconds(const Dataset& data, const VesselInfo& info) {
+  constexpr double kMinimum = 10.0;
+  const double hull = HullLengthSeconds(data, info);
+  return hull > 0 ? std::max(kMinimum, std::round(1.5 * hull)) : kMinimum;
 }
 
 }  // namespace usvid

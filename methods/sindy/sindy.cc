@@ -7,6 +7,8 @@
 #include "core/error.h"
 #include "core/expression.h"
 #include "core/parse_number.h"
+#include "core/stretches.h"
+#include "methods/sindy/weak_form.h"
 #include "preprocessing/splits.h"
 
 namespace usvid::sindy {
@@ -98,6 +100,9 @@ void CheckOptions(const SindyOptions& o) {
                      std::to_string(o.max_iterations));
   if (!(std::isfinite(o.ridge) && o.ridge >= 0))
     throw InputError("sindy: ridge must be finite and >= 0, not " + FormatNumber(o.ridge));
+  if (!(std::isfinite(o.weak_window_s) && o.weak_window_s >= 0))
+    throw InputError("sindy: the weak-form window must be finite and >= 0 s, not " +
+                     FormatNumber(o.weak_window_s));
   for (double t : o.thresholds)
     if (!(std::isfinite(t) && t >= 0))
       throw InputError("sindy: a threshold must be finite and >= 0, not " + FormatNumber(t));
@@ -137,29 +142,53 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
   for (const auto& names : {variables, inputs})
     for (const std::string& n : names) CheckChannel(data, n);
   for (const std::string& s : states) CheckChannel(data, s + "_dot");
-  const Eigen::Index rows = data.rows();
-  if (rows < 10L * options.folds)
-    throw InputError("sindy: " + std::to_string(rows) + " rows are too few for " +
-                     std::to_string(options.folds) + " folds (at least 10 rows a fold)");
   const RegressorLibrary lib =
       BuildLibrary(Signals(data, variables), Signals(data, inputs), options.library);
   if (lib.names.empty()) throw InputError("sindy: the candidate library is empty");
+
+  // The rows regressed: the grid's, or one per weak-form window (methods/sindy/weak_form.h).
+  const bool weak = options.weak_window_s > 0;
+  WeakWindows windows;
+  if (weak) {
+    windows = MakeWeakWindows(data.t(), WeakWindowRows(data.t(), options.weak_window_s));
+  }
+  const Eigen::MatrixXd weak_columns = weak ? WeakColumns(windows, lib.columns) : Eigen::MatrixXd();
+  const Eigen::MatrixXd& columns = weak ? weak_columns : lib.columns;
+  const auto target = [&](const std::string& state) -> Eigen::VectorXd {
+    if (!weak) return data[state + "_dot"];
+    const std::string raw = state + "_raw";
+    return WeakTarget(windows, data.Has(raw) ? data[raw] : data[state]);
+  };
+  const Eigen::Index rows = columns.rows();
+  if (rows < 10L * options.folds)
+    throw InputError("sindy: " + std::to_string(rows) + (weak ? " weak-form windows" : " rows") +
+                     " are too few for " + std::to_string(options.folds) +
+                     " folds (at least 10 a fold)");
 
   std::vector<double> thresholds =
       options.thresholds.empty() ? DefaultThresholds() : options.thresholds;
   std::sort(thresholds.begin(), thresholds.end());
   thresholds.erase(std::unique(thresholds.begin(), thresholds.end()), thresholds.end());
-  const std::vector<Fold> folds = BlockFolds(rows, options.folds);
+  // Each record (or stretch between gaps) is cut into the folds' blocks, so every fold holds
+  // out a share of every maneuver.
+  std::vector<RowRange> pieces;
+  if (weak) {
+    pieces = windows.stretches;
+  } else {
+    for (const Stretch& s : Stretches(data.t(), kGridGapFactor))
+      pieces.emplace_back(s.first, s.end);
+  }
+  const std::vector<Fold> folds = BlockFolds(pieces, options.folds);
   const auto fit = [&](const ScaledProblem& p, double threshold) {
     return Solve(p, threshold, options.ridge, options.max_iterations);
   };
 
   SindyIdentification out;
   for (const std::string& state : states) {
-    const Eigen::VectorXd& y = data[state + "_dot"];
+    const Eigen::VectorXd y = target(state);
     std::vector<ScaledProblem> train;
-    for (const Fold& f : folds) train.push_back(MakeProblem(lib.columns, y, f.train));
-    const ScaledProblem all = MakeProblem(lib.columns, y, {{0, rows}});
+    for (const Fold& f : folds) train.push_back(MakeProblem(columns, y, f.train));
+    const ScaledProblem all = MakeProblem(columns, y, {{0, rows}});
 
     // Mean held-out MSE and its standard error over the folds, per threshold.
     const auto k = static_cast<double>(folds.size());
@@ -168,12 +197,15 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
     for (size_t t = 0; t < thresholds.size(); ++t) {
       Eigen::VectorXd mse(static_cast<Eigen::Index>(folds.size()));
       for (size_t f = 0; f < folds.size(); ++f) {
-        const auto [begin, end] = folds[f].held_out;
         const Eigen::VectorXd w = fit(train[f], thresholds[t]);
-        mse(static_cast<Eigen::Index>(f)) =
-            (y.segment(begin, end - begin) - lib.columns.middleRows(begin, end - begin) * w)
-                .squaredNorm() /
-            static_cast<double>(end - begin);
+        double sse = 0.0;
+        Eigen::Index held = 0;
+        for (const auto& [begin, end] : folds[f].held_out) {
+          sse += (y.segment(begin, end - begin) - columns.middleRows(begin, end - begin) * w)
+                     .squaredNorm();
+          held += end - begin;
+        }
+        mse(static_cast<Eigen::Index>(f)) = sse / static_cast<double>(held);
       }
       mean[t] = mse.mean();
       se[t] = std::sqrt((mse.array() - mean[t]).square().sum() / (k - 1) / k);
@@ -197,7 +229,7 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
       terms.push_back(name);
     }
     out.equations[state] = WeightedSumText(lib.names, w);
-    const double ssr = (y - lib.columns * w).squaredNorm();
+    const double ssr = (y - columns * w).squaredNorm();
     const double sst = (y.array() - y.mean()).square().sum();
     out.details[state] = {{"threshold", thresholds[chosen]},
                           {"min_error_threshold", thresholds[best]},
@@ -207,7 +239,12 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
                           {"thresholds", path},
                           {"terms", terms},
                           {"library", lib.names},
-                          {"r2_train", sst > 0 ? 1.0 - ssr / sst : 0.0}};
+                          {"r2_train", sst > 0 ? 1.0 - ssr / sst : 0.0},
+                          {"form", weak ? "weak" : "derivative"}};
+    if (weak) {
+      out.details[state]["weak_window_s"] = options.weak_window_s;
+      out.details[state]["weak_windows"] = rows;
+    }
   }
   return out;
 }

@@ -10,7 +10,12 @@
 // per state by k-fold cross-validation over contiguous blocks of the series
 // (preprocessing/splits.h, never random samples): the one with the smallest mean held-out
 // derivative MSE, or the largest (sparsest) whose mean is within one standard error of that (the
-// 1-SE rule); the model is refitted on all rows with it.
+// 1-SE rule); the model is refitted on all rows with it. Over several records (or stretches
+// between gaps) each is cut into the folds' blocks, so every fold holds out a share of each.
+//
+// With SindyOptions::weak_window_s > 0 the rows regressed are not the grid's derivatives but the
+// weak form over windows of that length (methods/sindy/weak_form.h): the same coefficients,
+// from the measured state without differentiating it.
 //
 // Units: a coefficient is in the derivative's units over the term's (1/s for u' on u, 1/kg for
 // u' on tau_x [N]); thresholds are dimensionless (fractions of the target's RMS per unit-RMS
@@ -21,8 +26,9 @@
 // they parse with core/expression.h and evaluate to PredictWithSindy (to rounding: the parser
 // multiplies c*v*r as (c*v)*r).
 //
-// Throws InputError for a missing or non-finite channel, fewer rows than folds x 10, folds < 2,
-// max_iterations < 1, a negative or non-finite ridge or threshold, no states, or an empty library.
+// Throws InputError for a missing or non-finite channel, fewer rows (or weak-form windows) than
+// folds x 10, folds < 2, max_iterations < 1, a negative or non-finite ridge, threshold or
+// window, no states, or an empty library.
 #pragma once
 
 #include <string_view>
@@ -56,6 +62,9 @@ struct SindyOptions {
   // threshold with the smallest held-out error.
   bool one_standard_error = true;
   int max_iterations = 20;
+  // > 0: regress the weak form over windows of this length [s] (methods/sindy/weak_form.h)
+  // instead of the derivatives; 0: the derivatives "<state>_dot".
+  double weak_window_s = 0.0;
 };
 
 struct SindyIdentification {

@@ -1,6 +1,7 @@
 // `sindy`: sparse regression on a library of terms (methods/sindy/sindy.h), registered in
 // methods/method_list.h.
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "core/error.h"
@@ -10,6 +11,8 @@
 #include "methods/method.h"
 #include "methods/regime_features.h"
 #include "methods/sindy/sindy.h"
+#include "methods/sindy/weak_form.h"
+#include "simulation/segment_length.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -29,6 +32,12 @@ std::vector<OptionSpec> SindyOptionSpecs() {
                    "relative ridge during thresholding, at least the squared relative noise of "
                    "the library's columns"),
       IntegerOption("folds", d.folds, 2, 1000, "contiguous-block folds that choose the threshold"),
+      NumberOption("weak_window_s", std::nullopt, 0, kUnbounded,
+                   "seconds: regress the weak (integral) form over overlapping windows of this "
+                   "length, which takes no derivative of the data (for velocities that jump, "
+                   "e.g. from GPS); 0: the derivatives; none: the derivatives, and where they "
+                   "cut every term of an equation, the weak form over one hull length of travel "
+                   "(a vessel with a length; shortened to leave 10 windows a fold)"),
       ListOption("library", {"constant", "products", "abs"},
                  {"constant", "products", "abs", "inputs"},
                  "the candidate terms besides each variable and input: constant, products "
@@ -77,14 +86,32 @@ std::string EmptyEquationError(const std::string& state, const nlohmann::json& d
         << FormatNumber(least->at("heldout_mse").get<double>()) << " with "
         << least->at("terms").get<int>() << " terms, is within one standard error of none";
   }
-  s << "; the derivative may be mostly noise at this record's precision: try a smoother "
-       "--derivative (sg:41:3), a smaller --threshold, or more data";
+  s << "; the derivative may be mostly noise at this record's precision: try the weak form "
+       "(--weak-window-s, e.g. the time of one hull length of travel), a smaller --threshold, or "
+       "more data";
   return s.str();
+}
+
+// The weak form's fallback window: one hull length of travel at the record's median speed (the
+// time over which the vessel's state changes; docs/baselines.md#the-weak-form), shortened to
+// leave 10 windows a fold; 0 for a vessel without a length, or no vessel.
+double HullWindowSeconds(const Dataset& prepared, const IdentifyRequest& request, int folds) {
+  if (request.vessel.empty()) return 0.0;
+  const double hull = HullLengthSeconds(prepared, FindVessel(request.vessel).Info());
+  return hull > 0 ? sindy::LongestWeakWindow(prepared.t(), hull, 10L * folds) : 0.0;
+}
+
+// The first state whose every term was cut, or "".
+std::string EmptyState(const sindy::SindyIdentification& id,
+                       const std::vector<std::string>& states) {
+  for (const std::string& state : states)
+    if (id.details.at(state).at("terms").empty()) return state;
+  return "";
 }
 
 nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& request,
                                   const MethodOptions& o, const Logger& log) {
-  const sindy::SindyOptions options = SindyOptionsFor(o);
+  sindy::SindyOptions options = SindyOptionsFor(o);
   ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request), log);
   const double froude_per_speed =
       request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);
@@ -100,11 +127,27 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
     library_inputs.push_back(f.Column());
     features_json[f.name] = f.expression;
   }
-  const sindy::SindyIdentification id = sindy::IdentifyWithSindy(
-      fit.prepared, fit.channels.states, fit.channels.variables, library_inputs, options);
-  for (const std::string& state : fit.channels.states)
-    if (id.details.at(state).at("terms").empty())
-      throw InputError(EmptyEquationError(state, id.details.at(state), o.Has("threshold")));
+  const auto identify = [&] {
+    return sindy::IdentifyWithSindy(fit.prepared, fit.channels.states, fit.channels.variables,
+                                    library_inputs, options);
+  };
+  const bool given = o.Has("weak_window_s");
+  if (given) options.weak_window_s = o.Number("weak_window_s");
+  sindy::SindyIdentification id = identify();
+  std::string empty = EmptyState(id, fit.channels.states);
+  // The derivatives could not support an equation: the weak form, which takes none.
+  if (!given && !empty.empty()) {
+    options.weak_window_s = HullWindowSeconds(fit.prepared.data, request, options.folds);
+    if (options.weak_window_s > 0) {
+      Log(log, "sindy: every term of " + empty + "' was cut from the derivatives; the weak form " +
+                   "over " + FormatNumber(std::round(options.weak_window_s * 10) / 10) +
+                   " s windows instead");
+      id = identify();
+      empty = EmptyState(id, fit.channels.states);
+    }
+  }
+  if (!empty.empty())
+    throw InputError(EmptyEquationError(empty, id.details.at(empty), o.Has("threshold")));
   fit.model["parameters"] = id.parameters;
   fit.model["equations"] = id.equations;
   fit.model["sindy"] = id.details;

@@ -138,18 +138,19 @@ TEST_F(Kvlcc2MarinTest, MethodsOnTheHeldOutManeuvers) {
                "/docs/studies/kvlcc2-marin.json --baseline " + baseline_file + " --out " + out);
   ASSERT_EQ(r.exit_code, 0) << "compare --baseline found a worse group: " << r.err;
   const nlohmann::json results = ReadJsonFile(out + "/results.json");
-  std::map<std::pair<std::string, std::string>, double> mean_fit;
+  std::map<std::pair<std::string, std::string>, double> mean_fit, first_overshoot_error;
   for (const auto& row : results.at("rows")) {
-    if (row.at("method") == "sindy") {
-      // Issue 38: u', logged to three digits, is noise to every candidate term; SINDy says so
-      // instead of returning "u' = 0" (docs/real-data.md).
-      EXPECT_THAT(row.at("status").get<std::string>(),
-                  ::testing::HasSubstr("failed: sindy: every term of u' was cut"));
-      continue;
-    }
     ASSERT_EQ(row.at("status"), "ok") << row.dump();
     mean_fit[{row.at("method"), row.at("test_maneuver")}] = row.at("mean_fit_percent");
+    if (row.at("test_maneuver") == "zigzag -20/20")
+      first_overshoot_error[{row.at("method"), row.at("seed").dump()}] =
+          std::abs(row.at("closed_loop").at("first_overshoot_error_deg").get<double>());
   }
+  // Issue 38: u', logged to three digits, is noise to every candidate term in the derivatives;
+  // SINDy falls back to the weak form over one hull length of travel, which keeps terms in all
+  // three equations, and its closed-loop first overshoot on the held-out zig-zag is closer
+  // than the published MMG model's (0.17 against 2.53 deg; docs/real-data.md).
+  EXPECT_LT(first_overshoot_error.at({"sindy", "1"}), first_overshoot_error.at({"nominal", "1"}));
   // The hybrid (refit plus the u^2-scaled yaw moment it finds on zz_20) is above refit on both
   // held-out tests: 89.0 against 83.9 on the other zig-zag, 83.6 against 82.1 on the turning
   // circle (docs/real-data.md).
