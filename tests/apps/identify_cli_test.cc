@@ -293,6 +293,45 @@ TEST_F(IdentifyCliTest, SeveralRecordsAreFittedJointly) {
   EXPECT_FALSE(fs::exists(missing));
 }
 
+// evaluate over several records scores each on its own, as evaluating it alone does (no free
+// run crosses from one record into the next), lists them in order and gives per state the
+// median fit % over the records; its figures are one per record.
+TEST_F(IdentifyCliTest, EvaluateScoresEachOfSeveralRecordsOnItsOwn) {
+  const std::string a = (dir_ / "a.csv").string(), b = (dir_ / "b.csv").string(),
+                    c = (dir_ / "c.csv").string(), model = (dir_ / "m.json").string();
+  for (const auto& [file, seed] : {std::pair{a, 4}, std::pair{b, 5}, std::pair{c, 6}})
+    ASSERT_EQ(RunUsvid("simulate --vessel msd --maneuver random-steps --duration 100 --noise 0.01 "
+                       "--seed " +
+                       std::to_string(seed) + " --out " + file)
+                  .exit_code,
+              0);
+  ASSERT_EQ(
+      RunUsvid("identify --method sindy --vessel msd --data " + a + " --out " + model).exit_code,
+      0);
+  const auto alone = [&](const std::string& file) {
+    const auto r = RunUsvid("evaluate --model " + model + " --data " + file);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto out = (dir_ / "eval").string();
+  const auto r = RunUsvid("evaluate --model " + model + " --data " + b + "," + c + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = ReadJsonFile(out + "/metrics.json");
+  ASSERT_EQ(m.at("records").size(), 2u);
+  std::vector<double> v_fits;
+  for (const auto& [i, file] : {std::pair{0, b}, std::pair{1, c}}) {
+    const nlohmann::json& record = m.at("records").at(i);
+    EXPECT_EQ(record.at("data"), file);
+    EXPECT_EQ(record.at("channels"), alone(file).at("channels")) << file;
+    v_fits.push_back(record.at("channels").at("v").at("fit_percent").get<double>());
+  }
+  EXPECT_EQ(m.at("summary").at("records"), 2);
+  EXPECT_EQ(m.at("summary").at("diverged"), 0);
+  EXPECT_DOUBLE_EQ(m.at("summary").at("median_fit_percent").at("v").get<double>(),
+                   0.5 * (v_fits[0] + v_fits[1]));
+  EXPECT_TRUE(fs::exists(out + "/free_run_1.svg") && fs::exists(out + "/free_run_2.svg"));
+}
+
 TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
   const auto out = (dir_ / "bad.json").string();
   const std::vector<std::pair<std::string, std::string>> cases = {

@@ -127,6 +127,14 @@ const Malformed kCatalogue[] = {
     {"model_unknown_vessel", "evaluate --model {D}/model_vessel.json --data {D}/good.csv",
      "titanic"},
     {"model_missing", "evaluate --model {D}/none.json --data {D}/good.csv", "none.json"},
+    // Several records to score: a bad one leaves no output, and a maneuver is one record's.
+    {"evaluate_bad_record_in_list",
+     "evaluate --model {D}/model.json --data {D}/good.csv,{D}/text.csv --out {OUT}",
+     "text.csv:3:3"},
+    {"evaluate_maneuver_of_several_records",
+     "evaluate --model {D}/model.json --data {D}/good.csv,{D}/good.csv --maneuver zigzag:20/20 "
+     "--out {OUT}",
+     "--maneuver names the maneuver of one record"},
     // Suite JSON.
     {"suite_unknown_field", "compare --suite {D}/suite_unknown.json --out {OUT}", "colour"},
     {"suite_wrong_type", "compare --suite {D}/suite_types.json --out {OUT}", "vessels"},
