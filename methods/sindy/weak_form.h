@@ -6,7 +6,7 @@
 // the measured x is only averaged (by phi_k'), so noise in x that a derivative amplifies (a GPS
 // velocity that jumps after a dropout) is smoothed over the window instead. One row per window;
 // windows overlap by half and never cross a gap (core/stretches.h), so records fitted jointly
-// stay apart. docs/sindy.md#the-weak-form says when to use it and how the window is chosen.
+// stay apart. docs/baselines.md#the-weak-form says when to use it and how the window is chosen.
 //
 // phi(s) = (1 - s^2)^4 on s in [-1, 1] (s = the window's time scaled to [-1, 1]): zero with its
 // first three derivatives at both ends, so the integration by parts has no boundary terms and
