@@ -46,7 +46,7 @@ std::string HeldoutFigure(const Diagnosis& d) {
   for (const std::string& c : d.channels) {
     LinePlot p;
     p.SetYLabel(c)
-        .AddSeries("measured", d.series.t, d.series.measured.at(c))
+        .AddSeries("measured", d.series.t, d.series.measured.at(c), SeriesStyle::Measured())
         .AddSeries(std::string(kNominalMethodName), d.series.t, d.series.nominal.at(c));
     if (d.cause_effect) p.AddSeries("extended", d.series.t, d.series.extended.at(c));
     grid.Add(std::move(p));

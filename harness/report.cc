@@ -9,6 +9,7 @@
 #include "harness/markdown_html.h"
 #include "metrics/evaluation.h"
 #include "metrics/rank_tests.h"
+#include "plot/colors.h"
 #include "plot/figure_grid.h"
 #include "plot/heat_map.h"
 #include "plot/svg_text.h"
@@ -77,15 +78,22 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
         channels.insert(c);
   FigureGrid grid;
   grid.SetTitle(vessel + ", held-out " + test + ": measured and free runs").SetXLabel("t", "s");
+  // Each method keeps its colour in every panel, also where another method has no such channel.
+  std::map<std::string, SeriesStyle> styles;
+  for (const auto& [method, e] : runs) {
+    SeriesStyle style = SeriesStyle::Dashed();
+    style.color = std::string(svg::SeriesColor(styles.size()));
+    styles[method] = style;
+  }
   for (const std::string& c : channels) {
     if (!held.Has(c)) continue;
     LinePlot p;
-    p.SetYLabel(c).AddSeries("measured", held.t(), held[c]);
+    p.SetYLabel(c).AddSeries("measured", held.t(), held[c], SeriesStyle::Measured());
     for (const auto& [method, e] : runs)
       if (e.run.simulated.Has(c))
         p.AddSeries(method + " (trained on " + chosen[method]->train_maneuver + ")" +
                         (e.run.diverged ? ", diverged" : ""),
-                    held.t(), e.run.simulated[c], SeriesStyle::Dashed());
+                    held.t(), e.run.simulated[c], styles.at(method));
     grid.Add(std::move(p));
   }
   return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));

@@ -18,6 +18,15 @@ struct SeriesStyle {
   double marker_radius = 2.5;  // [px]
 
   static SeriesStyle Solid() { return {}; }
+  // Measured data: a grey line a little wider than the models', outside the palette, so that
+  // no model's colour can be taken for the data however many series follow (the palette's
+  // first colour came round again at the eighth series: SINDy's line in the KVLCC2 study).
+  static SeriesStyle Measured() {
+    SeriesStyle s;
+    s.color = "#7f7f7f";
+    s.line_width = 2.0;
+    return s;
+  }
   static SeriesStyle Dashed() {
     SeriesStyle s;
     s.dash = Dash::kDashed;

@@ -81,7 +81,7 @@ void WriteFreeRun(const nlohmann::json& model, const std::string& path, const Sc
     ++panels;
     LinePlot p;
     p.SetYLabel(state)
-        .AddSeries("measured", r.data.t(), r.data[state])
+        .AddSeries("measured", r.data.t(), r.data[state], SeriesStyle::Measured())
         .AddSeries("model", r.data.t(), r.evaluation.run.simulated[state]);
     grid.Add(std::move(p));
   }

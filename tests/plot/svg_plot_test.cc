@@ -217,6 +217,20 @@ TEST_F(LinePlotTest, SeriesTakeDistinctColours) {
   EXPECT_EQ(svg_inspect::SeriesElements(doc, "gray", "path")[0]->Attr("stroke"), "#777777");
 }
 
+// Measured data drawn with SeriesStyle::Measured keep a colour no model series takes, even
+// when the models outnumber the palette (the KVLCC2 study plots the data and eight models).
+TEST_F(LinePlotTest, MeasuredDataKeepAColourNoModelTakes) {
+  const std::vector<double> x = {0, 1};
+  plot_.AddSeries("measured", x, x, SeriesStyle::Measured());
+  for (int i = 0; i < 9; ++i) plot_.AddSeries("m" + std::to_string(i), x, x, SeriesStyle::Dashed());
+  const xml_check::Document doc = Render();
+  const std::string data = svg_inspect::SeriesElements(doc, "measured", "path")[0]->Attr("stroke");
+  for (int i = 0; i < 9; ++i)
+    EXPECT_NE(svg_inspect::SeriesElements(doc, "m" + std::to_string(i), "path")[0]->Attr("stroke"),
+              data)
+        << i;
+}
+
 // A fixed y range is kept as the axis limits; the data beyond it are clipped to the plot area.
 TEST_F(LinePlotTest, FixedYRangeIsKeptAndDataAreClipped) {
   const std::vector<double> x = {0, 1, 2};
