@@ -154,11 +154,6 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
   }
   const Eigen::MatrixXd weak_columns = weak ? WeakColumns(windows, lib.columns) : Eigen::MatrixXd();
   const Eigen::MatrixXd& columns = weak ? weak_columns : lib.columns;
-  const auto target = [&](const std::string& state) -> Eigen::VectorXd {
-    if (!weak) return data[state + "_dot"];
-    const std::string raw = state + "_raw";
-    return WeakTarget(windows, data.Has(raw) ? data[raw] : data[state]);
-  };
   const Eigen::Index rows = columns.rows();
   if (rows < 10L * options.folds)
     throw InputError("sindy: " + std::to_string(rows) + (weak ? " weak-form windows" : " rows") +
@@ -185,7 +180,13 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
 
   SindyIdentification out;
   for (const std::string& state : states) {
-    const Eigen::VectorXd y = target(state);
+    // The derivative, or its weak counterpart from the raw (unsmoothed) state.
+    Eigen::VectorXd weak_y;
+    if (weak) {
+      const std::string raw = state + "_raw";
+      weak_y = WeakTarget(windows, data.Has(raw) ? data[raw] : data[state]);
+    }
+    const Eigen::VectorXd& y = weak ? weak_y : data[state + "_dot"];
     std::vector<ScaledProblem> train;
     for (const Fold& f : folds) train.push_back(MakeProblem(columns, y, f.train));
     const ScaledProblem all = MakeProblem(columns, y, {{0, rows}});

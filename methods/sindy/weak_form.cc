@@ -47,15 +47,10 @@ Eigen::Index WeakWindowRows(const Eigen::VectorXd& t, double seconds) {
 }
 
 double LongestWeakWindow(const Eigen::VectorXd& t, double seconds, Eigen::Index min_windows) {
-  const std::vector<Stretch> stretches = Stretches(t, kGridGapFactor);
   const double dt = t.size() < 2 ? 1.0 : MedianInterval(t);
-  for (Eigen::Index rows = WeakWindowRows(t, seconds); rows >= 5; rows -= 2) {
-    const Eigen::Index half = rows / 2;
-    Eigen::Index count = 0;
-    for (const Stretch& s : stretches)
-      if (s.rows() >= rows) count += (s.rows() - rows) / half + 1;
-    if (count >= min_windows) return static_cast<double>(rows - 1) * dt;
-  }
+  for (Eigen::Index rows = WeakWindowRows(t, seconds); rows >= 5; rows -= 2)
+    if (static_cast<Eigen::Index>(MakeWeakWindows(t, rows).windows.size()) >= min_windows)
+      return static_cast<double>(rows - 1) * dt;
   return 0.0;
 }
 
