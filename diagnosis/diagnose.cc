@@ -297,7 +297,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
                    std::ostream* log) {
   const auto start = std::chrono::steady_clock::now();
   const VesselSimulator& sim = FindVessel(vessel);
-  const EffectFitter& fitter = FindEffectFitter(vessel);
+  const EffectFitter& fitter = FindEffectFitter(sim.Info().type);
   MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
   d.base = ValuesOf(options.base_effects, sim.Info().inputs, sim.Info().states);
   const Context cx{sim, fitter, params, options, log};

@@ -133,7 +133,8 @@ double HullLength(const nlohmann::json& model) {
       !model.at("vessel").get<std::string>().empty()) {
     const std::string vessel = model.at("vessel").get<std::string>();
     const std::vector<std::string> known = VesselNames();
-    if (std::ranges::find(known, vessel) != known.end() && FindVessel(vessel).Info().length_m > 0)
+    if ((std::ranges::find(known, vessel) != known.end() || IsVesselFile(vessel)) &&
+        FindVessel(vessel).Info().length_m > 0)
       length = FindVessel(vessel).Info().length_m;
   }
   return model.value("length_m", length);

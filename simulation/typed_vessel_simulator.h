@@ -91,6 +91,8 @@ class TypedVesselSimulator : public VesselSimulator {
     if constexpr (requires { V::FroudeNumber(speed); }) {
       return V::FroudeNumber(speed);
     } else {
+      // A vessel whose length is known only at run time (a vessel file).
+      if (info_.length_m > 0) return speed / std::sqrt(9.81 * info_.length_m);
       return std::nullopt;
     }
   }

@@ -1,13 +1,17 @@
 // The vessels usvid knows: one entry a vessel, with what maneuvers need to drive it.
 
 #include <algorithm>
+#include <iostream>
 #include <map>
+#include <mutex>
 
 #include "core/error.h"
 #include "core/json_file.h"
 #include "simulation/typed_vessel_simulator.h"
+#include "simulation/vessel_file.h"
 #include "simulators/eb2dof.h"
 #include "simulators/kvlcc2.h"
+#include "simulators/mmg.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
 #include "simulators/odin_hs.h"
@@ -35,6 +39,7 @@ template <Vessel V>
 VesselInfo InfoFor(std::vector<InputRole> roles, const Actuation& extra) {
   VesselInfo info;
   info.name = std::string(V::kName);
+  info.type = info.name;
   for (auto s : V::kStateNames) info.states.emplace_back(s);
   for (auto s : V::kInputNames) info.inputs.emplace_back(s);
   for (auto s : V::kParamNames) info.params.emplace_back(s);
@@ -103,7 +108,36 @@ const std::map<std::string, std::unique_ptr<VesselSimulator>>& Registry() {
   return *registry;
 }
 
+// A vessel file's vessel: the Mmg type with the file's parameters and controls.
+std::unique_ptr<VesselSimulator> MakeFromFile(const std::string& path) {
+  const VesselFile file = ReadVesselFile(path);
+  VesselInfo info = InfoFor<Mmg>({InputRole::kYaw, InputRole::kThrust}, file.actuation);
+  info.name = file.name;
+  info.default_params = file.params;
+  info.length_m = file.length_m;
+  std::cerr << "usvid: vessel " << file.name << " (" << path << "): " << file.estimated.size()
+            << " coefficients not given, estimated from the particulars "
+               "(docs/model.md#vessel-files)\n";
+  for (const std::string& w : file.warnings) std::cerr << "warning: " << path << ": " << w << "\n";
+  return std::make_unique<TypedVesselSimulator<Mmg>>(std::move(info));
+}
+
+const VesselSimulator& FileVessel(const std::string& path) {
+  static std::mutex mutex;
+  static auto* files = new std::map<std::string, std::unique_ptr<VesselSimulator>>;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto it = files->find(path);
+  if (it == files->end()) it = files->emplace(path, MakeFromFile(path)).first;
+  return *it->second;
+}
+
 }  // namespace
+
+bool IsVesselFile(const std::string& name) {
+  for (const char* ext : {".yaml", ".yml", ".json"})
+    if (name.size() > std::string(ext).size() && name.ends_with(ext)) return true;
+  return false;
+}
 
 int VesselInfo::StateIndex(const std::string& state) const {
   const auto it = std::find(states.begin(), states.end(), state);
@@ -136,10 +170,12 @@ std::vector<double> VesselInfo::ParamsFromFile(const std::string& path) const {
 const VesselSimulator& FindVessel(const std::string& name) {
   const auto& r = Registry();
   const auto it = r.find(name);
+  if (it == r.end() && IsVesselFile(name)) return FileVessel(name);
   if (it == r.end()) {
     std::string known;
     for (const auto& [n, _] : r) known += (known.empty() ? "" : ", ") + n;
-    throw InputError("--vessel '" + name + "': unknown vessel (known: " + known + ")");
+    throw InputError("--vessel '" + name + "': unknown vessel (known: " + known +
+                     "; or a vessel file, .yaml or .json: docs/model.md#vessel-files)");
   }
   return *it->second;
 }
@@ -148,6 +184,12 @@ std::vector<std::string> VesselNames() {
   std::vector<std::string> names;
   for (const auto& [n, _] : Registry()) names.push_back(n);
   return names;
+}
+
+std::string VesselChoices() {
+  std::string names;
+  for (const std::string& n : VesselNames()) names += n + ", ";
+  return names + "or a vessel file (.yaml or .json: docs/model.md#vessel-files)";
 }
 
 }  // namespace usvid

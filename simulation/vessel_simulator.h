@@ -20,6 +20,9 @@ namespace usvid {
 
 struct VesselInfo {
   std::string name;
+  // The compiled vessel type whose dynamics run it (simulators/vessel_types.h): the name itself
+  // for the compiled-in vessels, "mmg" for a vessel file.
+  std::string type;
   std::vector<std::string> states;   // the integrated states, in order
   std::vector<std::string> derived;  // channels computed from the states (U, chi)
   std::vector<std::string> inputs;
@@ -71,8 +74,16 @@ class VesselSimulator {
   virtual std::optional<double> FroudeNumber(double speed) const = 0;
 };
 
-// Throws InputError listing the known vessels.
+// A compiled-in vessel by name, or a vessel file (simulation/vessel_file.h) by its path: a
+// name ending in .yaml, .yml or .json. A file is read once and kept; its estimated coefficients
+// and warnings go to stderr then. Throws InputError listing the known vessels, or naming the
+// file's fault.
 const VesselSimulator& FindVessel(const std::string& name);
+// The compiled-in vessels.
 std::vector<std::string> VesselNames();
+// What --vessel takes, for help texts: "eb2dof, kvlcc2, ..., or a vessel file (...)".
+std::string VesselChoices();
+// Whether `name` names a vessel file (by its extension; the file may not exist).
+bool IsVesselFile(const std::string& name);
 
 }  // namespace usvid

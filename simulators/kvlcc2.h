@@ -37,12 +37,12 @@
 #include <cmath>
 #include <string_view>
 
-#include "simulators/scalar.h"
+#include "simulators/mmg_forces.h"
 #include "simulators/vessel.h"
 
 namespace usvid {
 
-struct Kvlcc2 {
+struct Kvlcc2 : MmgCoefficients {
   static constexpr std::string_view kName = "kvlcc2";
   static constexpr int kStates = 6, kInputs = 2, kParams = 37;
   static constexpr std::array<std::string_view, kStates> kStateNames = {"north", "east", "psi",
@@ -76,18 +76,9 @@ struct Kvlcc2 {
   static constexpr std::array<std::string_view, 5> kRefitParams = {"R_0", "Y_v", "Y_r", "N_v",
                                                                    "N_r"};
   static constexpr bool kSpeedScaledForces = true;  // MMG: forces 1/2 rho L d U^2 X'(v', r')
-  static constexpr double kRunInS = 7200.0;  // [s] from rest to steady speed (closed_loop.h)
-  static constexpr double kEps = 1e-6;       // [m/s] keeps U and J_P finite at rest
+  static constexpr double kRunInS = 7200.0;         // [s] from rest to steady speed (closed_loop.h)
 
-  // clang-format off
-  static constexpr std::array<std::string_view, kParams> kParamNames = {
-      "m", "I_zG", "m_x", "m_y", "J_z",
-      "R_0", "X_vv", "X_vr", "X_rr", "X_vvvv",
-      "Y_v", "Y_r", "Y_vvv", "Y_vvr", "Y_vrr", "Y_rrr",
-      "N_v", "N_r", "N_vvv", "N_vvr", "N_vrr", "N_rrr",
-      "t_P", "w_P0", "k_0", "k_1", "k_2", "C_1", "C_2_pos", "C_2_neg",
-      "t_R", "a_H", "x_H", "gamma_R_neg", "gamma_R_pos", "l_R", "epsilon", /* 37 */};
-  // clang-format on
+  static constexpr std::array<std::string_view, kParams> kParamNames = MmgCoefficients::kNames;
   static constexpr std::array<double, kParams> kDefaultParams = {
       // --- inertia (table 1, 2): m = rho * 312600 m^3; I_zG = m (0.25 Lpp)^2 ---
       320415000.0, 2.0506560e12, 0.022, 0.223, 0.011,
@@ -105,152 +96,27 @@ struct Kvlcc2 {
   static constexpr double kFAlpha = 2.747;  // [-] rudder lift slope, aspect ratio 1.827 (table 5)
   static constexpr std::array<ParamGroup, kParams> kParamGroups = [] {
     std::array<ParamGroup, kParams> g{};
-    for (int i = 0; i < kParams; ++i)
-      g[i] = i < 5    ? ParamGroup::kInertia
-             : i == 5 ? ParamGroup::kResistance  // R_0
-             : i < 22 ? ParamGroup::kDamping
-                      : ParamGroup::kOther;
+    for (int i = 0; i < kParams; ++i) g[i] = MmgCoefficients::Group(i);
     return g;
   }();
-  // Parameter indices, in kParamNames order.
-  enum Param {
-    kM,
-    kIzG,
-    kMx,
-    kMy,
-    kJz,
-    kR0,
-    kXvv,
-    kXvr,
-    kXrr,
-    kXvvvv,
-    kYv,
-    kYr,
-    kYvvv,
-    kYvvr,
-    kYvrr,
-    kYrrr,
-    kNv,
-    kNr,
-    kNvvv,
-    kNvvr,
-    kNvrr,
-    kNrrr,
-    kTP,
-    kWP0,
-    kK0,
-    kK1,
-    kK2,
-    kC1,
-    kC2Pos,
-    kC2Neg,
-    kTR,
-    kAH,
-    kXH,
-    kGammaRNeg,
-    kGammaRPos,
-    kLR,
-    kEpsilon
-  };
+  static constexpr MmgParticulars kParticulars{
+      kRho,        kLength,  kDraft, kXG,    kPropellerDiameter, kRudderArea, kRudderSpan,
+      kXPropeller, kXRudder, kKappa, kFAlpha};
 
   // Surge, sway and yaw forces [N, N, N m] of hull, propeller and rudder on relative velocities;
   // delta in the MMG sign (positive turns to starboard).
   template <typename T>
   static void Forces(const T& u, const T& v, const T& r, const T& delta, const T& rev, const T* p,
                      T* f) {
-    using std::abs;
-    using std::atan2;
-    using std::cos;
-    using std::exp;
-    using std::sin;
-    using std::sqrt;
-    const double L = kLength, d = kDraft, q = 0.5 * kRho;
-    const T U = sqrt(u * u + v * v + T(kEps * kEps));
-    const T vn = v / U, rn = r * L / U;
-    const T U2 = U * U;
-    const T vn2 = vn * vn, rn2 = rn * rn;
-    const T X_H =
-        q * L * d * U2 *
-        (-p[kR0] + p[kXvv] * vn2 + p[kXvr] * vn * rn + p[kXrr] * rn2 + p[kXvvvv] * vn2 * vn2);
-    const T Y_H = q * L * d * U2 *
-                  (p[kYv] * vn + p[kYr] * rn + p[kYvvv] * vn2 * vn + p[kYvvr] * vn2 * rn +
-                   p[kYvrr] * vn * rn2 + p[kYrrr] * rn2 * rn);
-    const T N_H = q * L * L * d * U2 *
-                  (p[kNv] * vn + p[kNr] * rn + p[kNvvv] * vn2 * vn + p[kNvvr] * vn2 * rn +
-                   p[kNvrr] * vn * rn2 + p[kNrrr] * rn2 * rn);
-
-    // Propeller.
-    const double D = kPropellerDiameter;
-    const T n = rev / 60.0;
-    const T beta = atan2(-v, u);
-    const T beta_p = beta - kXPropeller * rn;
-    const T c2 = ValueOf(beta_p) > 0 ? p[kC2Pos] : p[kC2Neg];
-    const T w_p = 1.0 - (1.0 - p[kWP0]) * (1.0 + (1.0 - exp(-p[kC1] * abs(beta_p))) * (c2 - 1.0));
-    const T u_p = u * (1.0 - w_p);
-    const T nd = n * D + T(kEps);
-    const T J = u_p / nd;
-    const T K_T = p[kK0] + p[kK1] * J + p[kK2] * J * J;
-    const T X_P = (1.0 - p[kTP]) * kRho * n * n * D * D * D * D * K_T;
-
-    // Rudder. 8 K_T / (pi J^2) written as 8 K_T (n D)^2 / (pi u_p^2), kept >= -1.
-    const double eta = D / kRudderSpan;
-    T load = 8.0 * K_T * nd * nd / (3.14159265358979323846 * (u_p * u_p + T(kEps * kEps)));
-    if (ValueOf(load) < -1.0) load = T(-1.0);
-    const T slip = 1.0 + kKappa * (sqrt(1.0 + load + T(kEps)) - 1.0);
-    const T u_r = p[kEpsilon] * u_p * sqrt(eta * slip * slip + (1.0 - eta));
-    const T beta_r = beta - p[kLR] * rn;
-    const T gamma = ValueOf(beta_r) < 0 ? p[kGammaRNeg] : p[kGammaRPos];
-    const T v_r = U * gamma * beta_r;
-    const T alpha = delta - atan2(v_r, u_r);
-    const T F_N = q * kRudderArea * (u_r * u_r + v_r * v_r) * kFAlpha * sin(alpha);
-    const T X_R = -(1.0 - p[kTR]) * F_N * sin(delta);
-    const T Y_R = -(1.0 + p[kAH]) * F_N * cos(delta);
-    const T N_R = -(kXRudder * L + p[kAH] * p[kXH] * L) * F_N * cos(delta);
-
-    f[0] = X_H + X_P + X_R;
-    f[1] = Y_H + Y_R;
-    f[2] = N_H + N_R;
+    MmgForces(u, v, r, delta, T(rev / 60.0), p, kParticulars, MmgForwardThrust<T>{p}, f);
   }
 
   static double FroudeNumber(double speed) { return speed / std::sqrt(9.81 * kLength); }
 
   template <typename T>
   static void Derivative(const T* x, const T* in, const T* p, const Environment<T>& env, T* dx) {
-    using std::cos;
-    using std::sin;
-    const T& psi = x[2];
-    const T& u = x[3];
-    const T& v = x[4];
-    const T& r = x[5];
-    const T c = cos(psi);
-    const T s = sin(psi);
-    const T u_c = c * env.current_north + s * env.current_east;
-    const T v_c = -s * env.current_north + c * env.current_east;
-    const T u_r = u - u_c;
-    const T v_r = v - v_c;
-    T f[3];
-    Forces(u_r, v_r, r, T(-in[0]), in[1], p, f);
-
-    const double L = kLength, d = kDraft, q = 0.5 * kRho;
-    const T& m = p[kM];
-    const T m11 = m + p[kMx] * q * L * L * d;
-    const T m22 = m + p[kMy] * q * L * L * d;
-    const T m33 = p[kIzG] + kXG * kXG * m + p[kJz] * q * L * L * L * L * d;
-    const T mx = kXG * m;
-    // [m22 mx; mx m33] [v_r'; r'] = [Y - m11 u_r r; N - mx u_r r].
-    const T b1 = f[1] - m11 * u_r * r;
-    const T b2 = f[2] - mx * u_r * r;
-    const T det = m22 * m33 - mx * mx;
-    const T dv_r = (m33 * b1 - mx * b2) / det;
-    const T dr = (m22 * b2 - mx * b1) / det;
-    const T du_r = (f[0] + m22 * v_r * r + mx * r * r) / m11;
-
-    dx[0] = c * u - s * v;
-    dx[1] = s * u + c * v;
-    dx[2] = r;
-    dx[3] = du_r + r * v_c;
-    dx[4] = dv_r - r * u_c;
-    dx[5] = dr;
+    MmgMotion(
+        x, T(-in[0]), T(in[1] / 60.0), p, kParticulars, env, MmgForwardThrust<T>{p}, [](T*) {}, dx);
   }
 };
 

@@ -13,12 +13,13 @@
 
 #include "simulators/eb2dof.h"
 #include "simulators/kvlcc2.h"
+#include "simulators/mmg.h"
 #include "simulators/msd.h"
 #include "simulators/odin3dof.h"
 #include "simulators/odin_hs.h"
 
 // X(Type) for every vessel type.
-#define USVID_VESSEL_TYPES(X) X(Msd) X(Odin3Dof) X(Eb2Dof) X(OdinHs) X(Kvlcc2)
+#define USVID_VESSEL_TYPES(X) X(Msd) X(Odin3Dof) X(Eb2Dof) X(OdinHs) X(Kvlcc2) X(Mmg)
 
 namespace usvid {
 

@@ -6,7 +6,7 @@
 set -euo pipefail
 packages=(g++ cmake ninja-build ccache git
   libeigen3-dev libceres-dev libnlopt-cxx-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev nlohmann-json3-dev
+  libcli11-dev nlohmann-json3-dev libyaml-cpp-dev
   pybind11-dev python3-dev python3-numpy)  # the Python module
 case "${1:-}" in
   --test)

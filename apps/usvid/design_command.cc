@@ -101,7 +101,8 @@ void AddDesignCommand(CLI::App& app) {
   auto o = std::make_shared<DesignOptions>();
   CLI::App* cmd = app.add_subcommand(
       "design", "Which maneuver to run for a method: Fisher information through the simulator");
-  cmd->add_option("--vessel", o->vessel, "Simulator whose trials are designed")->required();
+  cmd->add_option("--vessel", o->vessel, "Simulator whose trials are designed: " + VesselChoices())
+      ->required();
   cmd->add_option("--method", o->method,
                   "refit (the vessel's own coefficients), fossen-ceres (odin3dof) or eb-lr "
                   "(eb2dof)")

@@ -61,15 +61,7 @@ void AddDiagnoseCommand(CLI::App& app) {
       "and the held-out gain");
   cmd->add_option("--data", o->data, "Measured data CSV (the vessel's inputs and states)")
       ->required();
-  cmd->add_option(
-         "--vessel", o->vessel,
-         "Nominal simulator: " +
-             [] {
-               std::string names;
-               for (const std::string& n : VesselNames()) names += (names.empty() ? "" : ", ") + n;
-               return names;
-             }())
-      ->required();
+  cmd->add_option("--vessel", o->vessel, "Nominal simulator: " + VesselChoices())->required();
   cmd->add_option("--params", o->params,
                   "JSON of nominal parameter overrides, or a truth/model file's \"parameters\" "
                   "(a diagnose model.json brings its \"effects\" too: diagnose it again)");

@@ -156,7 +156,8 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--data", o->data,
                   "Training data CSV, or several (a.csv,b.csv,...) fitted jointly")
       ->required();
-  cmd->add_option("--vessel", o->request.vessel, "Take states and inputs from this simulator");
+  cmd->add_option("--vessel", o->request.vessel,
+                  "Take states and inputs from this simulator: " + VesselChoices());
   cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');
   cmd->add_option("--inputs", o->request.inputs, "Input channels")->delimiter(',');
   o->pre.Add(*cmd);

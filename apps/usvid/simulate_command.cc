@@ -141,9 +141,7 @@ void AddSimulateCommand(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Run a maneuver on a simulator, or drive it with recorded inputs");
-  std::string vessels;
-  for (const std::string& v : VesselNames()) vessels += (vessels.empty() ? "" : ", ") + v;
-  cmd->add_option("--vessel", o->vessel, "Simulator: " + vessels)->required();
+  cmd->add_option("--vessel", o->vessel, "Simulator: " + VesselChoices())->required();
   cmd->add_option("--maneuver", o->maneuver,
                   "zigzag[:A/B], turning[:A], stepgrid[:T/Y], random-steps[:HOLD_S], "
                   "prbs[:CLOCK_S], multisine[:FMAX_HZ]");

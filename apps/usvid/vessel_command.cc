@@ -148,7 +148,7 @@ void AddVesselCommand(CLI::App& app) {
   auto o = std::make_shared<VesselOptions>();
   CLI::App* cmd = app.add_subcommand(
       "vessel", "Characterise a simulator: parameters, steady speed and turning, resistance");
-  cmd->add_option("--vessel", o->vessel, "The simulator")->required();
+  cmd->add_option("--vessel", o->vessel, "The simulator: " + VesselChoices())->required();
   cmd->add_option("--params", o->params, "JSON of parameter overrides (name: value)");
   cmd->add_option("--points", o->points, "Thrust commands in the steady-state sweep");
   cmd->add_option("--out", o->out, "Directory for vessel.json and the plots")->required();

@@ -12,7 +12,7 @@ namespace {
 // (a simulated record has them; a log without them is refused, naming the column).
 template <typename F>
 auto WithVessel(const std::string& vessel, const std::string& what, F&& f) {
-  auto out = WithVesselType(vessel, std::forward<F>(f));
+  auto out = WithVesselType(FindVessel(vessel).Info().type, std::forward<F>(f));
   if (!out) throw InputError(what + ": not available for vessel " + vessel);
   return std::move(*out);
 }

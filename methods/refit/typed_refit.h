@@ -146,6 +146,11 @@ std::array<bool, V::kParams> FreeParameters(const VesselInfo& info,
     const auto it = std::find(info.params.begin(), info.params.end(), n);
     if (it == info.params.end())
       throw InputError("--refit-params: vessel " + info.name + " has no parameter '" + n + "'");
+    if constexpr (requires { V::kFixedFrom; }) {
+      if (it - info.params.begin() >= V::kFixedFrom)
+        throw InputError("--refit-params: '" + n + "' is a particular of vessel " + info.name +
+                         ", fixed (docs/model.md#vessel-files)");
+    }
     free[it - info.params.begin()] = true;
   }
   return free;

@@ -1,0 +1,127 @@
+#include "simulation/mmg_estimates.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace usvid {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string Format(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
+
+}  // namespace
+
+std::vector<MmgEstimate> EstimateMmgCoefficients(const MmgHull& h) {
+  const double k = 2.0 * h.d / h.L;      // aspect ratio of the hull as a wing
+  const double cbl = h.C_b * h.B / h.L;  // C_b B / L
+  const double lb = h.L / h.B, db = h.d / h.B;
+  const double m = 2.0 * cbl;  // m' = rho V / (rho/2 L^2 d)
+  const double x_G = h.x_G / h.L;
+  std::vector<MmgEstimate> e;
+  auto add = [&](const char* name, double value, const char* source) {
+    e.push_back({name, value, source});
+  };
+
+  // Added masses: Motora's charts as fitted by Zhou, Yan & Feng (1983), quoted by Sukas, Kinaci
+  // & Bal (2019), over m'.
+  const char* zhou = "Zhou et al. 1983";
+  const double m_x =
+      m *
+      (0.398 + 11.97 * h.C_b * (1 + 3.73 * db) - 2.89 * h.C_b * lb * (1 + 1.13 * db) +
+       0.175 * h.C_b * lb * lb * (1 + 0.541 * db) - 1.107 * lb * db) /
+      100.0;
+  const double m_y =
+      m * (0.882 - 0.54 * h.C_b * (1 - 1.6 * db) - 0.156 * (1 - 0.673 * h.C_b) * lb +
+           0.826 * db * lb * (1 - 0.678 * db) - 0.638 * h.C_b * db * lb * (1 - 0.669 * db));
+  const double j =
+      (33.0 - 76.85 * h.C_b * (1 - 0.784 * h.C_b) + 3.43 * lb * (1 - 0.63 * h.C_b)) / 100.0;
+  add("m_x", m_x, zhou);
+  add("m_y", m_y, zhou);
+  add("J_z", m * j * j, zhou);
+
+  // Resistance: ITTC-57 friction at Froude number 0.15, form factor 1.2 of a full hull, wetted
+  // surface by Mumford's S = 1.7 L d + V / d; the wave resistance of a slow full hull is left
+  // out.
+  const double speed = 0.15 * std::sqrt(9.81 * h.L);
+  const double nu = h.rho < 1010.0 ? 1.14e-6 : 1.19e-6;  // [m^2/s] fresh or sea water, 15 C
+  const double re = speed * h.L / nu;
+  const double c_f = 0.075 / std::pow(std::log10(re) - 2.0, 2);
+  const double wetted = 1.7 * h.L * h.d + h.C_b * h.L * h.B;  // V / d = C_b L B
+  add("R_0", 1.2 * c_f * wetted / (h.L * h.d), "ITTC 1957 friction line, form factor 1.2");
+
+  // Surge, sway and yaw derivatives. Linear: Kijima et al. 1990; cubic: Yoshimura & Masumoto
+  // 2012, but where their sign disagrees with the full-form ships (Y_vvr, N_vrr), Kijima et al.
+  // 1990's beta-r cross terms.
+  const char* yoshimura = "Yoshimura & Masumoto 2012";
+  const char* kijima = "Kijima et al. 1990";
+  add("X_vv", 1.15 * cbl - 0.18, yoshimura);
+  add("X_vr", m_y - 1.91 * cbl + 0.08, yoshimura);
+  add("X_rr", -0.085 * cbl + 0.008 + x_G * m_y, yoshimura);
+  add("X_vvvv", -6.68 * cbl + 1.1, yoshimura);
+  add("Y_v", -(0.5 * kPi * k + 1.4 * cbl), kijima);
+  add("Y_r", m + m_x - 1.5 * cbl, kijima);
+  add("Y_vvv", -0.185 * lb + 0.48, yoshimura);
+  add("Y_vvr", 1.5 * db * h.C_b - 0.65, kijima);
+  add("Y_vrr", -(0.26 * (1 - h.C_b) * lb + 0.11), yoshimura);
+  add("Y_rrr", -0.051, yoshimura);
+  add("N_v", -k, kijima);
+  add("N_r", -0.54 * k + k * k, kijima);
+  add("N_vvv", -(0.66 - 0.69 * h.C_b), yoshimura);
+  add("N_vvr", 1.55 * cbl - 0.76, yoshimura);
+  add("N_vrr", 0.5 * db * h.C_b - 0.05, kijima);
+  add("N_rrr", 0.25 * cbl - 0.056, yoshimura);
+
+  // Propeller: Taylor's wake fraction of a single screw, a thrust deduction of 0.6 w_P0, and,
+  // with no formula from the particulars, KVLCC2's open-water curve and wake in drift
+  // (Yasukawa & Yoshimura 2015).
+  const char* kvlcc2 = "KVLCC2's, Yasukawa & Yoshimura 2015: no formula from the particulars";
+  const double w = 0.5 * h.C_b - 0.05;
+  add("t_P", 0.6 * w, "0.6 w_P0, a single screw's rule of thumb");
+  add("w_P0", w, "Taylor's single-screw wake");
+  add("k_0", 0.2931, kvlcc2);
+  add("k_1", -0.2753, kvlcc2);
+  add("k_2", -0.1385, kvlcc2);
+  add("C_1", 2.0, kvlcc2);
+  add("C_2_pos", 1.6, kvlcc2);
+  add("C_2_neg", 1.1, kvlcc2);
+  // Rudder-hull interaction of a full single-screw hull: KVLCC2's; the published regressions on
+  // C_b reproduce no known ship (docs/model.md#vessel-files).
+  add("t_R", 0.387, kvlcc2);
+  add("a_H", 0.312, kvlcc2);
+  add("x_H", -0.464, kvlcc2);
+  add("gamma_R_neg", 0.395, kvlcc2);
+  add("gamma_R_pos", 0.640, kvlcc2);
+  add("l_R", -0.710, kvlcc2);
+  add("epsilon", 1.09, kvlcc2);
+  add("K_Ta_0", -0.175, "Esso Osaka's, Miyauchi et al. 2022");
+  add("K_Ta_1", 0.33, "Esso Osaka's, Miyauchi et al. 2022");
+  add("K_Ta_min", -0.251, "Esso Osaka's, Miyauchi et al. 2022");
+  add("kappa", 0.50, kvlcc2);
+  // Rudder lift gradient from the aspect ratio H_R^2 / A_R: Fujii & Tsuda 1961.
+  const double aspect = h.H_R * h.H_R / h.A_R;
+  add("f_alpha", 6.13 * aspect / (aspect + 2.25), "Fujii & Tsuda 1961");
+  return e;
+}
+
+std::vector<std::string> OutsideValidity(const MmgHull& h) {
+  // The merchant hulls behind Kijima et al. 1990 and Motora's charts (Zhou et al. 1983).
+  std::vector<std::string> out;
+  auto check = [&](const char* what, double value, double lo, double hi) {
+    if (value < lo || value > hi)
+      out.push_back(std::string(what) + " " + Format(value) + " is outside " + Format(lo) + "-" +
+                    Format(hi) +
+                    ", the range of the merchant hulls behind the estimated coefficients "
+                    "(Kijima et al. 1990, Zhou et al. 1983): given coefficients are safer");
+  };
+  check("C_b", h.C_b, 0.5, 0.85);
+  check("L/B", h.L / h.B, 4.5, 8.0);
+  check("B/d", h.B / h.d, 2.0, 4.0);
+  return out;
+}
+
+}  // namespace usvid

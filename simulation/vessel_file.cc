@@ -1,0 +1,241 @@
+#include "simulation/vessel_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "core/error.h"
+#include "simulation/mmg_estimates.h"
+#include "simulators/mmg.h"
+
+namespace usvid {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A YAML mapping read key by key: every key must be known, and errors name file:line.
+class Section {
+ public:
+  Section(const std::string& file, const YAML::Node& node, std::string path)
+      : file_(file), node_(node), path_(std::move(path)) {
+    if (!node_.IsMap()) {
+      const YAML::Mark m = node_.Mark();
+      throw InputError(
+          Located(file_, m.is_null() ? 0 : m.line + 1, 0,
+                  (path_.empty() ? std::string("the file") : path_.substr(0, path_.size() - 1)) +
+                      ": expected a mapping of key: value"));
+    }
+  }
+
+  [[noreturn]] void Fail(const YAML::Node& at, const std::string& what) const {
+    const YAML::Mark m = at.Mark();
+    throw InputError(
+        Located(file_, m.is_null() ? 0 : m.line + 1, m.is_null() ? 0 : m.column + 1, path_ + what));
+  }
+  [[noreturn]] void FailKey(const std::string& key, const std::string& what) const {
+    Fail(Has(key) ? node_[key] : node_, key + ": " + what);
+  }
+  [[noreturn]] void FailHere(const std::string& what) const { Fail(node_, what); }
+
+  bool Has(const std::string& key) const { return node_[key].IsDefined(); }
+
+  std::optional<double> Number(const std::string& key) {
+    known_.insert(key);
+    const YAML::Node v = node_[key];
+    if (!v.IsDefined()) return std::nullopt;
+    double x = 0.0;
+    if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x))
+      Fail(v, key + ": '" + (v.IsScalar() ? v.Scalar() : std::string("(not a number)")) +
+                  "' is not a finite number");
+    return x;
+  }
+  double Required(const std::string& key, const std::string& what) {
+    const std::optional<double> x = Number(key);
+    if (!x) FailHere(key + ": missing (" + what + ")");
+    return *x;
+  }
+  double Positive(const std::string& key, const std::string& what) {
+    const double x = Required(key, what);
+    if (x <= 0) FailKey(key, "must be above 0, got " + Format(x));
+    return x;
+  }
+  std::optional<std::string> Text(const std::string& key) {
+    known_.insert(key);
+    const YAML::Node v = node_[key];
+    if (!v.IsDefined()) return std::nullopt;
+    if (!v.IsScalar()) Fail(v, key + ": expected a text");
+    return v.Scalar();
+  }
+  std::optional<Section> Child(const std::string& key) {
+    known_.insert(key);
+    if (!Has(key)) return std::nullopt;
+    return Section(file_, node_[key], path_ + key + ".");
+  }
+  Section RequiredChild(const std::string& key, const std::string& what) {
+    std::optional<Section> s = Child(key);
+    if (!s) FailHere(key + ": missing (" + what + ")");
+    return *s;
+  }
+  // Every key of the mapping, with its node (for free-form sections: coefficients).
+  std::vector<std::pair<std::string, YAML::Node>> Items() const {
+    std::vector<std::pair<std::string, YAML::Node>> out;
+    for (const auto& kv : node_) out.emplace_back(kv.first.Scalar(), kv.second);
+    return out;
+  }
+  // Fails on the first key that was never asked for.
+  void RefuseUnknown(const std::string& known_list) const {
+    for (const auto& kv : node_)
+      if (!known_.count(kv.first.Scalar()))
+        Fail(kv.first, kv.first.Scalar() + ": unknown key (known: " + known_list + ")");
+  }
+
+  static std::string Format(double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", x);
+    return b;
+  }
+
+ private:
+  std::string file_;
+  YAML::Node node_;
+  std::string path_;
+  std::set<std::string> known_;
+};
+
+YAML::Node Load(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such vessel file");
+  try {
+    return YAML::LoadFile(path);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(Located(path, e.mark.line + 1, e.mark.column + 1, e.msg));
+  } catch (const YAML::Exception& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+VesselFile ReadVesselFile(const std::string& path) {
+  const YAML::Node root = Load(path);
+  Section top(path, root, "");
+  VesselFile out;
+  out.name = top.Text("name").value_or(std::filesystem::path(path).stem().string());
+
+  MmgHull h;
+  h.rho = top.Number("rho").value_or(1025.0);
+  if (h.rho <= 0) top.FailKey("rho", "must be above 0, got " + Section::Format(h.rho));
+
+  Section hull = top.RequiredChild("hull", "the main particulars");
+  h.L = hull.Positive("L", "length between perpendiculars [m]");
+  h.B = hull.Positive("B", "breadth [m]");
+  h.d = hull.Positive("d", "draft [m]");
+  h.C_b = hull.Positive("C_b", "block coefficient");
+  if (h.C_b > 1.0)
+    hull.FailKey("C_b", "a block coefficient is at most 1, got " + Section::Format(h.C_b));
+  h.mass = hull.Positive("mass", "displacement mass [kg]");
+  h.x_G = hull.Required("x_G", "centre of gravity ahead of midship [m]");
+  const std::optional<double> k_zz = hull.Number("k_zz");
+  const std::optional<double> I_zG = hull.Number("I_zG");
+  if (!k_zz && !I_zG)
+    hull.FailHere("k_zz: missing (the yaw radius of gyration / L; or give I_zG [kg m^2])");
+  if (k_zz && I_zG) hull.FailKey("I_zG", "give k_zz or I_zG, not both");
+  if ((k_zz && *k_zz <= 0) || (I_zG && *I_zG <= 0))
+    hull.FailKey(k_zz ? "k_zz" : "I_zG", "must be above 0");
+  hull.RefuseUnknown("L, B, d, C_b, mass, x_G, k_zz, I_zG");
+
+  Section prop = top.RequiredChild("propeller", "diameter and position");
+  h.D_P = prop.Positive("D", "propeller diameter [m]");
+  const double x_P = prop.Number("x").value_or(-0.48 * h.L);
+  prop.RefuseUnknown("D, x");
+
+  Section rud = top.RequiredChild("rudder", "area, span and position");
+  h.A_R = rud.Positive("area", "rudder area [m^2]");
+  h.H_R = rud.Positive("span", "rudder span H_R [m]");
+  const double x_R = rud.Number("x").value_or(-0.5 * h.L);
+  rud.RefuseUnknown("area, span, x");
+
+  Section ctl = top.RequiredChild("controls", "the rudder's sign and range, the propeller's");
+  const std::string sign = ctl.Text("rudder_sign").value_or("");
+  if (sign != "mmg" && sign != "ittc")
+    ctl.FailKey("rudder_sign", "give mmg (a positive delta turns to starboard) or ittc (to port)");
+  const double rudder_max_deg = ctl.Positive("rudder_max_deg", "hard over [deg]");
+  if (rudder_max_deg > 90) ctl.FailKey("rudder_max_deg", "at most 90 deg");
+  const double rudder_rate = ctl.Number("rudder_rate_deg_s").value_or(0.0);
+  if (rudder_rate < 0) ctl.FailKey("rudder_rate_deg_s", "must be 0 (no limit) or above");
+  const double n_max = ctl.Positive("n_max", "highest propeller revolutions ahead [1/s]");
+  const double n_min = ctl.Number("n_min").value_or(0.0);
+  const double n_cruise = ctl.Positive("n_cruise", "propeller revolutions of a cruise [1/s]");
+  if (n_min > n_cruise || n_cruise > n_max)
+    ctl.FailKey("n_cruise", "must lie between n_min " + Section::Format(n_min) + " and n_max " +
+                                Section::Format(n_max));
+  ctl.RefuseUnknown("rudder_sign, rudder_max_deg, rudder_rate_deg_s, n_min, n_max, n_cruise");
+
+  // Coefficients: what is given, else the estimate.
+  std::map<std::string, double> given;
+  std::optional<Section> coefficients = top.Child("coefficients");
+  std::vector<MmgEstimate> estimates = EstimateMmgCoefficients(h);
+  if (coefficients) {
+    for (const auto& [key, node] : coefficients->Items()) {
+      const bool known = std::any_of(estimates.begin(), estimates.end(),
+                                     [&](const MmgEstimate& e) { return e.name == key; });
+      if (!known) {
+        std::string names;
+        for (const MmgEstimate& e : estimates) names += (names.empty() ? "" : ", ") + e.name;
+        coefficients->Fail(node, key + ": unknown coefficient (known: " + names +
+                                     "; m and I_zG are particulars, under hull)");
+      }
+      given[key] = *coefficients->Number(key);
+    }
+  }
+  top.RefuseUnknown("name, rho, hull, propeller, rudder, controls, coefficients");
+
+  std::vector<double> p(Mmg::kDefaultParams.begin(), Mmg::kDefaultParams.end());
+  auto set = [&](std::string_view name, double v) {
+    const auto it = std::find(Mmg::kParamNames.begin(), Mmg::kParamNames.end(), name);
+    p[it - Mmg::kParamNames.begin()] = v;
+  };
+  for (const MmgEstimate& e : estimates) {
+    const auto g = given.find(e.name);
+    if (g != given.end()) {
+      set(e.name, g->second);
+    } else {
+      set(e.name, e.value);
+      out.estimated.push_back(e.name + " = " + Section::Format(e.value) + " (" + e.source + ")");
+    }
+  }
+  set("m", h.mass);
+  set("I_zG", I_zG ? *I_zG : h.mass * std::pow(*k_zz * h.L, 2));
+  set("rho", h.rho);
+  set("L", h.L);
+  set("d", h.d);
+  set("x_G", h.x_G);
+  set("D_P", h.D_P);
+  set("A_R", h.A_R);
+  set("H_R", h.H_R);
+  set("x_P", x_P / h.L);
+  set("x_R", x_R / h.L);
+  set("delta_sign", sign == "ittc" ? -1.0 : 1.0);
+  out.params = std::move(p);
+  out.length_m = h.L;
+  out.warnings = OutsideValidity(h);
+
+  Actuation& a = out.actuation;
+  const double full = rudder_max_deg * kPi / 180.0;
+  a.yaw_is_angle = true;
+  a.yaw_full = full;
+  a.yaw_full_deg = rudder_max_deg;
+  a.thrust_cruise = n_cruise;
+  a.neutral = {0.0, n_cruise};
+  a.input_min = {-full, n_min};
+  a.input_max = {full, n_max};
+  a.yaw_sign = sign == "ittc" ? -1.0 : 1.0;
+  a.yaw_rate_limit = rudder_rate * kPi / 180.0;
+  return out;
+}
+
+}  // namespace usvid
