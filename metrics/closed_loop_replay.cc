@@ -103,11 +103,20 @@ struct ActuatorState {
   double value = 0.0;
 };
 
-ClosedLoopReplay ReplayVesselModel(const nlohmann::json& model, Maneuver& maneuver,
-                                   double rate_hz) {
+ClosedLoopReplay ReplayVesselModel(const nlohmann::json& model, Maneuver& maneuver, double rate_hz,
+                                   const Dataset& recorded, bool from_recorded_state) {
   const VesselModel vessel = ParseVesselModel(model);
   RunOptions options;
   options.rate_hz = rate_hz;
+  if (from_recorded_state) {
+    // The record's first row, for the states it has (positions and heading start at 0).
+    const VesselInfo& info = vessel.simulator->Info();
+    options.initial_state.assign(info.states.size(), NAN);
+    for (size_t i = 0; i < info.states.size(); ++i)
+      if (!IsPositionOrHeading(info.states[i]) && recorded.Has(info.states[i]) &&
+          std::isfinite(recorded[info.states[i]](0)))
+        options.initial_state[i] = recorded[info.states[i]](0);
+  }
   const SimulationResult r =
       vessel.simulator->RunManeuver(maneuver, vessel.params,
                                     ValuesOf(vessel.effects, vessel.simulator->Info().inputs,
@@ -355,6 +364,23 @@ std::string ErrorKey(const std::string& criterion) {
   return criterion + "_error";
 }
 
+// The threshold B of zigzag[:A/B] [deg], 20 by default.
+double ZigzagThreshold(const std::string& spec) {
+  const size_t slash = spec.find('/');
+  return slash == std::string::npos ? 20.0 : std::abs(std::stod(spec.substr(slash + 1)));
+}
+
+// The rudder angle A of zigzag[:A/B] [deg], 20 by default.
+double ZigzagRudder(const std::string& spec) {
+  const size_t colon = spec.find(':');
+  return colon == std::string::npos ? 20.0 : std::abs(std::stod(spec.substr(colon + 1)));
+}
+
+ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
+                             const std::string& heading, const std::string& rudder) {
+  return AnalyseZigzag(data, ZigzagThreshold(spec), heading, rudder, ZigzagRudder(spec));
+}
+
 // A criterion's value for JSON: null when not finite.
 nlohmann::json Value(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
@@ -365,22 +391,41 @@ bool HasManeuverCriteria(const std::string& spec) {
 }
 
 ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
-                                const std::string& spec, const Dataset& recorded) {
+                                const std::string& spec, const Dataset& recorded,
+                                bool from_recorded_state) {
   const VesselInfo& info = FindVessel(vessel).Info();
   RecordedApproach maneuver(MakeManeuver(spec, info.actuation, recorded.duration(), 1),
                             info.actuation, recorded);
-  if (IsVesselModel(model)) return ReplayVesselModel(model, maneuver, SampleRate(recorded));
+  if (IsVesselModel(model))
+    return ReplayVesselModel(model, maneuver, SampleRate(recorded), recorded, from_recorded_state);
   return ReplayEquationModel(model, info, maneuver, recorded);
+}
+
+double ManeuverExecute(const std::string& spec, const Dataset& data, const std::string& heading,
+                       const std::string& rudder) {
+  if (spec.starts_with("zigzag")) return AnalyseZigzag(spec, data, heading, rudder).execute_s;
+  if (spec.starts_with("turning")) return AnalyseTurning(data, heading, rudder).execute_s;
+  throw InputError("closed loop: '" + spec + "' has no execute");
+}
+
+Dataset FromLeadIn(const std::string& spec, const Dataset& recorded, const std::string& heading,
+                   const std::string& rudder) {
+  const double execute = ManeuverExecute(spec, recorded, heading, rudder);
+  const Eigen::VectorXd& t = recorded.t();
+  const double period = 1.0 / SampleRate(recorded);
+  // A steady approach of a few seconds more than the lead-in (a towing tank's) is kept.
+  if (execute - t(0) <= 2.0 * kLeadInS + 1.5 * period) return recorded;
+  Eigen::Index first = 0;
+  while (first + 1 < recorded.rows() && t(first + 1) <= execute - kLeadInS + 1e-9) ++first;
+  Dataset cut = recorded.Rows(first, recorded.rows() - first);
+  cut.SetTime(cut.t().array() - cut.t()(0));
+  return cut;
 }
 
 nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
                                 const std::string& heading, const std::string& rudder) {
   if (spec.starts_with("zigzag")) {
-    // The threshold B: zigzag[:A/B], 20 by default.
-    double threshold = 20.0;
-    if (const size_t slash = spec.find('/'); slash != std::string::npos)
-      threshold = std::abs(std::stod(spec.substr(slash + 1)));
-    const ZigzagResponse z = AnalyseZigzag(data, threshold, heading, rudder);
+    const ZigzagResponse z = AnalyseZigzag(spec, data, heading, rudder);
     auto at = [](const std::vector<double>& v, size_t i) { return i < v.size() ? v[i] : NAN; };
     return {{"first_overshoot_deg", Value(at(z.overshoot_deg, 0))},
             {"second_overshoot_deg", Value(at(z.overshoot_deg, 1))},
@@ -412,13 +457,17 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& v
     out["status"] = "not replayable: no vessel to take the actuators and limits from";
     return out;
   }
-  Dataset recorded = recorded_data;
-  AddSpeedAndCourse(recorded);
+  Dataset full = recorded_data;
+  AddSpeedAndCourse(full);
   const Actuation& act = FindVessel(vessel).Info().actuation;
   const std::string rudder = act.input_names.at(act.yaw_input);
+  // A real log's test starts after its approach: replay from the lead-in before the execute.
+  const Dataset recorded = FromLeadIn(spec, full, full.Has("psi") ? "psi" : "chi", rudder);
+  const bool cut = recorded.rows() < full.rows();
+  if (cut) out["replayed_from_s"] = full.t()(full.rows() - recorded.rows());
   ClosedLoopReplay replay;
   try {
-    replay = ReplayManeuver(model, vessel, spec, recorded);
+    replay = ReplayManeuver(model, vessel, spec, recorded, cut);
   } catch (const InputError& e) {
     out["status"] = std::string("not replayable: ") + e.what();
     return out;

@@ -7,7 +7,10 @@
 // (maneuvers/: heading-triggered reversals, the vessel's yaw limits and rate), from the record's
 // first state, with every other command (thrust, bucket) held at the record's first value (the
 // record's approach: its speed and thrust). The criteria are read from the replay and from the
-// record by the same analysis (metrics/zigzag_response.h, metrics/turning_response.h).
+// record by the same analysis (metrics/zigzag_response.h, metrics/turning_response.h). A real
+// log's approach (hand steering from rest) is cut off: both are read from the maneuvers'
+// lead-in before the record's execute on (FromLeadIn), and a vessel model then starts from the
+// recorded state there.
 //
 // Models: an equation model (metrics/equation_model.h) whose inputs are the vessel's commands,
 // or the waterjet's actuator states or forces (preprocessing/waterjet_forces.h). Those follow the
@@ -38,8 +41,23 @@ bool HasManeuverCriteria(const std::string& spec);
 // Runs maneuver `spec` on `model` closed-loop, on `vessel`'s actuation, for as long as
 // `recorded` lasts. Throws InputError saying why when the model cannot be replayed (an input
 // that is neither a command nor derived from one, an actuator the record cannot identify).
+// With `from_recorded_state`, a vessel model starts from the record's first row (its
+// velocities) instead of its own steady state.
 ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
-                                const std::string& spec, const Dataset& recorded);
+                                const std::string& spec, const Dataset& recorded,
+                                bool from_recorded_state = false);
+
+// The execute time of maneuver `spec` (zigzag or turning) in a record
+// (metrics/maneuver_execute.h).
+double ManeuverExecute(const std::string& spec, const Dataset& data, const std::string& heading,
+                       const std::string& rudder);
+
+// The record from maneuvers' lead-in (kLeadInS) before its execute on, its time from 0, when
+// its approach is more than twice as long: a real log, whose hand steering while the ship
+// gathers way is no part of the test. A record that starts at its lead-in (a simulated one), or
+// a few seconds before (the MARIN tank tests: 7.4 s), is returned as it is.
+Dataset FromLeadIn(const std::string& spec, const Dataset& recorded, const std::string& heading,
+                   const std::string& rudder);
 
 // The criteria of maneuver `spec` read from a record (null where the record cannot give one):
 //   zigzag: first_overshoot_deg, second_overshoot_deg, second_execute_s (first execute to the

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "metrics/maneuver_execute.h"
 
 namespace usvid {
 namespace {
@@ -101,7 +102,11 @@ TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
   double largest = 0.0;
   for (double d : delta.x) largest = std::max(largest, std::abs(d));
   const double moved = largest <= std::numbers::pi / 2 ? kDeg : 0.01 * largest;
-  double execute = kNaN;
+  const Samples psi = Sampled(t, data[heading]);
+  std::vector<double> heading_at(delta.t.size());
+  for (size_t k = 0; k < delta.t.size(); ++k) heading_at[k] = At(psi, delta.t[k]);
+  const long first = FindExecute(delta.x, heading_at, moved, 90.0 * kDeg);
+  double execute = first >= 0 ? delta.t[first] : kNaN;
   for (size_t k = 0; k < delta.x.size() && std::isnan(execute); ++k)
     if (std::abs(delta.x[k] - delta.x[0]) > moved) execute = delta.t[k];
   if (std::isnan(execute))
@@ -112,7 +117,6 @@ TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
   z.execute_s = execute;
   z.advance_m = z.transfer_m = z.tactical_diameter_m = kNaN;
   z.steady_rate_deg_s = z.steady_radius_m = kNaN;
-  const Samples psi = Sampled(t, data[heading]);
   const Samples n = Sampled(t, data[north]), e = Sampled(t, data[east]);
   const double psi0 = At(psi, execute), n0 = At(n, execute), e0 = At(e, execute);
   if (std::isnan(psi0)) return z;

@@ -1,12 +1,14 @@
 // The turning-circle test's figures of merit (ITTC 7.5-04-02-01, IMO MSC.137(76)) read from any
 // record, measured or simulated.
 //
-// Execute: the first sample where the yaw command has moved from its initial value by more than
-// 1 deg (0.01745) when it is an angle [rad], or by more than 1 % of its largest absolute value
-// when it is a yaw moment or force; the channel counts as an angle when its largest absolute
-// value is at most pi/2 (no rudder or nozzle goes further). The origin (n0, e0) and the initial
-// heading psi0 are read there. The direction s is +1 to starboard (the heading grows), -1 to
-// port, read from the heading's largest excursion after the execute (0 if it never changes), so
+// Execute: where the first full-angle order held until the heading has turned 90 deg begins
+// to move (metrics/maneuver_execute.h: a real log's hand steering before the test is skipped),
+// else the first sample where the yaw command has moved from its initial value; moved means by
+// more than 1 deg (0.01745) when it is an angle [rad], or by more than 1 % of its largest
+// absolute value when it is a yaw moment or force; the channel counts as an angle when its largest
+// absolute value is at most pi/2 (no rudder or nozzle goes further). The origin (n0, e0) and the
+// initial heading psi0 are read there. The direction s is +1 to starboard (the heading grows), -1
+// to port, read from the heading's largest excursion after the execute (0 if it never changes), so
 // either rudder sign convention works. With turned = s (psi - psi0) and dn, de from the origin:
 //   advance  =      dn cos psi0 + de sin psi0    at turned = 90 deg   [m]
 //   transfer = s (-dn sin psi0 + de cos psi0)   at turned = 90 deg   [m] (to the turning side)

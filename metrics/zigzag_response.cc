@@ -4,11 +4,12 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "metrics/maneuver_execute.h"
 
 namespace usvid {
 
 ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const std::string& heading,
-                             const std::string& rudder) {
+                             const std::string& rudder, double rudder_deg) {
   constexpr double kDeg = std::numbers::pi / 180.0;
   for (const std::string& c : {heading, rudder})
     if (!data.Has(c)) {
@@ -19,7 +20,9 @@ ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const st
   const Eigen::VectorXd& delta = data[rudder];
   const Eigen::VectorXd& t = data.t();
   const Eigen::Index n = data.rows();
-  Eigen::Index execute = -1;
+  Eigen::Index execute =
+      FindExecute({delta.data(), static_cast<size_t>(n)}, {psi.data(), static_cast<size_t>(n)},
+                  kDeg, std::abs(threshold_deg) * kDeg, std::abs(rudder_deg) * kDeg);
   for (Eigen::Index k = 0; k < n && execute < 0; ++k)
     if (std::abs(delta(k) - delta(0)) > kDeg) execute = k;
   if (execute < 0) throw InputError(data.SourcePrefix() + "zig-zag: the rudder never moves");

@@ -1,10 +1,12 @@
 // The zig-zag test's figures of merit (ITTC 7.5-04-02-01) read from any record, measured or
-// simulated: the rudder is executed when it first moves more than 1 deg from its initial
-// value (heading psi0 then); it is reversed where it crosses zero; the overshoot after each
-// reversal is how far the heading goes beyond the threshold B (from psi0) in the direction it
-// was turning at the reversal, before the next one. Works with either rudder sign convention
-// (the turning direction is read from the heading). The heading must be continuous (unwrapped,
-// as usvid import and the simulators write it).
+// simulated: the rudder is executed where the first full-angle order held until the heading
+// has turned by B begins to move, more than 1 deg (metrics/maneuver_execute.h: a real log's
+// hand steering before the test is skipped), else where it first moves more than 1 deg from its
+// initial value (heading psi0 at the execute); it is reversed where it crosses zero; the overshoot
+// after each reversal is how far the heading goes beyond the threshold B (from psi0) in the
+// direction it was turning at the reversal, before the next one. Works with either rudder sign
+// convention (the turning direction is read from the heading). The heading must be continuous
+// (unwrapped, as usvid import and the simulators write it).
 #pragma once
 
 #include <string>
@@ -23,8 +25,10 @@ struct ZigzagResponse {
 
 // Throws InputError (naming the data's file) when a channel is missing or the rudder never
 // moves.
+// `rudder_deg`: the test's rudder angle A, for finding the execute; 0 takes the record's
+// largest.
 ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg,
                              const std::string& heading = "psi",
-                             const std::string& rudder = "delta");
+                             const std::string& rudder = "delta", double rudder_deg = 0.0);
 
 }  // namespace usvid

@@ -71,6 +71,10 @@ ClosedLoopRun RunClosedLoop(Maneuver& maneuver, const std::array<double, V::kPar
   }
   for (int i : {kinematic.north, kinematic.east, kinematic.heading})
     if (i >= 0) x(i) = 0.0;
+  for (int i = 0; i < V::kStates && i < static_cast<int>(opt.initial_state.size()); ++i)
+    if (std::isfinite(opt.initial_state[i]) && i != kinematic.north && i != kinematic.east &&
+        i != kinematic.heading)
+      x(i) = opt.initial_state[i];
 
   std::vector<double> u(V::kInputs);
   InputTrack::Cursor cursor;

@@ -1,6 +1,8 @@
 // How a simulation runs: integration step, output (and control) rate, run-in to steady state.
 #pragma once
 
+#include <vector>
+
 #include "simulation/integrator.h"
 
 namespace usvid {
@@ -10,6 +12,9 @@ struct RunOptions {
   double rate_hz = 20.0;    // output rate, and the rate the maneuver's controller runs at
   double run_in_s = 600.0;  // longest run-in to steady state before t = 0
   Integrator integrator = Integrator::kRk4;
+  // Closed-loop maneuvers: the state at t = 0, one value per state; NaN keeps the run-in's
+  // steady value (empty: all of them). Positions and heading start at 0 regardless.
+  std::vector<double> initial_state;
 };
 
 }  // namespace usvid

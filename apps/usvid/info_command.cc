@@ -59,7 +59,9 @@ void RunInfo(const InfoOptions& o) {
   for (const Dataset::TextColumn& c : d.text_columns())
     std::printf("%-16s %9s\n", c.name.c_str(), "text");
   if (o.zigzag_deg > 0) {
-    const ZigzagResponse z = AnalyseZigzag(d, o.zigzag_deg, o.heading, o.rudder);
+    // The rudder angle A taken equal to B, as in the usual 10/10 and 20/20 tests: the execute is
+    // the first order of at least about B held until the heading has turned by B.
+    const ZigzagResponse z = AnalyseZigzag(d, o.zigzag_deg, o.heading, o.rudder, o.zigzag_deg);
     std::printf("zig-zag (heading threshold %g deg): executed at %g s, first turn to %s\n",
                 o.zigzag_deg, z.execute_s, z.first_turn > 0 ? "starboard" : "port");
     for (size_t i = 0; i < z.overshoot_deg.size(); ++i)
