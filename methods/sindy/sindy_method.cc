@@ -63,9 +63,10 @@ sindy::SindyOptions SindyOptionsFor(const MethodOptions& o) {
 
 // An equation with no term is a failed fit, not a model "x' = 0": why every term of `state`
 // was cut, from its details (the threshold given, or the held-out path: no term better than
-// none, or none within one standard error of the best).
+// none, or none within one standard error of the best), and what to try: the weak form, or,
+// when it was the weak form over `weak_window_s` windows already, other windows.
 std::string EmptyEquationError(const std::string& state, const nlohmann::json& details,
-                               bool given) {
+                               bool given, double weak_window_s) {
   std::ostringstream s;
   s << "sindy: every term of " << state << "' was cut: ";
   const nlohmann::json& path = details.at("thresholds");
@@ -86,9 +87,14 @@ std::string EmptyEquationError(const std::string& state, const nlohmann::json& d
         << FormatNumber(least->at("heldout_mse").get<double>()) << " with "
         << least->at("terms").get<int>() << " terms, is within one standard error of none";
   }
-  s << "; the derivative may be mostly noise at this record's precision: try the weak form "
-       "(--weak-window-s, e.g. the time of one hull length of travel), a smaller --threshold, or "
-       "more data";
+  if (weak_window_s > 0)
+    s << "; this in the weak form over " << FormatNumber(std::round(weak_window_s * 10) / 10)
+      << " s windows: try other windows (--weak-window-s: longer ones average more noise away, "
+         "shorter ones follow faster dynamics), a smaller --threshold, or more data";
+  else
+    s << "; the derivative may be mostly noise at this record's precision: try the weak form "
+         "(--weak-window-s, e.g. the time of one hull length of travel), a smaller --threshold, "
+         "or more data";
   return s.str();
 }
 
@@ -147,7 +153,8 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
     }
   }
   if (!empty.empty())
-    throw InputError(EmptyEquationError(empty, id.details.at(empty), o.Has("threshold")));
+    throw InputError(EmptyEquationError(empty, id.details.at(empty), o.Has("threshold"),
+                                        options.weak_window_s));
   fit.model["parameters"] = id.parameters;
   fit.model["equations"] = id.equations;
   fit.model["sindy"] = id.details;

@@ -271,6 +271,18 @@ TEST_F(SindyTest, AnEquationWithNoTermIsAFailedFitThatSaysWhy) {
                                          "leaves none"),
               std::string::npos)
         << e.what();
+    EXPECT_NE(std::string(e.what()).find("try the weak form"), std::string::npos) << e.what();
+  }
+  // In the weak form already, the error names its windows and suggests others.
+  request.options = {{"threshold", 1e6}, {"weak_window_s", 2.0}};
+  try {
+    Identify(record, request);
+    FAIL() << "a model of 0 was returned";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("this in the weak form over 2 s windows: try other "
+                                         "windows"),
+              std::string::npos)
+        << e.what();
   }
 }
 
