@@ -377,8 +377,10 @@ double ZigzagRudder(const std::string& spec) {
 }
 
 ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
-                             const std::string& heading, const std::string& rudder) {
-  return AnalyseZigzag(data, ZigzagThreshold(spec), heading, rudder, ZigzagRudder(spec));
+                             const std::string& heading, const std::string& rudder,
+                             bool replay = false) {
+  return AnalyseZigzag(data, ZigzagThreshold(spec), heading, rudder,
+                       replay ? -1.0 : ZigzagRudder(spec));
 }
 
 // A criterion's value for JSON: null when not finite.
@@ -423,9 +425,10 @@ Dataset FromLeadIn(const std::string& spec, const Dataset& recorded, const std::
 }
 
 nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
-                                const std::string& heading, const std::string& rudder) {
+                                const std::string& heading, const std::string& rudder,
+                                bool replay) {
   if (spec.starts_with("zigzag")) {
-    const ZigzagResponse z = AnalyseZigzag(spec, data, heading, rudder);
+    const ZigzagResponse z = AnalyseZigzag(spec, data, heading, rudder, replay);
     auto at = [](const std::vector<double>& v, size_t i) { return i < v.size() ? v[i] : NAN; };
     return {{"first_overshoot_deg", Value(at(z.overshoot_deg, 0))},
             {"second_overshoot_deg", Value(at(z.overshoot_deg, 1))},
@@ -433,7 +436,7 @@ nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
             {"period_s", Value(at(z.reversal_s, 2) - at(z.reversal_s, 0))}};
   }
   if (spec.starts_with("turning")) {
-    const TurningResponse r = AnalyseTurning(data, heading, rudder);
+    const TurningResponse r = AnalyseTurning(data, heading, rudder, "north", "east", !replay);
     return {{"advance_m", Value(r.advance_m)},
             {"transfer_m", Value(r.transfer_m)},
             {"tactical_diameter_m", Value(r.tactical_diameter_m)},
@@ -482,7 +485,7 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& v
   } else {
     out["status"] = "ok";
     try {
-      model_criteria = ManeuverCriteria(spec, replay.run, heading, rudder);
+      model_criteria = ManeuverCriteria(spec, replay.run, heading, rudder, true);
       bool any = false;
       for (const auto& [_, v] : model_criteria.items()) any = any || v.is_number();
       if (!any) out["status"] = "incomplete: the model never turned far enough for the criteria";

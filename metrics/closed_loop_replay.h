@@ -63,8 +63,11 @@ Dataset FromLeadIn(const std::string& spec, const Dataset& recorded, const std::
 //   zigzag: first_overshoot_deg, second_overshoot_deg, second_execute_s (first execute to the
 //           first reversal), period_s (first to third reversal);
 //   turning: advance_m, transfer_m, tactical_diameter_m, steady_rate_deg_s.
+// A record's execute is searched for (metrics/maneuver_execute.h); a `replay`'s is its first
+// rudder movement, as the maneuver ran it.
 nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
-                                const std::string& heading, const std::string& rudder);
+                                const std::string& heading, const std::string& rudder,
+                                bool replay = false);
 
 // A row's "closed_loop" object: {"maneuver", "status", "measured": {criteria}, "model":
 // {criteria}, and per criterion "<name>_error_<unit>" = model - measured (null when either is)}.

@@ -91,7 +91,7 @@ double CircleRadius(const Eigen::VectorXd& t, const Eigen::VectorXd& north,
 
 TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
                                const std::string& rudder, const std::string& north,
-                               const std::string& east) {
+                               const std::string& east, bool find_execute) {
   for (const std::string& c : {heading, rudder, north, east})
     if (!data.Has(c)) {
       data.CheckNotText(c);
@@ -105,7 +105,7 @@ TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
   const Samples psi = Sampled(t, data[heading]);
   std::vector<double> heading_at(delta.t.size());
   for (size_t k = 0; k < delta.t.size(); ++k) heading_at[k] = At(psi, delta.t[k]);
-  const long first = FindExecute(delta.x, heading_at, moved, 90.0 * kDeg);
+  const long first = find_execute ? FindExecute(delta.x, heading_at, moved, 90.0 * kDeg) : -1;
   double execute = first >= 0 ? delta.t[first] : kNaN;
   for (size_t k = 0; k < delta.x.size() && std::isnan(execute); ++k)
     if (std::abs(delta.x[k] - delta.x[0]) > moved) execute = delta.t[k];

@@ -42,9 +42,11 @@ struct TurningResponse {
 
 // Not reaching 90 or 180 deg is a result (flags false, values NaN). Throws InputError (naming
 // the data's file) when a channel is missing or the rudder never moves.
+// `find_execute` false: the execute is the first movement (a simulated run, which starts at its
+// lead-in).
 TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading = "psi",
                                const std::string& rudder = "delta",
                                const std::string& north = "north",
-                               const std::string& east = "east");
+                               const std::string& east = "east", bool find_execute = true);
 
 }  // namespace usvid

@@ -21,8 +21,11 @@ ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const st
   const Eigen::VectorXd& t = data.t();
   const Eigen::Index n = data.rows();
   Eigen::Index execute =
-      FindExecute({delta.data(), static_cast<size_t>(n)}, {psi.data(), static_cast<size_t>(n)},
-                  kDeg, std::abs(threshold_deg) * kDeg, std::abs(rudder_deg) * kDeg);
+      rudder_deg < 0
+          ? -1
+          : FindExecute({delta.data(), static_cast<size_t>(n)},
+                        {psi.data(), static_cast<size_t>(n)}, kDeg,
+                        std::abs(threshold_deg) * kDeg, rudder_deg * kDeg);
   for (Eigen::Index k = 0; k < n && execute < 0; ++k)
     if (std::abs(delta(k) - delta(0)) > kDeg) execute = k;
   if (execute < 0) throw InputError(data.SourcePrefix() + "zig-zag: the rudder never moves");

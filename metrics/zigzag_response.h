@@ -26,7 +26,8 @@ struct ZigzagResponse {
 // Throws InputError (naming the data's file) when a channel is missing or the rudder never
 // moves.
 // `rudder_deg`: the test's rudder angle A, for finding the execute; 0 takes the record's
-// largest.
+// largest; below 0, the execute is the first movement (a simulated run, which starts at its
+// lead-in).
 ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg,
                              const std::string& heading = "psi",
                              const std::string& rudder = "delta", double rudder_deg = 0.0);
