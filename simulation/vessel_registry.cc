@@ -115,6 +115,8 @@ std::unique_ptr<VesselSimulator> MakeFromFile(const std::string& path) {
   info.name = file.name;
   info.default_params = file.params;
   info.length_m = file.length_m;
+  info.actuation.input_min = file.actuation.input_min;  // InfoFor took the type's
+  info.actuation.input_max = file.actuation.input_max;
   std::cerr << "usvid: vessel " << file.name << " (" << path << "): " << file.estimated.size()
             << " coefficients not given, estimated from the particulars "
                "(docs/model.md#vessel-files)\n";

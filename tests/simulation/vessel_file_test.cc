@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 
 #include "core/error.h"
 #include "maneuvers/maneuver_factory.h"
@@ -93,6 +94,13 @@ TEST(VesselFileTest, Kvlcc2WrittenAsAFileRunsTheSameAsTheCompiledInVessel) {
   EXPECT_DOUBLE_EQ(file.Info().length_m, 320.0);
   EXPECT_NEAR(file.Info().actuation.yaw_rate_limit, built_in.Info().actuation.yaw_rate_limit,
               1e-15);
+  // The file's controls, not the type's: 150 rpm is 2.5 per second.
+  EXPECT_NEAR(file.Info().actuation.input_max.at(0), 35.0 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_EQ(file.Info().actuation.input_max.at(1), 2.5);
+  const VesselSimulator& esso =
+      FindVessel(std::string(USVID_SOURCE_DIR) + "/docs/vessels/files/esso-osaka.yaml");
+  EXPECT_EQ(esso.Info().actuation.input_min.at(1), -20.0);  // it reverses
+  EXPECT_EQ(esso.Info().actuation.input_max.at(1), 20.0);
   // A closed-loop zig-zag at each vessel's cruise (91.7 rpm, written as 91.7 / 60 per second).
   auto m1 = MakeManeuver("zigzag:20/20", built_in.Info().actuation, 600, 1);
   auto m2 = MakeManeuver("zigzag:20/20", file.Info().actuation, 600, 1);
