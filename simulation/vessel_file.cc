@@ -205,7 +205,9 @@ VesselFile ReadVesselFile(const std::string& path) {
       set(e.name, g->second);
     } else {
       set(e.name, e.value);
-      out.estimated.push_back(e.name + " = " + Section::Format(e.value) + " (" + e.source + ")");
+      char value[32];
+      std::snprintf(value, sizeof value, "%.4g", e.value);
+      out.estimated.push_back(e.name + " = " + value + " (" + e.source + ")");
     }
   }
   set("m", h.mass);

@@ -115,11 +115,12 @@ std::unique_ptr<VesselSimulator> MakeFromFile(const std::string& path) {
   info.name = file.name;
   info.default_params = file.params;
   info.length_m = file.length_m;
+  info.estimated = file.estimated;
   info.actuation.input_min = file.actuation.input_min;  // InfoFor took the type's
   info.actuation.input_max = file.actuation.input_max;
   std::cerr << "usvid: vessel " << file.name << " (" << path << "): " << file.estimated.size()
-            << " coefficients not given, estimated from the particulars "
-               "(docs/model.md#vessel-files)\n";
+            << " coefficients not given, estimated from the particulars (usvid vessel lists "
+               "them; docs/model.md#vessel-files)\n";
   for (const std::string& w : file.warnings) std::cerr << "warning: " << path << ": " << w << "\n";
   return std::make_unique<TypedVesselSimulator<Mmg>>(std::move(info));
 }

@@ -36,6 +36,9 @@ struct VesselInfo {
   // nondimensional v' = v/U, r' = r L/U and the inputs (MMG): what it lacks is of that form too
   // (the hybrid method's proposals, methods/hybrid/term_proposals.h).
   bool speed_scaled_forces = false;
+  // A vessel file's coefficients that it did not give, each "name = value (source)": estimated
+  // from its particulars (simulation/mmg_estimates.h). Empty for the compiled-in vessels.
+  std::vector<std::string> estimated;
 
   int StateIndex(const std::string& name) const;  // -1 when absent
   // Parameters by name over the defaults; throws InputError on an unknown name.

@@ -64,6 +64,11 @@ void RunVessel(const VesselOptions& o) {
                            {"inputs", info.inputs},
                            {"transport_delay_s", info.transport_delay_s}};
   for (size_t i = 0; i < params.size(); ++i) report["parameters"][info.params[i]] = params[i];
+  if (!info.estimated.empty()) {
+    report["estimated"] = info.estimated;
+    std::printf("estimated from the particulars (docs/model.md#estimates-from-the-particulars):\n");
+    for (const std::string& e : info.estimated) std::printf("  %s\n", e.c_str());
+  }
 
   const Actuation& act = info.actuation;
   if (act.thrust_input >= 0 && act.speed_state >= 0) {

@@ -33,6 +33,12 @@ TEST(VesselFileCliTest, AShipFromItsParticularsSimulatesAZigzag) {
   const double first = truth.at("maneuver").at("report").at("first_overshoot_deg");
   EXPECT_GT(first, 1.0);
   EXPECT_LT(first, 15.0);
+  // `usvid vessel` lists each estimate with its source.
+  const auto v =
+      RunUsvid("vessel --vessel " + kEsso + " --points 2 --out " + (dir / "vessel").string());
+  ASSERT_EQ(v.exit_code, 0) << v.err;
+  EXPECT_THAT(v.out, HasSubstr("N_v = -0.1341 (Kijima et al. 1990)"));
+  EXPECT_EQ(ReadJsonFile((dir / "vessel" / "vessel.json").string()).at("estimated").size(), 40u);
 }
 
 TEST(VesselFileCliTest, RefitRecoversAHiddenYawDampingAndKeepsParticularsFixed) {
