@@ -1,6 +1,8 @@
 #include "harness/report.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,6 +15,7 @@
 #include "plot/figure_grid.h"
 #include "plot/heat_map.h"
 #include "plot/svg_text.h"
+#include "simulation/vessel_simulator.h"
 #include "simulators/vessel.h"
 
 namespace usvid {
@@ -99,6 +102,15 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
   return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));
 }
 
+// A vessel's part of a figure's file name: a vessel file's stem (docs/vessels/files/esso-osaka.yaml
+// -> esso-osaka), else the name.
+std::string FigureName(const std::string& vessel) {
+  std::string name = IsVesselFile(vessel) ? std::filesystem::path(vessel).stem().string() : vessel;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+  return name;
+}
+
 }  // namespace
 
 void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const std::string& summary,
@@ -120,7 +132,7 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
   html << MarkdownToHtml(summary.substr(0, rest));
   for (const std::string& vessel : vessels) {
     const std::string heat = FitHeatMap(suite, rows, vessel);
-    WriteFileAtomically(dir + "/fit_" + vessel + ".svg", heat);
+    WriteFileAtomically(dir + "/fit_" + FigureName(vessel) + ".svg", heat);
     html << "<h2>" << svg::Escape(vessel) << "</h2>\n<figure class=\"plot\">" << heat
          << "</figure>\n";
     // Simulated suites: the first test maneuver; measured data: every test file.
@@ -129,7 +141,8 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
       const std::string run = ExampleRun(suite, rows, vessel, suite.test_maneuvers[t]);
       if (run.empty()) continue;
       WriteFileAtomically(
-          dir + "/run_" + vessel + (t == 0 ? "" : "_" + std::to_string(t + 1)) + ".svg", run);
+          dir + "/run_" + FigureName(vessel) + (t == 0 ? "" : "_" + std::to_string(t + 1)) + ".svg",
+          run);
       html << "<figure class=\"plot\">" << run << "</figure>\n";
     }
   }

@@ -68,6 +68,19 @@ TEST(VesselFileCliTest, RefitRecoversAHiddenYawDampingAndKeepsParticularsFixed) 
   EXPECT_FALSE(fs::exists(refused));
 }
 
+TEST(VesselFileCliTest, ASuiteRunsOnAVesselFile) {
+  const fs::path dir = FreshTempDir();
+  WriteText(dir / "suite.json", R"({"name": "file", "vessels": [")" + kEsso + R"("],
+      "train_maneuvers": ["zigzag:20/20"], "test_maneuvers": ["turning:35"],
+      "methods": ["nominal"], "seeds": [1]})");
+  const auto r = RunUsvid("compare --suite " + (dir / "suite.json").string() + " --out " +
+                          (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The figures are named by the file's stem, not its path.
+  EXPECT_TRUE(fs::exists(dir / "out" / "fit_esso-osaka.svg"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "report.html"));
+}
+
 TEST(VesselFileCliTest, ABadFileIsExitTwoNamingTheLineAndWritesNothing) {
   const fs::path dir = FreshTempDir();
   const fs::path ship = dir / "ship.yaml";
