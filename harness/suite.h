@@ -12,6 +12,8 @@
 //    "file": ..., "format": "marin-dat"}], "test": [...]}, "methods": [...]}
 // with at most one vessel (whose channels the files hold; none when the methods name their
 // "states" and "inputs"), maneuver names taken from the data names, no added noise.
+// A vessel is a compiled-in name or a vessel file (docs/model.md#vessel-files), a relative path
+// taken from the suite file's folder, as the data files are.
 // Methods: every method of the suite's registry (harness/suite_methods.h): the registered
 // identification methods (methods/method_list.h), diagnose (the nominal vessel extended by the
 // causes `usvid diagnose` names on the training data), and external commands
