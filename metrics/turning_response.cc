@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "core/angles.h"
 #include "core/error.h"
 #include "metrics/maneuver_execute.h"
 
@@ -102,7 +103,7 @@ TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
   double largest = 0.0;
   for (double d : delta.x) largest = std::max(largest, std::abs(d));
   const double moved = largest <= std::numbers::pi / 2 ? kDeg : 0.01 * largest;
-  const Samples psi = Sampled(t, data[heading]);
+  const Samples psi = Sampled(t, UnwrappedAngle(data[heading]));  // a log's heading may wrap
   std::vector<double> heading_at(delta.t.size());
   for (size_t k = 0; k < delta.t.size(); ++k) heading_at[k] = At(psi, delta.t[k]);
   const long first = find_execute ? FindExecute(delta.x, heading_at, moved, 90.0 * kDeg) : -1;

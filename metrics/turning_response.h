@@ -19,8 +19,9 @@
 // heading's slope, mean |r|), radius = the least-squares circle through the positions there
 // (U / r on a steady turn in calm water).
 //
-// The heading must be continuous (unwrapped, radians, as usvid import and the simulators write
-// it). Unsampled values (NaN) are skipped: each channel is interpolated over its own samples.
+// The heading is in radians; one that wraps at +-pi, as logs write it, is unwrapped first
+// (core/angles.h). Unsampled values (NaN) are skipped: each channel is interpolated over its own
+// samples.
 #pragma once
 
 #include <string>

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "core/error.h"
 #include "metrics/maneuver_execute.h"
 
@@ -16,7 +17,7 @@ ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const st
       data.CheckNotText(c);
       throw InputError(data.SourcePrefix() + "zig-zag: no channel '" + c + "'");
     }
-  const Eigen::VectorXd& psi = data[heading];
+  const Eigen::VectorXd psi = UnwrappedAngle(data[heading]);  // a log's heading may wrap
   const Eigen::VectorXd& delta = data[rudder];
   const Eigen::VectorXd& t = data.t();
   const Eigen::Index n = data.rows();

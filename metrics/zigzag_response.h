@@ -5,8 +5,8 @@
 // initial value (heading psi0 at the execute); it is reversed where it crosses zero; the overshoot
 // after each reversal is how far the heading goes beyond the threshold B (from psi0) in the
 // direction it was turning at the reversal, before the next one. Works with either rudder sign
-// convention (the turning direction is read from the heading). The heading must be continuous
-// (unwrapped, as usvid import and the simulators write it).
+// convention (the turning direction is read from the heading). A heading that wraps at +-pi, as
+// logs write it, is unwrapped first (core/angles.h).
 #pragma once
 
 #include <string>

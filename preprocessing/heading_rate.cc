@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "core/error.h"
 #include "preprocessing/smoothing_spline.h"
 
@@ -14,12 +15,7 @@ Eigen::VectorXd RateFromHeading(const Dataset& data, const std::string& heading)
   if (!c->sampled.all())
     throw InputError(data.SourcePrefix() + "heading '" + heading +
                      "' has empty cells: resample it first");
-  Eigen::VectorXd psi = c->values;
-  for (Eigen::Index k = 1; k < psi.size(); ++k) {
-    const double step = psi(k) - psi(k - 1);
-    psi(k) -= 2 * std::numbers::pi * std::round(step / (2 * std::numbers::pi));
-  }
-  return SmoothingSpline(psi, MedianInterval(data.t())).derivative;
+  return SmoothingSpline(UnwrappedAngle(c->values), MedianInterval(data.t())).derivative;
 }
 
 }  // namespace usvid

@@ -87,6 +87,19 @@ TEST(TurningResponseTest, RudderSignConventionDoesNotMatter) {
   }
 }
 
+// A log's heading wraps at +-pi (Esso Osaka's psi_hat): the same circle, its heading wrapped,
+// gives the same figures, the steady turn's among them, which need 540 deg of turn.
+TEST(TurningResponseTest, AWrappedHeadingGivesTheSameFigures) {
+  for (int side : {+1, -1}) {
+    Dataset d = StraightThenCircle(side);
+    Eigen::VectorXd psi = d["psi"];
+    for (double& p : psi) p = std::remainder(p, 2.0 * std::numbers::pi);
+    ASSERT_GT((psi - d["psi"]).cwiseAbs().maxCoeff(), 6.0);  // it does wrap
+    d.Set("psi", psi);
+    ExpectCircle(AnalyseTurning(d), side, "wrapped heading, side " + std::to_string(side));
+  }
+}
+
 // A yaw moment executes when it moves by more than 1 % of its largest value: a 150 N m ripple
 // on the approach (0.75 % of 20 kN m) is not the execute, the step to 20 kN m is.
 TEST(TurningResponseTest, YawMomentExecutesAtOnePercentOfItsLargest) {
