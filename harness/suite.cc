@@ -221,10 +221,9 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     s.test_maneuvers = ListOf<std::string>(v["test_maneuvers"], file + ": test_maneuvers");
   }
   // A vessel file is named relative to the suite, as its data are.
-  const std::filesystem::path base = std::filesystem::path(file).parent_path();
   for (std::string& vessel : s.vessels)
-    if (IsVesselFile(vessel) && std::filesystem::path(vessel).is_relative() && !base.empty())
-      vessel = (base / vessel).lexically_normal().string();
+    if (IsVesselFile(vessel))
+      vessel = SuitePath(std::filesystem::path(file).parent_path().string(), vessel);
   for (const std::string& vessel : s.vessels) FindVessel(vessel);  // throws on unknown names
   // Unknown maneuvers are refused here, before any fit: a spec must run on at least one of the
   // suite's vessels (a zig-zag needs a heading, which not every vessel has).

@@ -16,6 +16,11 @@
 
 namespace usvid {
 
+std::string SuitePath(const std::string& base_dir, const std::string& file) {
+  if (std::filesystem::path(file).is_absolute() || base_dir.empty()) return file;
+  return (std::filesystem::path(base_dir) / file).lexically_normal().string();
+}
+
 SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
                          const std::string& where) {
   if (!v.is_object()) throw InputError(where + ": each data entry is an object");
@@ -37,10 +42,7 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
   SuiteData d;
   d.name = v["name"].get<std::string>();
   for (const auto& f : v["file"].is_array() ? v["file"] : nlohmann::json::array({v["file"]})) {
-    std::string file = f.get<std::string>();
-    if (std::filesystem::path(file).is_relative() && !base_dir.empty())
-      file = (std::filesystem::path(base_dir) / file).lexically_normal().string();
-    d.files.push_back(file);
+    d.files.push_back(SuitePath(base_dir, f.get<std::string>()));
   }
   d.format = v.value("format", d.format);
   if (d.format != "csv" && d.format != "marin-dat" && d.format != "csv-log")

@@ -30,6 +30,9 @@ struct SuiteData {
 };
 
 // Throws InputError naming `where` for a malformed entry.
+// `file` taken from `base_dir` when it is relative (a suite's data and vessel files).
+std::string SuitePath(const std::string& base_dir, const std::string& file);
+
 SuiteData ParseSuiteData(const nlohmann::json& value, const std::string& base_dir,
                          const std::string& where);
 nlohmann::json SuiteDataToJson(const SuiteData& d);

@@ -364,23 +364,14 @@ std::string ErrorKey(const std::string& criterion) {
   return criterion + "_error";
 }
 
-// The threshold B of zigzag[:A/B] [deg], 20 by default.
-double ZigzagThreshold(const std::string& spec) {
-  const size_t slash = spec.find('/');
-  return slash == std::string::npos ? 20.0 : std::abs(std::stod(spec.substr(slash + 1)));
-}
-
-// The rudder angle A of zigzag[:A/B] [deg], 20 by default.
-double ZigzagRudder(const std::string& spec) {
-  const size_t colon = spec.find(':');
-  return colon == std::string::npos ? 20.0 : std::abs(std::stod(spec.substr(colon + 1)));
-}
-
+// zigzag[:A/B]: the rudder angle A and the heading threshold B [deg], 20/20 by default.
 ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
                              const std::string& heading, const std::string& rudder,
                              bool replay = false) {
-  return AnalyseZigzag(data, ZigzagThreshold(spec), heading, rudder,
-                       replay ? -1.0 : ZigzagRudder(spec));
+  const size_t colon = spec.find(':'), slash = spec.find('/');
+  const double a = colon == std::string::npos ? 20.0 : std::abs(std::stod(spec.substr(colon + 1)));
+  const double b = slash == std::string::npos ? 20.0 : std::abs(std::stod(spec.substr(slash + 1)));
+  return AnalyseZigzag(data, b, heading, rudder, replay ? -1.0 : a);
 }
 
 // A criterion's value for JSON: null when not finite.

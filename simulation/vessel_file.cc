@@ -11,6 +11,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/parse_number.h"
 #include "simulation/mmg_estimates.h"
 #include "simulators/mmg.h"
 
@@ -62,7 +63,7 @@ class Section {
   }
   double Positive(const std::string& key, const std::string& what) {
     const double x = Required(key, what);
-    if (x <= 0) FailKey(key, "must be above 0, got " + Format(x));
+    if (x <= 0) FailKey(key, "must be above 0, got " + FormatNumber(x));
     return x;
   }
   std::optional<std::string> Text(const std::string& key) {
@@ -95,12 +96,6 @@ class Section {
         Fail(kv.first, kv.first.Scalar() + ": unknown key (known: " + known_list + ")");
   }
 
-  static std::string Format(double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", x);
-    return b;
-  }
-
  private:
   std::string file_;
   YAML::Node node_;
@@ -129,7 +124,7 @@ VesselFile ReadVesselFile(const std::string& path) {
 
   MmgHull h;
   h.rho = top.Number("rho").value_or(1025.0);
-  if (h.rho <= 0) top.FailKey("rho", "must be above 0, got " + Section::Format(h.rho));
+  if (h.rho <= 0) top.FailKey("rho", "must be above 0, got " + FormatNumber(h.rho));
 
   Section hull = top.RequiredChild("hull", "the main particulars");
   h.L = hull.Positive("L", "length between perpendiculars [m]");
@@ -137,7 +132,7 @@ VesselFile ReadVesselFile(const std::string& path) {
   h.d = hull.Positive("d", "draft [m]");
   h.C_b = hull.Positive("C_b", "block coefficient");
   if (h.C_b > 1.0)
-    hull.FailKey("C_b", "a block coefficient is at most 1, got " + Section::Format(h.C_b));
+    hull.FailKey("C_b", "a block coefficient is at most 1, got " + FormatNumber(h.C_b));
   h.mass = hull.Positive("mass", "displacement mass [kg]");
   h.x_G = hull.Required("x_G", "centre of gravity ahead of midship [m]");
   const std::optional<double> k_zz = hull.Number("k_zz");
@@ -172,8 +167,8 @@ VesselFile ReadVesselFile(const std::string& path) {
   const double n_min = ctl.Number("n_min").value_or(0.0);
   const double n_cruise = ctl.Positive("n_cruise", "propeller revolutions of a cruise [1/s]");
   if (n_min > n_cruise || n_cruise > n_max)
-    ctl.FailKey("n_cruise", "must lie between n_min " + Section::Format(n_min) + " and n_max " +
-                                Section::Format(n_max));
+    ctl.FailKey("n_cruise", "must lie between n_min " + FormatNumber(n_min) + " and n_max " +
+                                FormatNumber(n_max));
   ctl.RefuseUnknown("rudder_sign, rudder_max_deg, rudder_rate_deg_s, n_min, n_max, n_cruise");
 
   // Coefficients: what is given, else the estimate.

@@ -54,8 +54,10 @@ VesselInfo InfoFor(std::vector<InputRole> roles, const Actuation& extra) {
   a = extra;
   a.input_names = info.inputs;
   a.roles = std::move(roles);
-  a.input_min.assign(V::kInputMin.begin(), V::kInputMin.end());
-  a.input_max.assign(V::kInputMax.begin(), V::kInputMax.end());
+  if (a.input_min.empty()) {  // a vessel file gives its own
+    a.input_min.assign(V::kInputMin.begin(), V::kInputMin.end());
+    a.input_max.assign(V::kInputMax.begin(), V::kInputMax.end());
+  }
   if (a.neutral.empty()) {
     if constexpr (requires { V::kNeutralInput; }) {
       a.neutral.assign(V::kNeutralInput.begin(), V::kNeutralInput.end());
@@ -116,8 +118,6 @@ std::unique_ptr<VesselSimulator> MakeFromFile(const std::string& path) {
   info.default_params = file.params;
   info.length_m = file.length_m;
   info.estimated = file.estimated;
-  info.actuation.input_min = file.actuation.input_min;  // InfoFor took the type's
-  info.actuation.input_max = file.actuation.input_max;
   std::cerr << "usvid: vessel " << file.name << " (" << path << "): " << file.estimated.size()
             << " coefficients not given, estimated from the particulars (usvid vessel lists "
                "them; docs/model.md#vessel-files)\n";

@@ -44,7 +44,7 @@ namespace usvid {
 
 struct Kvlcc2 : MmgCoefficients {
   static constexpr std::string_view kName = "kvlcc2";
-  static constexpr int kStates = 6, kInputs = 2, kParams = 37;
+  static constexpr int kStates = 6, kInputs = 2, kParams = MmgCoefficients::kCount;
   static constexpr std::array<std::string_view, kStates> kStateNames = {"north", "east", "psi",
                                                                         "u",     "v",    "r"};
   static constexpr std::array<std::string_view, kInputs> kInputNames = {"delta", "rev"};
