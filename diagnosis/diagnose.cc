@@ -70,15 +70,17 @@ bool InputMoves(const MeasuredData& d, int i) {
   return false;
 }
 
-// The candidates: every effect of the catalogue, and with more than one moving input, the
+// The candidates: every effect of the catalogue (wind where the record has it and the vessel
+// feels it), and with more than one moving command input, the
 // effects that can act on one input alone on each of them (input_bias: each but the yaw input,
 // which the whole-vessel input_bias already is).
 std::vector<EffectSearch> Searches(const MeasuredData& d, const EffectFitter& fitter) {
   std::vector<int> moving;
   for (int i = 0; i < static_cast<int>(d.peak_command.size()); ++i)
-    if (InputMoves(d, i)) moving.push_back(i);
+    if (!d.measured_input[i] && InputMoves(d, i)) moving.push_back(i);
   std::vector<EffectSearch> out;
   for (const EffectInfo& info : EffectCatalogue()) {
+    if (info.kind == EffectKind::kWind && !d.wind) continue;
     out.push_back(SearchFor(info.kind, d, fitter.YawInput()));
     if (!OnInputs(info.kind) || moving.size() < 2) continue;
     for (int i : moving)

@@ -52,6 +52,11 @@ EffectSearch SearchFor(EffectKind kind, const MeasuredData& data, int yaw_input,
     case EffectKind::kResistance:
       add("scale", 1.0, 0.2, 5.0);
       break;
+    case EffectKind::kWind:
+      // From none: the wind force the model lacks, as a multiple of its wind model; below 0,
+      // a model whose wind is too strong.
+      add("scale", 0.0, -2.0, 4.0);
+      break;
     case EffectKind::kMissingTerm:
       break;  // SearchForTerm
   }

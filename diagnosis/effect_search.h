@@ -1,8 +1,8 @@
 // What is fitted for each effect of the catalogue: the free sizes, their public names, bounds
 // and starting values, and how they set EffectValues<T>. Smooth effects (current, actuator lag,
-// biases, inertia, damping, surge force, resistance) are fitted by Ceres through the differentiable
-// rollout; input delay and saturation move signals in time or clip them, so they are found by a
-// bounded NLopt search.
+// biases, inertia, damping, surge force, resistance, wind) are fitted by Ceres through the
+// differentiable rollout; input delay and saturation move signals in time or clip them, so they are
+// found by a bounded NLopt search.
 //   effect        sizes                         bounds
 //   input_delay   delay_s                       [0, 3] s
 //   current       current_north, current_east   +-3 m/s each
@@ -14,6 +14,8 @@
 //   saturation    fraction                      [0.05, 1]
 //   surge_force   acceleration [m/s^2]          +-0.5
 //   resistance    scale                         [0.2, 5]
+//   wind          scale                         [-2, 4], from 0 (vessels with a wind model,
+//                                               records with wind channels)
 #pragma once
 
 #include <string>
@@ -89,6 +91,9 @@ void ApplySizes(const EffectSearch& search, const T* theta, EffectValues<T>& e) 
       break;
     case EffectKind::kResistance:
       e.resistance_scale = theta[0];
+      break;
+    case EffectKind::kWind:
+      e.wind_scale = theta[0];
       break;
     case EffectKind::kMissingTerm:
       e.extra_terms.push_back({search.term, theta[0]});

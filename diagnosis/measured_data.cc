@@ -189,10 +189,15 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
 
   // Commands, zero-order hold.
   d.inputs = RecordedInputs(data, info);
-  for (const std::string& name : info.inputs)
+  for (size_t i = 0; i < info.inputs.size(); ++i) {
+    const std::string& name = info.inputs[i];
+    d.measured_input.push_back(info.IsMeasuredInput(i));
+    if (d.measured_input.back() && !data.Has(name)) continue;  // no wind logged
     if (!data.Get(name).sampled.any())
       throw InputError(where + "input column '" + name + "' is empty");
+  }
   d.peak_command = d.inputs.PeakAbs();
+  d.wind = info.wind_body && data.Has("wind_speed") && data.Get("wind_speed").sampled.any();
 
   ChooseChannels(data, info, d);
   CopyMeasurements(data, d);

@@ -34,6 +34,10 @@ struct MeasuredData {
   std::vector<double> times;
   InputTrack inputs{0};
   std::vector<double> peak_command;  // max |command| per input over the whole data
+  std::vector<bool> measured_input;  // per input: a measured disturbance (wind), not a command
+  // The record has wind and the vessel feels it (VesselInfo::wind_body): the effect wind is a
+  // candidate.
+  bool wind = false;
 
   std::vector<std::string> channels;  // scored: vessel states in the data that vary
   std::vector<int> channel_state;     // channel -> vessel state index

@@ -50,7 +50,8 @@ std::vector<DiscoveredTerms> DiscoverMissingTerms(const Dataset& data, const Ves
     if (!IsKinematic(c)) dynamic.push_back(c);
   }
   if (dynamic.empty()) return {};
-  PreparedData prepared = Preprocess(data, measured_states, info.inputs, PreprocessOptions{});
+  PreparedData prepared =
+      Preprocess(data, measured_states, info.InputsIn(data), PreprocessOptions{});
   Dataset& p = prepared.data;
   const Eigen::Index n = p.rows();
 
@@ -65,7 +66,8 @@ std::vector<DiscoveredTerms> DiscoverMissingTerms(const Dataset& data, const Ves
     while (row + 1 < measured.rows() && measured.times[row + 1] <= t) ++row;
     for (size_t i = 0; i < states; ++i)
       x[i] = p.Has(info.states[i]) ? p[info.states[i]](k) : measured.fallback_states(row, i);
-    for (size_t i = 0; i < info.inputs.size(); ++i) u[i] = p[info.inputs[i]](k);
+    for (size_t i = 0; i < info.inputs.size(); ++i)
+      u[i] = p.Has(info.inputs[i]) ? p[info.inputs[i]](k) : info.actuation.neutral[i];
     fitter.Derivative(params, x.data(), u.data(), dx.data());
     for (size_t j = 0; j < dynamic.size(); ++j) {
       const int s = info.StateIndex(dynamic[j]);
@@ -73,7 +75,7 @@ std::vector<DiscoveredTerms> DiscoverMissingTerms(const Dataset& data, const Ves
     }
   }
   for (size_t j = 0; j < dynamic.size(); ++j) p.Set(dynamic[j] + "_dot", residual[j]);
-  std::vector<std::string> inputs = info.inputs;
+  std::vector<std::string> inputs = info.CommandedInputs();
   if (measured.heading_channel >= 0) {
     // Named by their expressions, so that a proposed term is an expression in channel names
     // (a missing_term candidate, docs/diagnose.md).

@@ -134,6 +134,9 @@ class TypedEffectFitter : public EffectFitter {
       case EffectKind::kMissingTerm:
         for (double f : {0.0, 0.5, 2.0}) grid.push_back({f * search.start[0]});
         break;
+      case EffectKind::kWind:
+        for (double scale : {-1.0, 0.5, 1.0, 2.0}) grid.push_back({scale});
+        break;
       case EffectKind::kInputDelay:
       case EffectKind::kSaturation:
         break;

@@ -12,7 +12,7 @@
 namespace usvid {
 namespace {
 
-constexpr std::array<EffectInfo, 10> kCatalogue = {{
+constexpr std::array<EffectInfo, 11> kCatalogue = {{
     {EffectKind::kInputDelay, "input_delay", "delay_s",
      "every input reaches the plant late by a constant time"},
     {EffectKind::kCurrent, "current", "speed",
@@ -32,6 +32,9 @@ constexpr std::array<EffectInfo, 10> kCatalogue = {{
      "acceleration [m/s^2]"},
     {EffectKind::kResistance, "resistance", "scale",
      "surge resistance off by a factor (the rest of the damping as modelled)"},
+    {EffectKind::kWind, "wind", "scale",
+     "the measured relative wind's force, as a multiple of the vessel's wind model, missing "
+     "from the model"},
 }};
 
 constexpr EffectInfo kMissingTermInfo = {
@@ -77,6 +80,8 @@ std::string Violation(EffectKind kind, double value) {
       return value > 0.0 && value <= 1.0 ? "" : "fraction must be in (0, 1]";
     case EffectKind::kSurgeForce:
       return std::abs(value) <= 5.0 ? "" : "acceleration must be in [-5, 5] m/s^2";
+    case EffectKind::kWind:
+      return std::abs(value) <= 10.0 ? "" : "scale must be in [-10, 10]";
     case EffectKind::kMissingTerm:
       return std::isfinite(value) ? "" : "coefficient must be finite";
   }
@@ -91,7 +96,7 @@ double ParseValue(const std::string& text, const std::string& where) {
 
 }  // namespace
 
-const std::array<EffectInfo, 10>& EffectCatalogue() { return kCatalogue; }
+const std::array<EffectInfo, 11>& EffectCatalogue() { return kCatalogue; }
 
 const EffectInfo& InfoOf(EffectKind kind) {
   return kind == EffectKind::kMissingTerm ? kMissingTermInfo

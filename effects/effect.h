@@ -12,6 +12,10 @@
 //   surge_force   a constant surge force the model lacks, as an acceleration [m/s^2] on the
 //                 surge (or speed) state: a propulsion mismatch, a towing force
 //   resistance    the surge resistance parameters times `scale` (the rest of the damping not)
+//   wind          the measured relative wind (inputs wind_speed, wind_direction) pushes the
+//                 vessel with `scale` times its wind model's force, on top of what the model
+//                 has: a model that ignores the wind (a vessel file with wind model none) lacks
+//                 scale 1 of it. Only vessels with a wind model (simulators/wind_force.h).
 // input_delay, actuator_lag, input_bias and saturation may act on some inputs only
 // (Effect::inputs, by channel name; `--effect input_delay=1.0@tau_n`): a delay or lag on one
 // actuator, a bias on another input than the yaw input, one actuator that saturates.
@@ -42,6 +46,7 @@ enum class EffectKind {
   kSaturation,
   kSurgeForce,
   kResistance,
+  kWind,
   kMissingTerm  // not in the catalogue: proposed by the diagnosis's residual search
 };
 
@@ -53,7 +58,7 @@ struct EffectInfo {
 };
 
 // The catalogue: what the diagnosis fits blindly (missing_term is not among them).
-const std::array<EffectInfo, 10>& EffectCatalogue();
+const std::array<EffectInfo, 11>& EffectCatalogue();
 const EffectInfo& InfoOf(EffectKind kind);
 
 struct Effect {

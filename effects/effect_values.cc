@@ -117,6 +117,9 @@ void SetEffect(const Effect& e, EffectValues<double>& v,
     case EffectKind::kResistance:
       v.resistance_scale = e.at("scale");
       break;
+    case EffectKind::kWind:
+      v.wind_scale = e.at("scale");
+      break;
     case EffectKind::kMissingTerm:
       break;  // above
   }

@@ -51,6 +51,7 @@ struct EffectValues {
   T resistance_scale = T(1);         // surge resistance parameters (ParamGroup::kResistance)
   double saturation_fraction = 0.0;  // 0: no clipping
   T surge_acceleration = T(0);       // added to the surge (or speed) state's derivative
+  T wind_scale = T(0);  // the measured wind's force, times the vessel's wind model, added
   // Extra delay per input, on top of delay_s (empty: none; shorter than the inputs: none for
   // the rest): input_delay on some inputs only.
   std::vector<double> input_delays_s;
@@ -90,6 +91,7 @@ EffectValues<T> CastValues(const EffectValues<double>& e) {
   out.resistance_scale = T(e.resistance_scale);
   out.saturation_fraction = e.saturation_fraction;
   out.surge_acceleration = T(e.surge_acceleration);
+  out.wind_scale = T(e.wind_scale);
   out.input_delays_s = e.input_delays_s;
   out.lag_inputs = e.lag_inputs;
   out.saturation_inputs = e.saturation_inputs;

@@ -4,8 +4,9 @@
 //   u_s = clamp(u_c, -limit, +limit)                        (saturation)
 //   u_a = x_lag,  x_lag' = (u_s - x_lag) / time_constant     (actuator_lag; else u_a = u_s)
 //   u_a[yaw] += input_bias                                   (input_bias)
-// each on the inputs it acts on (EffectValues: lag_inputs, saturation_inputs, bias_input).
-//   x' = V::Derivative(x, u_a, p_eff, {current})             (current)
+// each on the inputs it acts on (EffectValues: lag_inputs, saturation_inputs, bias_input),
+// never on a measured disturbance (a wind input, CommandedInputs in simulators/vessel.h).
+//   x' = V::Derivative(x, u_a, p_eff, {current, wind})       (current, wind)
 // where p_eff is p with inertia, damping and resistance parameters scaled (inertia, damping,
 // resistance). The measured
 // rate channel carries sensor_bias (MeasuredRate); input_delay shifts u_c in time (caller);
@@ -25,6 +26,7 @@ namespace usvid {
 template <Vessel V>
 struct Plant {
   static constexpr int kStates = V::kStates + V::kInputs;
+  static constexpr int kCommanded = CommandedInputs<V>();
   // The state a surge force accelerates: u, else U, else v (the msd's velocity); -1: none.
   static constexpr int kSurgeState = [] {
     for (std::string_view name : {"u", "U", "v"})
@@ -60,6 +62,7 @@ struct Plant {
     std::array<T, V::kInputs> u_sat;
     for (int i = 0; i < V::kInputs; ++i) {
       u_sat[i] = u_cmd[i];
+      if (i >= kCommanded) continue;  // a measured wind is not an actuator
       if (ValueOf(u_sat[i]) > limit[i]) u_sat[i] = T(limit[i]);
       if (ValueOf(u_sat[i]) < -limit[i]) u_sat[i] = T(-limit[i]);
     }
@@ -68,7 +71,7 @@ struct Plant {
     std::array<T, V::kInputs> u_applied;
     const bool lagged = ValueOf(e.lag_time_constant_s) > 0.0;
     for (int i = 0; i < V::kInputs; ++i) {
-      if (lagged && ((e.lag_inputs >> i) & 1u)) {
+      if (lagged && i < kCommanded && ((e.lag_inputs >> i) & 1u)) {
         u_applied[i] = lag[i];
         dlag[i] = (u_sat[i] - lag[i]) / e.lag_time_constant_s;
       } else {
@@ -78,7 +81,7 @@ struct Plant {
     }
     u_applied[e.bias_input >= 0 && e.bias_input < V::kInputs ? e.bias_input : V::kYawInput] +=
         e.input_bias;
-    const Environment<T> env{e.current_north, e.current_east};
+    const Environment<T> env{e.current_north, e.current_east, e.wind_scale};
     V::template Derivative<T>(x, u_applied.data(), p_eff, env, dx);
     if constexpr (kSurgeState >= 0) dx[kSurgeState] += e.surge_acceleration;
     for (const ExtraTerm<T>& extra : e.extra_terms) {

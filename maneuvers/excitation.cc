@@ -14,6 +14,7 @@ std::pair<double, double> ExcitationRange(const Actuation& act, int i) {
     case InputRole::kSide:
       return {lo, hi};
     case InputRole::kFixed:
+    case InputRole::kMeasured:
       break;
   }
   return {act.neutral[i], act.neutral[i]};

@@ -10,7 +10,9 @@
 namespace usvid {
 namespace {
 
-bool Excited(const Actuation& act, int i) { return act.roles[i] != InputRole::kFixed; }
+bool Excited(const Actuation& act, int i) {
+  return act.roles[i] != InputRole::kFixed && act.roles[i] != InputRole::kMeasured;
+}
 
 // A stream per input, derived from the seed, so inputs do not share randomness.
 std::mt19937_64 StreamFor(uint64_t seed, uint64_t salt, int input) {

@@ -17,6 +17,10 @@ enum class InputRole {
   kYaw,     // steers: the maneuver's main channel
   kSide,    // a free extra input (sway force): zero in classic maneuvers, excited in random ones
   kFixed,   // held at its neutral value (reversing bucket)
+  // A measured disturbance, not a command (the relative wind): held at its neutral value (none)
+  // in generated maneuvers, read from a record that has its channel, neutral in one that has
+  // not; no actuator effect acts on it.
+  kMeasured,
 };
 
 struct Actuation {

@@ -40,7 +40,8 @@ Channels DefaultChannels(const IdentifyRequest& o) {
     }
     // With a force map, the forces it derives stand in for the commands.
     if (c.inputs.empty())
-      c.inputs = o.preprocess.forces.empty() ? info.inputs : ForceChannels(o.preprocess.forces);
+      c.inputs =
+          o.preprocess.forces.empty() ? info.CommandedInputs() : ForceChannels(o.preprocess.forces);
   }
   if (c.states.empty() || c.inputs.empty())
     throw InputError("identify: give --vessel, or --states and --inputs");

@@ -37,37 +37,52 @@ double SampledMedian(const Eigen::VectorXd& v) {
 }
 
 // The maneuver, with every command but the yaw held at the record's first value: the record's
-// approach (its thrust, its bucket), which a vessel's default cruise need not be.
+// approach (its thrust, its bucket), which a vessel's default cruise need not be. A measured
+// disturbance (the wind) follows the record in time instead, zero-order hold.
 class RecordedApproach : public Maneuver {
  public:
   RecordedApproach(std::unique_ptr<Maneuver> inner, const Actuation& act, const Dataset& recorded)
-      : inner_(std::move(inner)), held_(act.inputs(), NAN) {
-    for (int i = 0; i < act.inputs(); ++i)
-      if (i != act.yaw_input && recorded.Has(act.input_names[i]))
+      : inner_(std::move(inner)), held_(act.inputs(), NAN), followed_(act.inputs()) {
+    for (int i = 0; i < act.inputs(); ++i) {
+      if (i == act.yaw_input || !recorded.Has(act.input_names[i])) continue;
+      const Channel& c = recorded.Get(act.input_names[i]);
+      if (act.roles[i] != InputRole::kMeasured) {
         held_[i] = recorded[act.input_names[i]](0);
+        continue;
+      }
+      for (Eigen::Index k = 0; k < recorded.rows(); ++k)
+        if (c.sampled(k)) followed_[i].emplace_back(recorded.t()(k), c.values(k));
+    }
   }
   std::string Spec() const override { return inner_->Spec(); }
   double Duration() const override { return inner_->Duration(); }
   std::vector<double> InitialCommand() const override {
     std::vector<double> u = inner_->InitialCommand();
-    Hold(u);
+    Hold(0.0, u);
     return u;
   }
   void Command(double t, std::span<const double> state, std::span<double> u) override {
     inner_->Command(t, state, u);
-    Hold(u);
+    Hold(t, u);
   }
   bool Done() const override { return inner_->Done(); }
   nlohmann::json Report() const override { return inner_->Report(); }
 
  private:
   template <typename U>
-  void Hold(U& u) const {
-    for (size_t i = 0; i < held_.size(); ++i)
+  void Hold(double t, U& u) const {
+    for (size_t i = 0; i < held_.size(); ++i) {
       if (std::isfinite(held_[i])) u[i] = held_[i];
+      const auto& f = followed_[i];
+      if (f.empty()) continue;
+      auto it = std::upper_bound(f.begin(), f.end(), t + 1e-12,
+                                 [](double x, const auto& sample) { return x < sample.first; });
+      u[i] = it == f.begin() ? f.front().second : std::prev(it)->second;
+    }
   }
   std::unique_ptr<Maneuver> inner_;
   std::vector<double> held_;
+  std::vector<std::vector<std::pair<double, double>>> followed_;  // (t, value) per measured input
 };
 
 double SampleRate(const Dataset& d) {

@@ -54,9 +54,13 @@ std::vector<MmgEstimate> EstimateMmgCoefficients(const MmgHull& h) {
   const double wetted = 1.7 * h.L * h.d + h.C_b * h.L * h.B;  // V / d = C_b L B
   add("R_0", 1.2 * c_f * wetted / (h.L * h.d), "ITTC 1957 friction line, form factor 1.2");
 
-  // Surge, sway and yaw derivatives. Linear: Kijima et al. 1990; cubic: Yoshimura & Masumoto
-  // 2012, but where their sign disagrees with the full-form ships (Y_vvr, N_vrr), Kijima et al.
-  // 1990's beta-r cross terms.
+  // Surge, sway and yaw derivatives. Linear: Kijima et al. 1990; the pure cubic terms (v^3,
+  // r^3): Yoshimura & Masumoto 2012; the cross terms (v^2 r, v r^2): Kijima et al. 1990's beta-r
+  // terms, fitted on full-form merchant hulls. Yoshimura & Masumoto's cross terms, from slender
+  // ships (C_b up to 0.8), have the wrong sign for full hulls (Y_vvr, N_vrr) or twice the size
+  // (N_vvr: KVLCC2 -0.53 against -0.29; Kijima's -0.14), and turned the Esso Osaka and KVLCC2
+  // circles 30-56 % too wide (docs/model.md#estimates-from-the-particulars). With v' = -beta:
+  // Y_vvr = Y_bbr, Y_vrr = -Y_brr, N_vvr = N_bbr, N_vrr = -N_brr.
   const char* yoshimura = "Yoshimura & Masumoto 2012";
   const char* kijima = "Kijima et al. 1990";
   add("X_vv", 1.15 * cbl - 0.18, yoshimura);
@@ -67,12 +71,12 @@ std::vector<MmgEstimate> EstimateMmgCoefficients(const MmgHull& h) {
   add("Y_r", m + m_x - 1.5 * cbl, kijima);
   add("Y_vvv", -0.185 * lb + 0.48, yoshimura);
   add("Y_vvr", 1.5 * db * h.C_b - 0.65, kijima);
-  add("Y_vrr", -(0.26 * (1 - h.C_b) * lb + 0.11), yoshimura);
+  add("Y_vrr", -5.95 * db * (1 - h.C_b), kijima);
   add("Y_rrr", -0.051, yoshimura);
   add("N_v", -k, kijima);
   add("N_r", -0.54 * k + k * k, kijima);
   add("N_vvv", -(0.66 - 0.69 * h.C_b), yoshimura);
-  add("N_vvr", 1.55 * cbl - 0.76, yoshimura);
+  add("N_vvr", -(57.5 * cbl * cbl - 18.4 * cbl + 1.6), kijima);
   add("N_vrr", 0.5 * db * h.C_b - 0.05, kijima);
   add("N_rrr", 0.25 * cbl - 0.056, yoshimura);
 

@@ -135,6 +135,7 @@ class TypedVesselSimulator : public VesselSimulator {
       d.Set("chi", course);
     }
     for (int i = 0; i < V::kInputs; ++i) {
+      if (info_.IsMeasuredInput(i) && !info_.wind_body) continue;  // no body for the wind
       Eigen::VectorXd c(n);
       for (Eigen::Index k = 0; k < n; ++k) c(k) = commands.At(times[k])[i];
       d.Set(info_.inputs[i], c);

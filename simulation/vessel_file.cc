@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/parse_number.h"
 #include "simulation/mmg_estimates.h"
+#include "simulation/wind_estimates.h"
 #include "simulators/mmg.h"
 
 namespace usvid {
@@ -171,10 +172,43 @@ VesselFile ReadVesselFile(const std::string& path) {
                                 FormatNumber(n_max));
   ctl.RefuseUnknown("rudder_sign, rudder_max_deg, rudder_rate_deg_s, n_min, n_max, n_cruise");
 
+  // The body above the water: Fujiwara et al. 1998's inputs.
+  std::optional<Section> wind = top.Child("wind");
+  WindBody body;
+  double rho_air = 1.22;
+  bool wind_in_model = false;
+  if (wind) {
+    body.L = h.L;
+    body.B = wind->Number("B").value_or(h.B);
+    body.A_T = wind->Positive("A_T", "transverse projected area above water [m^2]");
+    body.A_L = wind->Positive("A_L", "lateral projected area above water [m^2]");
+    body.A_OD = wind->Positive("A_OD", "lateral area of the superstructure and deck cargo [m^2]");
+    body.C = wind->Required("C", "centre of A_L ahead of midship [m]");
+    body.C_BR = wind->Required("C_BR", "centre of A_OD ahead of midship [m]");
+    body.H_BR = wind->Positive("H_BR", "height of the superstructure's top above water [m]");
+    body.H_C = wind->Positive("H_C", "height of A_L's centre above water [m]");
+    if (body.B <= 0) wind->FailKey("B", "must be above 0");
+    if (body.A_OD > body.A_L)
+      wind->FailKey("A_OD", "the superstructure's area " + FormatNumber(body.A_OD) +
+                                " m^2 exceeds the whole lateral area A_L " +
+                                FormatNumber(body.A_L) + " m^2");
+    rho_air = wind->Number("rho_air").value_or(1.22);
+    if (rho_air <= 0) wind->FailKey("rho_air", "must be above 0");
+    const std::string model = wind->Text("model").value_or("fujiwara");
+    if (model != "fujiwara" && model != "none")
+      wind->FailKey("model",
+                    "give fujiwara (the wind acts on the model) or none (the model "
+                    "ignores it; the effect wind can still add it)");
+    wind_in_model = model == "fujiwara";
+    wind->RefuseUnknown("A_T, A_L, A_OD, C, C_BR, H_BR, H_C, B, rho_air, model");
+  }
+
   // Coefficients: what is given, else the estimate.
   std::map<std::string, double> given;
   std::optional<Section> coefficients = top.Child("coefficients");
   std::vector<MmgEstimate> estimates = EstimateMmgCoefficients(h);
+  if (wind)
+    for (MmgEstimate& e : EstimateWindCoefficients(body)) estimates.push_back(std::move(e));
   if (coefficients) {
     for (const auto& [key, node] : coefficients->Items()) {
       const bool known = std::any_of(estimates.begin(), estimates.end(),
@@ -183,12 +217,13 @@ VesselFile ReadVesselFile(const std::string& path) {
         std::string names;
         for (const MmgEstimate& e : estimates) names += (names.empty() ? "" : ", ") + e.name;
         coefficients->Fail(node, key + ": unknown coefficient (known: " + names +
-                                     "; m and I_zG are particulars, under hull)");
+                                     "; m and I_zG are particulars, under hull" +
+                                     (wind ? ")" : "; the wind's need a wind section)"));
       }
       given[key] = *coefficients->Number(key);
     }
   }
-  top.RefuseUnknown("name, rho, hull, propeller, rudder, controls, coefficients");
+  top.RefuseUnknown("name, rho, hull, propeller, rudder, controls, wind, coefficients");
 
   std::vector<double> p(Mmg::kDefaultParams.begin(), Mmg::kDefaultParams.end());
   auto set = [&](std::string_view name, double v) {
@@ -218,7 +253,12 @@ VesselFile ReadVesselFile(const std::string& path) {
   set("x_P", x_P / h.L);
   set("x_R", x_R / h.L);
   set("delta_sign", sign == "ittc" ? -1.0 : 1.0);
+  set("rho_air", rho_air);
+  set("A_T", body.A_T);
+  set("A_L", body.A_L);
+  set("wind_factor", wind_in_model ? 1.0 : 0.0);
   out.params = std::move(p);
+  out.wind_body = wind.has_value();
   out.length_m = h.L;
   out.warnings = OutsideValidity(h);
 
@@ -228,9 +268,10 @@ VesselFile ReadVesselFile(const std::string& path) {
   a.yaw_full = full;
   a.yaw_full_deg = rudder_max_deg;
   a.thrust_cruise = n_cruise;
-  a.neutral = {0.0, n_cruise};
-  a.input_min = {-full, n_min};
-  a.input_max = {full, n_max};
+  // No wind unless measured; its direction either way round the compass.
+  a.neutral = {0.0, n_cruise, 0.0, 0.0};
+  a.input_min = {-full, n_min, 0.0, -2.0 * kPi};
+  a.input_max = {full, n_max, 100.0, 2.0 * kPi};
   a.yaw_sign = sign == "ittc" ? -1.0 : 1.0;
   a.yaw_rate_limit = rudder_rate * kPi / 180.0;
   return out;

@@ -24,6 +24,7 @@ struct VesselFile {
   // outside the range its formula was fitted on).
   std::vector<std::string> estimated;
   std::vector<std::string> warnings;
+  bool wind_body = false;  // the file has a wind section (VesselInfo::wind_body)
 };
 
 // Throws InputError "file:line: key: what" for a file that cannot be read, a syntax error, a

@@ -113,11 +113,14 @@ const std::map<std::string, std::unique_ptr<VesselSimulator>>& Registry() {
 // A vessel file's vessel: the Mmg type with the file's parameters and controls.
 std::unique_ptr<VesselSimulator> MakeFromFile(const std::string& path) {
   const VesselFile file = ReadVesselFile(path);
-  VesselInfo info = InfoFor<Mmg>({InputRole::kYaw, InputRole::kThrust}, file.actuation);
+  VesselInfo info = InfoFor<Mmg>(
+      {InputRole::kYaw, InputRole::kThrust, InputRole::kMeasured, InputRole::kMeasured},
+      file.actuation);
   info.name = file.name;
   info.default_params = file.params;
   info.length_m = file.length_m;
   info.estimated = file.estimated;
+  info.wind_body = file.wind_body;
   std::cerr << "usvid: vessel " << file.name << " (" << path << "): " << file.estimated.size()
             << " coefficients not given, estimated from the particulars (usvid vessel lists "
                "them; docs/model.md#vessel-files)\n";
@@ -140,6 +143,24 @@ bool IsVesselFile(const std::string& name) {
   for (const char* ext : {".yaml", ".yml", ".json"})
     if (name.size() > std::string(ext).size() && name.ends_with(ext)) return true;
   return false;
+}
+
+bool VesselInfo::IsMeasuredInput(size_t i) const {
+  return i < actuation.roles.size() && actuation.roles[i] == InputRole::kMeasured;
+}
+
+std::vector<std::string> VesselInfo::CommandedInputs() const {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < inputs.size(); ++i)
+    if (!IsMeasuredInput(i)) out.push_back(inputs[i]);
+  return out;
+}
+
+std::vector<std::string> VesselInfo::InputsIn(const Dataset& data) const {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < inputs.size(); ++i)
+    if (!IsMeasuredInput(i) || data.Has(inputs[i])) out.push_back(inputs[i]);
+  return out;
 }
 
 int VesselInfo::StateIndex(const std::string& state) const {

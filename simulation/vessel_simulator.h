@@ -39,7 +39,16 @@ struct VesselInfo {
   // A vessel file's coefficients that it did not give, each "name = value (source)": estimated
   // from its particulars (simulation/mmg_estimates.h). Empty for the compiled-in vessels.
   std::vector<std::string> estimated;
+  // The vessel feels the wind: it has a wind model (simulators/wind_force.h) with areas, driven
+  // by its measured inputs wind_speed and wind_direction (a vessel file with a wind section).
+  bool wind_body = false;
 
+  // Whether input i is a measured disturbance (InputRole::kMeasured), not a command.
+  bool IsMeasuredInput(size_t i) const;
+  // The inputs that are commands, in order: what the equation methods take by default.
+  std::vector<std::string> CommandedInputs() const;
+  // The inputs `data` holds: every command, and the measured disturbances it logged.
+  std::vector<std::string> InputsIn(const Dataset& data) const;
   int StateIndex(const std::string& name) const;  // -1 when absent
   // Parameters by name over the defaults; throws InputError on an unknown name.
   std::vector<double> ParamsFrom(const nlohmann::json& overrides) const;

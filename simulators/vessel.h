@@ -10,6 +10,9 @@
 //   static constexpr int kThrustInput; // the input that drives it forward (-1: none)
 //   static constexpr int kRateState;   // the rate gyro's channel (r; msd: v)
 //   static constexpr int kHeadingState;// psi or chi (-1: none)
+// and optionally
+//   static constexpr int kCommandedInputs; // inputs from this index on are measured
+//                                          // disturbances (wind), not commands
 //   template <typename T>
 //   static void Derivative(const T* x, const T* u, const T* p, const Environment<T>& env,
 //                          T* dx);
@@ -29,12 +32,27 @@ namespace usvid {
 // the rest, `resistance` alone.
 enum class ParamGroup { kInertia, kDamping, kResistance, kOther };
 
-// The world around the hull: a constant irrotational current, earth-fixed [m/s].
+// The world around the hull: a constant irrotational current, earth-fixed [m/s], and a wind
+// force the model lacks: `wind_scale` times the vessel's own wind model, driven by its measured
+// wind inputs, added to what the model has (effect `wind`; vessels without a wind model ignore
+// it).
 template <typename T>
 struct Environment {
   T current_north = T(0);
   T current_east = T(0);
+  T wind_scale = T(0);
 };
+
+// The inputs that are commands (rudder, propeller, forces): all but the measured disturbances
+// that follow them (kCommandedInputs). Maneuvers, actuator effects and the equation methods'
+// default inputs take these alone.
+template <typename V>
+constexpr int CommandedInputs() {
+  if constexpr (requires { V::kCommandedInputs; })
+    return V::kCommandedInputs;
+  else
+    return V::kInputs;
+}
 
 // Positions and heading: they follow from the velocities by the kinematics, so fits and scores
 // of the dynamics leave them out.

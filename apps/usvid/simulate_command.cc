@@ -1,10 +1,13 @@
 // usvid simulate --vessel V --maneuver M [--effect NAME=VALUE[@INPUT] ...] [--noise S] [--seed N]
-//                [--rates imu=50,gps=5,jet=10] --out F.csv          (writes F.truth.json too)
+//                [--rates imu=50,gps=5,jet=10] [--wind SPEED[:FROM_DEG]] --out F.csv
+//                                                                   (writes F.truth.json too)
 // usvid simulate --vessel V --inputs IN.csv [--dt H] --out F.csv
 
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <optional>
+#include <random>
 
 #include "apps/usvid/commands.h"
 #include "apps/usvid/data_file.h"
@@ -12,8 +15,10 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/parse_number.h"
 #include "effects/effect_values.h"
 #include "maneuvers/maneuver_factory.h"
+#include "maneuvers/true_wind.h"
 #include "sensors/noise.h"
 #include "sensors/sample_rates.h"
 #include "simulation/vessel_simulator.h"
@@ -35,8 +40,31 @@ struct SimulateOptions {
   double dt = 0.01;
   double rate_hz = 20.0;
   std::string integrator = "rk4";
+  std::string wind;
   std::string out;
 };
+
+// --wind SPEED[:FROM_DEG]: the mean true wind; without a direction, one drawn from the seed.
+TrueWind ParseWind(const std::string& text, uint64_t seed) {
+  const std::string where = "--wind '" + text + "': ";
+  const auto colon = text.find(':');
+  auto number = [&](const std::string& t) {
+    const ParsedNumber p = ParseNumber(t);
+    if (p.status != NumberStatus::kOk) throw InputError(where + DescribeNumberStatus(p.status, t));
+    return p.value;
+  };
+  TrueWind w;
+  w.speed = number(text.substr(0, colon));
+  if (!(w.speed >= 0.0 && w.speed <= 60.0))
+    throw InputError(where + "the speed must be in [0, 60] m/s");
+  if (colon != std::string::npos) {
+    w.from_rad = number(text.substr(colon + 1)) * std::numbers::pi / 180.0;
+  } else {
+    std::mt19937_64 rng(seed ^ 0x3A1Dull);
+    w.from_rad = std::uniform_real_distribution<double>(0.0, 2.0 * std::numbers::pi)(rng);
+  }
+  return w;
+}
 
 // F.csv -> F.truth.json
 std::string TruthPath(const std::string& out) {
@@ -58,6 +86,10 @@ void RunSimulate(const SimulateOptions& o) {
   const std::vector<Effect> effects =
       MergeEffects(o.params.empty() ? std::vector<Effect>{} : EffectsOfFile(o.params),
                    ParseEffects(o.effects, o.seed));
+  for (const Effect& e : effects)
+    if (e.kind == EffectKind::kWind && !info.wind_body)
+      throw InputError("--effect wind: vessel " + info.name +
+                       " has no wind model (a vessel file with a wind section has)");
   const EffectValues<double> values = ValuesOf(effects, info.inputs, info.states);
   std::vector<double> params = info.default_params;
   if (!o.params.empty()) params = info.ParamsFromFile(o.params);
@@ -86,10 +118,16 @@ void RunSimulate(const SimulateOptions& o) {
       act.thrust_cruise = *o.cruise;
     }
     auto maneuver = MakeManeuver(o.maneuver, act, o.duration, o.seed);
+    if (!o.wind.empty())
+      maneuver = UnderTrueWind(std::move(maneuver), act, ParseWind(o.wind, o.seed), o.seed);
     std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "
               << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
     result = sim.RunManeuver(*maneuver, params, values, run);
   } else {
+    if (!o.wind.empty())
+      throw InputError(
+          "simulate: --wind makes a maneuver's wind; with --inputs the file's "
+          "wind_speed and wind_direction columns are the wind");
     const Dataset in = ReadDataFile(o.inputs, "usvid simulate");
     result = sim.RunInputs(in, params, values, run);
     truth["inputs_file"] = o.inputs;
@@ -151,8 +189,13 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--effect", o->effects,
                   "NAME=VALUE, repeatable: input_delay, current (SPEED[:DIR_DEG]), actuator_lag, "
                   "input_bias, sensor_bias, inertia, damping, saturation, surge_force (m/s^2), "
-                  "resistance; NAME=VALUE@INPUT for input_delay, actuator_lag, input_bias or "
-                  "saturation on one input; missing_term=COEFFICIENT:STATE:TERM");
+                  "resistance, wind (scale); NAME=VALUE@INPUT for input_delay, actuator_lag, "
+                  "input_bias or saturation on one input; missing_term=COEFFICIENT:STATE:TERM");
+  cmd->add_option("--wind", o->wind,
+                  "A gusty true wind SPEED[:FROM_DEG] (m/s; where it blows from, clockwise from "
+                  "north; default a direction from the seed): the record's wind_speed and "
+                  "wind_direction are the relative wind aboard (vessel files with a wind "
+                  "section)");
   cmd->add_option("--noise", o->noise,
                   "Gaussian noise on every measured channel, as a fraction of its standard "
                   "deviation (0.01 = 1 %)");

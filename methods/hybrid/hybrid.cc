@@ -89,7 +89,7 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   // The derivative residual is regressed on the library at rows spread over the first part (at
   // most the refits' max_rows): the library has tens of columns, and on a long log it was the
   // largest block held.
-  PreparedData prepared = Preprocess(first, states, info.inputs, PreprocessOptions{});
+  PreparedData prepared = Preprocess(first, states, info.InputsIn(first), PreprocessOptions{});
   ThinRows(prepared.data, refit.max_rows);
   // A speed-scaled model's hull and rudder forces are U^2 f(v', r', rudder angle); its
   // propeller has a model of its own (thrust from the advance ratio), so the propeller's
@@ -97,7 +97,7 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   const Actuation& a = info.actuation;
   const bool scaled = info.speed_scaled_forces && a.speed_is_surge;
   const std::vector<std::string> library_inputs =
-      !scaled ? info.inputs
+      !scaled          ? info.CommandedInputs()
       : a.yaw_is_angle ? std::vector<std::string>{info.inputs[a.yaw_input]}
                        : std::vector<std::string>{};
   // From the residual of the vessel as given and of the refitted one: a refit that bends its

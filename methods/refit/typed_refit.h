@@ -418,7 +418,11 @@ std::map<std::string, Eigen::VectorXd> DerivativeResidualTyped(const VesselInfo&
     const std::string name(V::kStateNames[i]);
     x_col[i] = IsPositionOrHeading(name) ? (data.Has(name) ? &data[name] : nullptr) : need(name);
   }
-  for (int i = 0; i < V::kInputs; ++i) u_col[i] = need(std::string(V::kInputNames[i]));
+  for (int i = 0; i < V::kInputs; ++i) {
+    const std::string name(V::kInputNames[i]);
+    // A measured disturbance (wind) the data lacks: none.
+    u_col[i] = i >= CommandedInputs<V>() && !data.Has(name) ? nullptr : need(name);
+  }
   for (int c = 0; c < C; ++c) dot_col[c] = need(std::string(V::kStateNames[dyn[c]]) + "_dot");
   std::map<std::string, Eigen::VectorXd> out;
   for (int c = 0; c < C; ++c) out[std::string(V::kStateNames[dyn[c]])].resize(data.rows());
@@ -426,7 +430,7 @@ std::map<std::string, Eigen::VectorXd> DerivativeResidualTyped(const VesselInfo&
   std::array<double, V::kInputs> u;
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
     for (int i = 0; i < V::kStates; ++i) x[i] = x_col[i] != nullptr ? (*x_col[i])(k) : 0.0;
-    for (int i = 0; i < V::kInputs; ++i) u[i] = (*u_col[i])(k);
+    for (int i = 0; i < V::kInputs; ++i) u[i] = u_col[i] != nullptr ? (*u_col[i])(k) : 0.0;
     V::template Derivative<double>(x.data(), u.data(), params.data(), Environment<double>{},
                                    dx.data());
     for (int c = 0; c < C; ++c)

@@ -73,7 +73,9 @@ TEST_F(SimulateCliTest, BadInputIsRefusedWithoutOutput) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--vessel titanic --maneuver zigzag", "unknown vessel"},
       {"--vessel odin3dof --maneuver spiral", "unknown maneuver"},
-      {"--vessel odin3dof --maneuver zigzag --effect wind=3", "unknown effect"},
+      {"--vessel odin3dof --maneuver zigzag --effect gust=3", "unknown effect"},
+      {"--vessel odin3dof --maneuver zigzag --effect wind=1", "odin3dof has no wind model"},
+      {"--vessel odin3dof --maneuver zigzag --wind 3:90", "no wind inputs"},
       {"--vessel odin3dof --maneuver zigzag --effect current=abc", "'abc' is not a number"},
       {"--vessel msd --maneuver zigzag", "no heading"},
       {"--vessel odin3dof --maneuver zigzag --duration -5", "--duration"},

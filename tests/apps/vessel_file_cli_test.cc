@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "core/json_file.h"
 #include "tests/apps/run_usvid.h"
@@ -27,7 +29,7 @@ TEST(VesselFileCliTest, AShipFromItsParticularsSimulatesAZigzag) {
   const std::string out = (dir / "zz.csv").string();
   const auto r = RunUsvid("simulate --vessel " + kEsso + " --maneuver zigzag:20/20 --out " + out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_THAT(r.err, HasSubstr("40 coefficients not given, estimated from the particulars"));
+  EXPECT_THAT(r.err, HasSubstr("50 coefficients not given, estimated from the particulars"));
   const nlohmann::json truth = ReadJsonFile((dir / "zz.truth.json").string());
   // A 3 m tanker model at 10 rps: a zig-zag with overshoots of a few degrees.
   const double first = truth.at("maneuver").at("report").at("first_overshoot_deg");
@@ -38,7 +40,7 @@ TEST(VesselFileCliTest, AShipFromItsParticularsSimulatesAZigzag) {
       RunUsvid("vessel --vessel " + kEsso + " --points 2 --out " + (dir / "vessel").string());
   ASSERT_EQ(v.exit_code, 0) << v.err;
   EXPECT_THAT(v.out, HasSubstr("N_v = -0.1341 (Kijima et al. 1990)"));
-  EXPECT_EQ(ReadJsonFile((dir / "vessel" / "vessel.json").string()).at("estimated").size(), 40u);
+  EXPECT_EQ(ReadJsonFile((dir / "vessel" / "vessel.json").string()).at("estimated").size(), 50u);
 }
 
 TEST(VesselFileCliTest, RefitRecoversAHiddenYawDampingAndKeepsParticularsFixed) {
@@ -79,6 +81,53 @@ TEST(VesselFileCliTest, ASuiteRunsOnAVesselFile) {
   // The figures are named by the file's stem, not its path.
   EXPECT_TRUE(fs::exists(dir / "out" / "fit_esso-osaka.svg"));
   EXPECT_TRUE(fs::exists(dir / "out" / "report.html"));
+}
+
+// The Esso Osaka file with `model: none` under wind: the same ship, whose model ignores the wind.
+fs::path EssoWithoutWind(const fs::path& dir) {
+  std::ifstream in(kEsso);
+  std::stringstream text;
+  text << in.rdbuf();
+  WriteText(dir / "esso-no-wind.yaml", text.str() + "  model: none\n");
+  return dir / "esso-no-wind.yaml";
+}
+
+TEST(VesselFileCliTest, DiagnoseFindsTheWindAModelIgnoresAndItsSize) {
+  // The truth: random steps under a gusty true wind of 3 m/s from 60 deg, which the record logs
+  // as the relative wind aboard; the ship feels all of it (effect wind, scale 1, on a model
+  // without wind).
+  const fs::path dir = FreshTempDir();
+  const std::string no_wind = EssoWithoutWind(dir).string();
+  const std::string data = (dir / "windy.csv").string();
+  const auto s = RunUsvid("simulate --vessel " + no_wind +
+                          " --maneuver random-steps --duration 400 --wind 3:60 --effect wind=1 "
+                          "--noise 0.01 --seed 3 --out " +
+                          data);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const nlohmann::json truth = ReadJsonFile((dir / "windy.truth.json").string());
+  EXPECT_EQ(truth.at("effects").at(0).at("effect"), "wind");
+  EXPECT_NEAR(truth.at("maneuver").at("report").at("true_wind").at("from_deg").get<double>(), 60.0,
+              1e-9);
+  // Against the model that ignores the wind, diagnose names it and sizes it.
+  const auto d = RunUsvid("diagnose --vessel " + no_wind + " --data " + data + " --out " +
+                          (dir / "without").string());
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  const nlohmann::json without = ReadJsonFile((dir / "without" / "diagnosis.json").string());
+  EXPECT_EQ(without.at("cause"), "wind");
+  const nlohmann::json& best = without.at("candidates").at(0);
+  EXPECT_NEAR(best.at("parameters").at("scale").get<double>(), 1.0, 0.05);
+  EXPECT_GT(without.at("gain").at("heldout_error_reduction").get<double>(), 0.5);
+  // Against the model with the wind (the same ship with model fujiwara), nothing is missing.
+  const auto w = RunUsvid("diagnose --vessel " + kEsso + " --data " + data + " --out " +
+                          (dir / "with").string());
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  EXPECT_EQ(ReadJsonFile((dir / "with" / "diagnosis.json").string()).at("cause"), "none");
+  // A vessel without a wind model cannot hide one.
+  const auto bad = RunUsvid("simulate --vessel odin3dof --maneuver zigzag --effect wind=1 --out " +
+                            (dir / "bad.csv").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("odin3dof has no wind model"));
+  EXPECT_FALSE(fs::exists(dir / "bad.csv"));
 }
 
 TEST(VesselFileCliTest, ABadFileIsExitTwoNamingTheLineAndWritesNothing) {

@@ -259,7 +259,8 @@ TEST_F(EffectsTest, MissingTermAddsToThatStatesDerivative) {
 // Bad effect specs name the item and the rule.
 TEST_F(EffectsTest, BadSpecsAreRefused) {
   EXPECT_THROW(ParseEffect("current=abc", 1), InputError);
-  EXPECT_THROW(ParseEffect("wind=3", 1), InputError);
+  EXPECT_THROW(ParseEffect("gust=3", 1), InputError);
+  EXPECT_THROW(ParseEffect("wind=12", 1), InputError);
   EXPECT_THROW(ParseEffect("saturation=1.5", 1), InputError);
   EXPECT_THROW(ParseEffect("actuator_lag=0", 1), InputError);
   EXPECT_THROW(ParseEffect("input_delay=-1", 1), InputError);

@@ -13,7 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -72,7 +74,8 @@ TEST(EssoOsakaTest, TheParticularsAloneReplayEachZigzagFromItsExecute) {
   const std::string map =
       "\"t=t [s],north=x_position_mid [m],east=y_position_mid [m],psi=psi_hat [rad],"
       "u=u_velo [m/s],v=vm_velo [m/s],r=r_angvelo [rad/s],n=n_prop [rps],"
-      "delta=delta_rudder [rad]\"";
+      "delta=delta_rudder [rad],wind_speed=wind_velo_relative_mid [m/s],"
+      "wind_direction=wind_dir_relative_mid [rad]\"";
   const std::string model = (dir / "nominal.json").string();
   bool first = true;
   for (const Zigzag& z : {Zigzag{"13_04_24", 20, 44.2}, Zigzag{"13_14_21", 30, 18.4},
@@ -103,6 +106,49 @@ TEST(EssoOsakaTest, TheParticularsAloneReplayEachZigzagFromItsExecute) {
     EXPECT_NEAR(loop.at("replayed_from_s").get<double>(), z.execute_s - 5.0, 1.0) << z.file;
     EXPECT_LT(std::abs(loop.at("first_overshoot_error_deg").get<double>()), 5.0) << z.file;
   }
+}
+
+TEST(EssoOsakaTest, DiagnoseNamesTheLoggedWindThatAModelIgnores) {
+  // The random run of 31 Jul 12:29 (684 s, relative wind 0.3-3 m/s). Against the model from the
+  // particulars without its wind (model: none), diagnose names the wind; diagnosed again with
+  // the wind it fitted (its model.json), nothing. Fujiwara's wind from the areas alone explains
+  // most of it too. Measured when written (docs/real-data.md#wind): scale 0.65, held-out error
+  // 0.221 -> 0.089; then cause none; the file's own wind: nominal error 0.102.
+  if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
+  const fs::path dir = FreshTempDir();
+  const std::string csv = (dir / "random.csv").string();
+  ASSERT_EQ(RunUsvid("import --format csv --data " + kData +
+                     "/random/random_31-Jul-2020_12_29_58.csv --map \"t=t [s],"
+                     "north=x_position_mid [m],east=y_position_mid [m],psi=psi_hat [rad],"
+                     "u=u_velo [m/s],v=vm_velo [m/s],r=r_angvelo [rad/s],n=n_prop [rps],"
+                     "delta=delta_rudder [rad],wind_speed=wind_velo_relative_mid [m/s],"
+                     "wind_direction=wind_dir_relative_mid [rad]\" --out " +
+                     csv)
+                .exit_code,
+            0);
+  const std::string with_wind =
+      std::string(USVID_SOURCE_DIR) + "/docs/vessels/files/esso-osaka.yaml";
+  std::ifstream in(with_wind);
+  std::stringstream text;
+  text << in.rdbuf();
+  const fs::path without_wind = dir / "esso-no-wind.yaml";
+  std::ofstream(without_wind) << text.str() << "  model: none\n";
+  auto diagnose = [&](const std::string& vessel, const std::string& extra,
+                      const std::string& name) {
+    const auto r = RunUsvid("diagnose --vessel " + vessel + extra + " --data " + csv + " --out " +
+                            (dir / name).string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return ReadJsonFile((dir / name / "diagnosis.json").string());
+  };
+  const nlohmann::json without = diagnose(without_wind.string(), "", "without");
+  EXPECT_EQ(without.at("cause"), "wind");
+  EXPECT_GT(without.at("gain").at("heldout_error_reduction").get<double>(), 0.2);
+  const nlohmann::json again = diagnose(
+      without_wind.string(), " --params " + (dir / "without" / "model.json").string(), "again");
+  for (const auto& cause : again.at("causes")) EXPECT_NE(cause, "wind");
+  const nlohmann::json with = diagnose(with_wind, "", "with");
+  EXPECT_LT(with.at("nominal").at("heldout_error").get<double>(),
+            0.6 * without.at("nominal").at("heldout_error").get<double>());
 }
 
 }  // namespace

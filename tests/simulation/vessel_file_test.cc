@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -15,6 +16,7 @@
 #include "maneuvers/maneuver_factory.h"
 #include "simulation/mmg_estimates.h"
 #include "simulation/vessel_simulator.h"
+#include "simulators/mmg.h"
 
 namespace usvid {
 namespace {
@@ -180,6 +182,58 @@ TEST(VesselFileTest, BadFilesNameTheLineAndTheKey) {
   EXPECT_NE(ErrorOf("hull: [1, 2\n").find("bad.yaml:"), std::string::npos);
   EXPECT_THROW(ReadVesselFile("/nonexistent/ship.yaml"), InputError);
   EXPECT_THROW(FindVessel("/nonexistent/ship.yaml"), InputError);
+}
+
+// The Esso Osaka model's body above the water (Miyauchi et al. 2022's simulator).
+const std::string kWind =
+    "wind:\n"
+    "  A_T: 0.13544\n"
+    "  A_L: 0.52038\n"
+    "  A_OD: 0.1423\n"
+    "  C: -0.01299\n"
+    "  C_BR: -0.06209\n"
+    "  H_BR: 0.294\n"
+    "  H_C: 0.10359";
+
+double Param(const VesselFile& v, const std::string& name) {
+  const auto it = std::find(Mmg::kParamNames.begin(), Mmg::kParamNames.end(), name);
+  return v.params.at(it - Mmg::kParamNames.begin());
+}
+
+TEST(VesselFileTest, AWindSectionGivesTheAreasAndFujiwarasCoefficients) {
+  // Without a wind section the vessel feels no wind: no areas, no wind inputs in its records.
+  const TempFile calm("calm.yaml", SmallShip());
+  const VesselFile c = ReadVesselFile(calm.path());
+  EXPECT_FALSE(c.wind_body);
+  EXPECT_EQ(Param(c, "A_L"), 0.0);
+  // With one: the areas, and the ten coefficients estimated and said so.
+  const TempFile windy("windy.yaml", SmallShip() + kWind);
+  const VesselFile w = ReadVesselFile(windy.path());
+  EXPECT_TRUE(w.wind_body);
+  EXPECT_EQ(Param(w, "A_L"), 0.52038);
+  EXPECT_EQ(Param(w, "wind_factor"), 1.0);
+  EXPECT_EQ(w.estimated.size(), std::size_t{40 + 10});
+  EXPECT_LT(Param(w, "C_X1"), 0.0);  // a head wind pushes astern
+  // model: none keeps the body (the effect wind can act on it) but the model ignores the wind.
+  const TempFile none("none.yaml", SmallShip() + kWind + "\n  model: none");
+  EXPECT_EQ(Param(ReadVesselFile(none.path()), "wind_factor"), 0.0);
+  // A coefficient given is not estimated.
+  const TempFile given("given_wind.yaml", SmallShip() + kWind + "\ncoefficients:\n  C_Y1: 0.9");
+  const VesselFile g = ReadVesselFile(given.path());
+  EXPECT_EQ(Param(g, "C_Y1"), 0.9);
+  EXPECT_EQ(g.estimated.size(), std::size_t{49});
+  // Bad sections: the key and its line.
+  const std::string bigger = ErrorOf(SmallShip() + kWind.substr(0, kWind.find("  A_OD")) +
+                                     "  A_OD: 0.9\n" + kWind.substr(kWind.find("  C:")));
+  EXPECT_NE(bigger.find("wind.A_OD: the superstructure's area 0.9"), std::string::npos) << bigger;
+  const std::string missing = ErrorOf(SmallShip() + kWind.substr(0, kWind.find("  H_C")));
+  EXPECT_NE(missing.find("wind.H_C: missing"), std::string::npos) << missing;
+  const std::string model = ErrorOf(SmallShip() + kWind + "\n  model: isherwood");
+  EXPECT_NE(model.find("wind.model: give fujiwara"), std::string::npos) << model;
+  const std::string unknown = ErrorOf(SmallShip() + kWind + "\n  A_X: 1");
+  EXPECT_NE(unknown.find("wind.A_X: unknown key"), std::string::npos) << unknown;
+  const std::string wind_coefficient = ErrorOf(SmallShip("coefficients:\n  C_X1: -0.8"));
+  EXPECT_NE(wind_coefficient.find("need a wind section"), std::string::npos) << wind_coefficient;
 }
 
 TEST(VesselFileTest, ParticularsOutsideTheFormulasRangeAreWarnedOf) {
