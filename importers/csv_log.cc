@@ -1,9 +1,11 @@
 #include "importers/csv_log.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 
+#include "core/angles.h"
 #include "core/csv_tokenizer.h"
 #include "core/error.h"
 #include "core/parse_number.h"
@@ -28,6 +30,27 @@ char DetectSeparator(const std::string& text) {
 }
 
 std::string SeparatorName(char sep) { return sep == '\t' ? "tab" : std::string(1, sep); }
+
+// A heading logged within -pi..pi (or 0..2 pi) jumps by 2 pi when the vessel turns through the
+// wrap: unwrapped, so that a turning circle's heading runs on, and said.
+void UnwrapHeadings(Dataset& data, ImportReport& report) {
+  for (const char* name : {"psi", "chi"}) {
+    if (!data.Has(name)) continue;
+    const Channel& c = data.Get(name);
+    const Eigen::VectorXd unwrapped = UnwrappedAngle(c.values);
+    Eigen::Index jumps = 0;
+    double last = NAN;
+    for (Eigen::Index k = 0; k < c.values.size(); ++k) {
+      if (!c.sampled(k)) continue;
+      if (std::isfinite(last) && std::abs((unwrapped(k) - c.values(k)) - last) > 1.0) ++jumps;
+      last = unwrapped(k) - c.values(k);
+    }
+    if (jumps == 0) continue;
+    report.Note(std::string(name) + ": unwrapped " + std::to_string(jumps) +
+                (jumps == 1 ? " jump" : " jumps") + " of 2 pi (a heading logged within one turn)");
+    data.Set(name, unwrapped, c.sampled);
+  }
+}
 
 }  // namespace
 
@@ -126,6 +149,7 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
     report.Note("earth-fixed vn, ve rotated to body-fixed u, v with psi");
   }
   report.Note(DropNonIncreasingRows(data).Summary());
+  UnwrapHeadings(data, report);
   return data;
 }
 

@@ -97,14 +97,17 @@ struct RefitSegment {
   }
 };
 
-// The prior: (theta_i - 1) / prior_sd for the free parameters.
+// The prior: (theta_i - centre_i) / prior_sd for the free parameters, centre_i = start_i /
+// |start_i| (+-1: theta is the parameter over its start's size, so a negative start is -1).
 template <Vessel V>
 struct RefitPrior {
   std::array<bool, V::kParams> free;
+  std::array<double, V::kParams> centre;
   double prior_sd;
   template <typename T>
   bool operator()(const T* theta, T* res) const {
-    for (int i = 0; i < V::kParams; ++i) res[i] = free[i] ? (theta[i] - 1.0) / prior_sd : T(0);
+    for (int i = 0; i < V::kParams; ++i)
+      res[i] = free[i] ? (theta[i] - centre[i]) / prior_sd : T(0);
     return true;
   }
 };
@@ -373,7 +376,7 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
         nullptr, theta.data(), x0[j].data(), missing.kappa.data());
   }
   problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RefitPrior<V>, V::kParams, V::kParams>(
-                               new RefitPrior<V>{free, o.prior_sd}),
+                               new RefitPrior<V>{free, theta, o.prior_sd}),
                            nullptr, theta.data());
   detail::HoldFixed<V>(free, o.hold_model, missing.terms.size(), theta.data(), missing.kappa.data(),
                        &problem);

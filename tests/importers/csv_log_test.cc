@@ -66,6 +66,26 @@ TEST_F(CsvLogTest, DropsRowsWithEveryCellEmpty) {
   EXPECT_THROW(Parse("time,x\n0,1\n,\n", {"t=time", "x=x"}), InputError);  // one row left
 }
 
+// A heading logged within one turn (-180..180 deg) runs on through the wrap when the vessel
+// turns a circle, and the import says how many jumps it removed; a heading that never wraps is
+// left as it is.
+TEST_F(CsvLogTest, UnwrapsAHeadingLoggedWithinOneTurnAndSaysSo) {
+  ImportReport report;
+  const Dataset d =
+      Parse("t,hdg\n0,170\n1,-170\n2,-150\n3,\n4,170\n5,-175\n", {"t=t", "psi=hdg:deg"}, &report);
+  const double deg = std::numbers::pi / 180.0;
+  EXPECT_NEAR(d["psi"](1), 190 * deg, 1e-12);
+  EXPECT_NEAR(d["psi"](2), 210 * deg, 1e-12);
+  EXPECT_FALSE(d.Get("psi").sampled(3));
+  EXPECT_NEAR(d["psi"](4), 170 * deg, 1e-12);  // turned back through the wrap
+  EXPECT_NEAR(d["psi"](5), 185 * deg, 1e-12);
+  EXPECT_THAT(report.notes, ::testing::Contains(HasSubstr("psi: unwrapped 3 jumps of 2 pi")));
+  ImportReport quiet;
+  const Dataset calm = Parse("t,hdg\n0,10\n1,-10\n", {"t=t", "psi=hdg:deg"}, &quiet);
+  EXPECT_NEAR(calm["psi"](1), -10 * deg, 1e-12);
+  EXPECT_THAT(quiet.notes, ::testing::Not(::testing::Contains(HasSubstr("unwrapped"))));
+}
+
 // Errors name the file, line and column, or the map item at fault.
 TEST_F(CsvLogTest, BadInputIsLocated) {
   try {

@@ -54,6 +54,27 @@ TEST(RefitTest, FindsTheChangedMmgCoefficients) {
   EXPECT_EQ(r.channels, (std::vector<std::string>{"u", "v", "r"}));
 }
 
+// What the data do not see stays where the prior holds it: at its start, whatever its sign.
+// Esso Osaka's wind coefficients act only through a wind the record does not have, so a refit
+// that frees C_X1 (-0.822, a head wind's drag) is held by the prior alone: it must stay at
+// -0.822, not move to +0.822 (its scale, not its value, which turned the sign of every negative
+// coefficient the data left free).
+TEST(RefitTest, ThePriorHoldsWhatTheDataDoNotSeeAtItsStartWhateverItsSign) {
+  const std::string esso = std::string(USVID_SOURCE_DIR) + "/docs/vessels/files/esso-osaka.yaml";
+  const VesselInfo& info = FindVessel(esso).Info();
+  const Dataset data = Simulate(esso, "zigzag:20/20", 200, info.default_params, 3);
+  RefitOptions options;
+  options.free = {"C_X1", "N_r"};
+  const RefitResult r = RefitVessel(esso, data, info.default_params, options);
+  const auto start = [&](const std::string& n) {
+    return info.default_params.at(std::find(info.params.begin(), info.params.end(), n) -
+                                  info.params.begin());
+  };
+  ASSERT_LT(start("C_X1"), 0.0);
+  EXPECT_NEAR(Param(r, "C_X1"), start("C_X1"), 1e-6);
+  EXPECT_NEAR(Param(r, "N_r") / start("N_r"), 1.0, 0.03);
+}
+
 // `seconds` of odin3dof random steps with its linear sway-yaw coupling Nv = 3000 instead of
 // 1281.
 Dataset OdinWithStrongerNv(double seconds) {
