@@ -112,8 +112,8 @@ TEST(EssoOsakaTest, DiagnoseNamesTheLoggedWindThatAModelIgnores) {
   // The random run of 31 Jul 12:29 (684 s, relative wind 0.3-3 m/s). Against the model from the
   // particulars without its wind (model: none), diagnose names the wind; diagnosed again with
   // the wind it fitted (its model.json), nothing. Fujiwara's wind from the areas alone explains
-  // most of it too. Measured when written (docs/real-data.md#wind): scale 0.65, held-out error
-  // 0.221 -> 0.089; then cause none; the file's own wind: nominal error 0.102.
+  // most of it too. Measured when written (docs/real-data.md#wind): scale 0.64, held-out error
+  // 0.229 -> 0.090; then cause none; the file's own wind: nominal error 0.102.
   if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
   const fs::path dir = FreshTempDir();
   const std::string csv = (dir / "random.csv").string();
