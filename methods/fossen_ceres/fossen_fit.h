@@ -50,6 +50,10 @@ struct FossenOptions {
   // shooting segments are spread evenly over it: Ceres holds the Jacobian of every residual, and
   // a 2-hour 50 Hz log's took 400 MB. Records of this length or shorter are fitted whole.
   long max_rows = 0;
+  // The equation-error fit's starting values, one per model parameter; empty: the model's
+  // kStart. A vessel file's ship starts from KVLCC2's, Froude-scaled to its length
+  // (RudderRpsModel, fossen_models.h). The held parameter (kFixedParam) stays at its start.
+  std::vector<double> start;
 };
 
 template <int N>

@@ -1,6 +1,9 @@
 // `fossen-ceres`: the parametric Fossen 3-DOF fit (methods/fossen_ceres/fossen_fit.h) on
 // forces, a waterjet or a rudder-propeller input map, or the jets' forces; registered in
 // methods/method_list.h.
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <type_traits>
 
 #include "core/error.h"
@@ -22,10 +25,11 @@ namespace {
 // equation error then multiple shooting.
 template <typename Model>
 nlohmann::json IdentifyFossen(const IdentifyRequest& request, const MethodOptions& o,
-                              const Dataset& data, const PreparedData& prepared,
-                              const Logger& log) {
+                              const Dataset& data, const PreparedData& prepared, const Logger& log,
+                              std::vector<double> start = {}) {
   constexpr bool kOdin3Dof = std::is_same_v<Model, fossen::Odin3DofModel>;
   fossen::FossenOptions fo;
+  fo.start = std::move(start);
   fo.segment_s = o.Number("segment_s");
   fo.robust = o.Flag("robust");
   fo.max_rows = o.Integer("fit_rows");
@@ -94,20 +98,46 @@ nlohmann::json IdentifyFossen(const IdentifyRequest& request, const MethodOption
 
 const std::vector<std::string> kForces = {"tau_x", "tau_y", "tau_n"},
                                kJetForces = {"tau_x", "tau_y", "tau_n", "jet_flow"},
-                               kWaterjets = {"throttle", "nozzle", "bucket"}, kRudder = {"delta", "rev"};
+                               kWaterjets = {"throttle", "nozzle", "bucket"},
+                               kRudder = {"delta", "rev"}, kRudderRps = {"delta", "n"};
+
+// RudderRpsModel's starting values for a vessel file's ship: RudderModel's (KVLCC2, 320 m, at
+// 15.5 kn) scaled by Froude's law to the ship's length L (lambda = L / 320): masses lambda^3,
+// inertia lambda^5, linear damping lambda^2.5 (force) and lambda^3.5, lambda^4.5 (moment),
+// quadratic lambda^2 and lambda^5, the propeller's gains lambda^4 and lambda^5 (n ~ lambda^-0.5);
+// times the water's density over sea water's. The rudder's terms take the file's sign.
+std::vector<double> RudderRpsStart(const VesselInfo& info) {
+  const auto param = [&](const std::string& name) {
+    return info.default_params.at(std::find(info.params.begin(), info.params.end(), name) -
+                                  info.params.begin());
+  };
+  const double lambda = info.length_m / 320.0, density = param("rho") / 1025.0;
+  constexpr std::array<double, 13> kExponent = {3, 3, 5, 2.5, 2, 2.5, 2, 3.5, 4.5, 5, 4, 4, 5};
+  std::vector<double> start(13);
+  for (int i = 0; i < 13; ++i)
+    start[i] = fossen::RudderModel::kStart[i] * density * std::pow(lambda, kExponent[i]);
+  // RudderModel: tau_y = Ty n^2 delta, tau_n = -Tn n^2 delta with an ITTC rudder (a positive
+  // angle turns to port); here both signs are the fit's, starting from the file's rudder sign.
+  const double sign = info.actuation.yaw_sign;  // +1: MMG, -1: ITTC
+  start[fossen::RudderRpsModel::kTy] *= -sign;
+  start[fossen::RudderRpsModel::kTn] *= sign;
+  return start;
+}
 
 nlohmann::json IdentifyFossenModel(const Dataset& data, const IdentifyRequest& request,
                                    const MethodOptions& o, const Logger& log) {
   const Channels c = DefaultChannels(request);
+  const bool file_ship = c.inputs == kRudderRps && !request.vessel.empty() &&
+                         FindVessel(request.vessel).Info().type == "mmg";
   if (c.states != std::vector<std::string>{"u", "v", "r"} ||
       (c.inputs != kForces && c.inputs != kJetForces && c.inputs != kWaterjets &&
-       c.inputs != kRudder))
+       c.inputs != kRudder && !file_ship))
     throw InputError(
         "--method fossen-ceres: fits the Fossen 3-DOF model, states u,v,r with inputs "
         "tau_x,tau_y,tau_n (--vessel odin3dof), tau_x,tau_y,tau_n,jet_flow with speed-dependent "
         "damping (--vessel odin-hs --forces waterjet), throttle,nozzle,bucket through a "
         "waterjet map (--vessel odin-hs) or delta,rev through a rudder-propeller map (--vessel "
-        "kvlcc2)");
+        "kvlcc2), or delta,n through the same for a vessel file's ship (--vessel SHIP.yaml)");
   ChannelFit fit = PrepareChannelFit(data, request, c, log);
   const std::vector<std::string>& inputs = fit.channels.inputs;
   if (inputs == kJetForces)
@@ -116,6 +146,9 @@ nlohmann::json IdentifyFossenModel(const Dataset& data, const IdentifyRequest& r
     fit.model.update(IdentifyFossen<fossen::WaterjetModel>(request, o, data, fit.prepared, log));
   else if (inputs == kRudder)
     fit.model.update(IdentifyFossen<fossen::RudderModel>(request, o, data, fit.prepared, log));
+  else if (inputs == kRudderRps)
+    fit.model.update(IdentifyFossen<fossen::RudderRpsModel>(
+        request, o, data, fit.prepared, log, RudderRpsStart(FindVessel(request.vessel).Info())));
   else
     fit.model.update(IdentifyFossen<fossen::Odin3DofModel>(request, o, data, fit.prepared, log));
   SetTrain(fit, request);

@@ -14,7 +14,13 @@
 //      n = rev / 60,  tau_x = Tx n^2,  tau_y = Ty n^2 delta,  tau_n = -Tn n^2 delta
 //    (thrust and the rudder's inflow both grow like n^2 at a given advance ratio). A ship's
 //    Munk moment (m22 - m11) u v outweighs its hull's yaw damping in sway, so Nv may be negative
-//    (kSignedParam); m11 is held as for the waterjet model.
+//    (kSignedParam); m11 is held as for the waterjet model;
+//  - RudderRpsModel: the same map for a vessel file's ship (simulators/mmg.h), inputs delta [rad]
+//    in the file's sign and n [1/s], which may reverse:
+//      tau_x = Tx n |n|,  tau_y = Ty n^2 delta,  tau_n = Tn n^2 delta
+//    with Ty and Tn of either sign (ITTC: Ty > 0, Tn < 0; MMG: the other way round). It has no
+//    fixed starting values: fossen_method.cc scales RudderModel's (KVLCC2's) to the ship by
+//    Froude's law (RudderRpsStart).
 // Each model is also a Vessel (states north, east, psi, u, v, r) so that the multiple-shooting
 // fit simulates it with the templated plant; kStart are the fits' starting values.
 #pragma once
@@ -155,6 +161,38 @@ struct RudderModel : FossenModelBase<RudderModel> {
     if (i == 0) return FormatNumber(p[kTx]) + "*" + n2;
     if (i == 1) return FormatNumber(p[kTy]) + "*" + n2 + "*delta";
     return "-" + FormatNumber(p[kTn]) + "*" + n2 + "*delta";
+  }
+};
+
+// The rudder-propeller map of a vessel file's ship: propeller revolutions per second, four
+// quadrants, and the rudder's sign left to the fit (above).
+struct RudderRpsModel : FossenModelBase<RudderRpsModel> {
+  static constexpr std::string_view kName = "fossen-rudder-rps";
+  static constexpr int kInputs = 2, kParams = 13, kYawInput = 0;
+  static constexpr bool kAccelerationResidual = true;  // tau is not measured
+  static constexpr int kFixedParam = Odin3Dof::kM11;   // m11 fixes the scale
+  static constexpr bool kNormaliseParams = true;
+  static constexpr std::array<std::string_view, kInputs> kInputNames = {"delta", "n"};
+  static constexpr std::array<std::string_view, kParams> kParamNames = WaterjetModel::kParamNames;
+  // Placeholders: a fit always starts from RudderRpsStart (FossenOptions::start).
+  static constexpr std::array<double, kParams> kStart = RudderModel::kStart;
+  static constexpr std::array<double, kParams> kDefaultParams = kStart;
+  static constexpr std::array<ParamGroup, kParams> kParamGroups = WaterjetModel::kParamGroups;
+  static constexpr std::array<double, kInputs> kInputMin = {-1.5708, -100.0};
+  static constexpr std::array<double, kInputs> kInputMax = {1.5708, 100.0};
+  static constexpr bool Signed(int i) { return i == Odin3Dof::kNv || i == kTy || i == kTn; }
+
+  template <typename T>
+  static void Forces(const T* p, const T* in, T* tau) {
+    using std::abs;
+    const T& n = in[1];
+    tau[0] = p[kTx] * n * abs(n);
+    tau[1] = p[kTy] * n * n * in[0];
+    tau[2] = p[kTn] * n * n * in[0];
+  }
+  static std::string ForceText(int i, const double* p) {
+    if (i == 0) return FormatNumber(p[kTx]) + "*n*abs(n)";
+    return FormatNumber(p[i == 1 ? kTy : kTn]) + "*n*n*delta";
   }
 };
 

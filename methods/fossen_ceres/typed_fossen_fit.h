@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/check.h"
 #include "core/error.h"
 #include "core/evenly_spread.h"
 #include "core/parse_number.h"
@@ -249,9 +250,14 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
   constexpr int kParams = Model::kParams;
   Require<Model>(prepared);
   const Dataset& d = prepared.data;
-  const std::array<double, kParams> param_scale = ParamScales<Model>(Model::kStart);
+  std::array<double, kParams> start = Model::kStart;
+  if (!options.start.empty()) {
+    USVID_CHECK(static_cast<int>(options.start.size()) == kParams, "one start per parameter");
+    std::copy(options.start.begin(), options.start.end(), start.begin());
+  }
+  const std::array<double, kParams> param_scale = ParamScales<Model>(start);
   std::array<double, kParams> p;
-  for (int i = 0; i < kParams; ++i) p[i] = Model::kStart[i] / param_scale[i];
+  for (int i = 0; i < kParams; ++i) p[i] = start[i] / param_scale[i];
   ceres::Problem problem;
   std::array<std::string, Model::kInputs> in;
   for (int i = 0; i < Model::kInputs; ++i) in[i] = std::string(Model::kInputNames[i]);
@@ -266,9 +272,8 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
       // equation outweighed the others 10^4 to 1, and its trivial solution (m11, m22, Yv, Yvv
       // near 0) started the shooting fit where it could not recover (docs/design.md).
       const Eigen::VectorXd& force = d[in[i]];
-      scale[i] = (force.array() - force.mean()).square().mean() > 0
-                     ? Sd(force)
-                     : Model::kStart[i] * scale[i];
+      scale[i] =
+          (force.array() - force.mean()).square().mean() > 0 ? Sd(force) : start[i] * scale[i];
     }
   }
   ceres::LossFunction* loss = options.robust ? new ceres::HuberLoss(1.0) : nullptr;

@@ -130,6 +130,38 @@ TEST(VesselFileCliTest, DiagnoseFindsTheWindAModelIgnoresAndItsSize) {
   EXPECT_FALSE(fs::exists(dir / "bad.csv"));
 }
 
+// fossen-ceres on a vessel file's ship: the Fossen 3-DOF form with the rudder-propeller map in
+// revolutions per second, started from KVLCC2's values scaled to the 3 m model by Froude's law.
+// Trained on random steps (the propeller reversing), it free-runs a held-out zig-zag of the
+// same ship.
+TEST(VesselFileCliTest, FossenCeresFitsAVesselFilesShip) {
+  const fs::path dir = FreshTempDir();
+  const std::string train = (dir / "train.csv").string(), test = (dir / "test.csv").string();
+  ASSERT_EQ(
+      RunUsvid("simulate --vessel " + kEsso +
+               " --maneuver random-steps --duration 600 --noise 0.005 --seed 4 --out " + train)
+          .exit_code,
+      0);
+  ASSERT_EQ(
+      RunUsvid("simulate --vessel " + kEsso + " --maneuver zigzag:20/20 --seed 5 --out " + test)
+          .exit_code,
+      0);
+  const std::string model = (dir / "fossen.json").string();
+  const auto r = RunUsvid("identify --method fossen-ceres --vessel " + kEsso + " --data " + train +
+                          " --out " + model);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = ReadJsonFile(model);
+  EXPECT_EQ(m.at("fossen").at("model"), "fossen-rudder-rps");
+  // The file's rudder sign is MMG's: a positive angle turns to starboard, so the rudder's moment
+  // gain is positive.
+  EXPECT_GT(m.at("parameters").at("Tn").get<double>(), 0.0);
+  const auto e = RunUsvid("evaluate --model " + model + " --data " + test);
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const nlohmann::json score = nlohmann::json::parse(e.out);
+  EXPECT_GT(score.at("channels").at("r").at("fit_percent").get<double>(),
+            60.0);  // 76.3 % when written
+}
+
 TEST(VesselFileCliTest, ABadFileIsExitTwoNamingTheLineAndWritesNothing) {
   const fs::path dir = FreshTempDir();
   const fs::path ship = dir / "ship.yaml";
