@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -128,6 +129,41 @@ TEST(VesselFileCliTest, DiagnoseFindsTheWindAModelIgnoresAndItsSize) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_THAT(bad.err, HasSubstr("odin3dof has no wind model"));
   EXPECT_FALSE(fs::exists(dir / "bad.csv"));
+}
+
+// A closed-loop replay follows the record's logged wind as it goes: the model that made a
+// zig-zag under a beam wind of 3 m/s replays it to 0.13 deg of its first overshoot; the same
+// record without its wind columns replays calm, 2.3 deg off.
+TEST(VesselFileCliTest, AClosedLoopReplayFollowsTheLoggedWind) {
+  const fs::path dir = FreshTempDir();
+  const std::string windy = (dir / "windy.csv").string(), model = (dir / "nominal.json").string();
+  ASSERT_EQ(RunUsvid("simulate --vessel " + kEsso +
+                     " --maneuver zigzag:20/20 --wind 3:90 --seed 2 --out " + windy)
+                .exit_code,
+            0);
+  ASSERT_EQ(RunUsvid("identify --method nominal --vessel " + kEsso + " --data " + windy +
+                     " --out " + model)
+                .exit_code,
+            0);
+  // The record without its wind: every column but wind_speed and wind_direction.
+  std::ifstream in(windy);
+  std::ofstream calm(dir / "calm.csv");
+  for (std::string line; std::getline(in, line);) {
+    for (int drop = 0; drop < 2; ++drop) line = line.substr(0, line.rfind(','));
+    calm << line << "\n";
+  }
+  calm.close();
+  auto first_overshoot_error = [&](const std::string& data, const std::string& name) {
+    const auto r = RunUsvid("evaluate --model " + model + " --data " + data +
+                            " --maneuver zigzag:20/20 --out " + (dir / name).string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return std::abs(ReadJsonFile((dir / name / "metrics.json").string())
+                        .at("closed_loop")
+                        .at("first_overshoot_error_deg")
+                        .get<double>());
+  };
+  EXPECT_LT(first_overshoot_error(windy, "windy"), 0.5);
+  EXPECT_GT(first_overshoot_error((dir / "calm.csv").string(), "calm"), 1.0);
 }
 
 // fossen-ceres on a vessel file's ship: the Fossen 3-DOF form with the rudder-propeller map in
