@@ -77,7 +77,9 @@ bool InputMoves(const MeasuredData& d, int i) {
 std::vector<EffectSearch> Searches(const MeasuredData& d, const EffectFitter& fitter) {
   std::vector<int> moving;
   for (int i = 0; i < static_cast<int>(d.peak_command.size()); ++i)
-    if (!d.measured_input[i] && InputMoves(d, i)) moving.push_back(i);
+    if (!(static_cast<size_t>(i) < d.measured_input.size() && d.measured_input[i]) &&
+        InputMoves(d, i))
+      moving.push_back(i);
   std::vector<EffectSearch> out;
   for (const EffectInfo& info : EffectCatalogue()) {
     if (info.kind == EffectKind::kWind && !d.wind) continue;
