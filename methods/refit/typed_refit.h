@@ -423,7 +423,8 @@ std::map<std::string, Eigen::VectorXd> DerivativeResidualTyped(const VesselInfo&
   }
   for (int i = 0; i < V::kInputs; ++i) {
     const std::string name(V::kInputNames[i]);
-    // A measured disturbance (wind) the data lacks: none.
+    // A measured disturbance (wind) the data lacks: at its neutral value, as RecordedInputs
+    // holds it.
     u_col[i] = i >= CommandedInputs<V>() && !data.Has(name) ? nullptr : need(name);
   }
   for (int c = 0; c < C; ++c) dot_col[c] = need(std::string(V::kStateNames[dyn[c]]) + "_dot");
@@ -433,7 +434,8 @@ std::map<std::string, Eigen::VectorXd> DerivativeResidualTyped(const VesselInfo&
   std::array<double, V::kInputs> u;
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
     for (int i = 0; i < V::kStates; ++i) x[i] = x_col[i] != nullptr ? (*x_col[i])(k) : 0.0;
-    for (int i = 0; i < V::kInputs; ++i) u[i] = u_col[i] != nullptr ? (*u_col[i])(k) : 0.0;
+    for (int i = 0; i < V::kInputs; ++i)
+      u[i] = u_col[i] != nullptr ? (*u_col[i])(k) : info.actuation.neutral.at(i);
     V::template Derivative<double>(x.data(), u.data(), params.data(), Environment<double>{},
                                    dx.data());
     for (int c = 0; c < C; ++c)
