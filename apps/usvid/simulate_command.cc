@@ -199,7 +199,9 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--noise", o->noise,
                   "Gaussian noise on every measured channel, as a fraction of its standard "
                   "deviation (0.01 = 1 %)");
-  cmd->add_option("--seed", o->seed, "Seed of noise, random maneuvers and current direction");
+  cmd->add_option("--seed", o->seed,
+                  "Seed of noise, random maneuvers, and the current's and wind's direction and "
+                  "gusts");
   cmd->add_option("--rates", o->rates,
                   "Multi-rate sensors, e.g. imu=50,gps=5,jet=10 (groups or channel names, Hz); "
                   "other rows are written as empty cells")
