@@ -473,7 +473,23 @@ Eigen::VectorXd Expression::Evaluate(const Dataset& data) const {
   }
   const Eigen::Index rows = data.rows();
   Eigen::VectorXd result(rows);
-  Eigen::ArrayXXd stack(std::min(kBlockRows, rows), max_stack_);
+  std::vector<const double*> columns(channels.size());
+  for (Eigen::Index start = 0; start < rows; start += kBlockRows) {
+    const Eigen::Index n = std::min(kBlockRows, rows - start);
+    for (std::size_t i = 0; i < channels.size(); ++i)
+      columns[i] = channels[i]->values.data() + start;
+    EvaluateColumns(columns, n, result.data() + start);
+  }
+  for (const Channel* channel : channels) {
+    if (!channel->FullySampled()) result = channel->sampled.select(result.array(), kNaN).matrix();
+  }
+  return result;
+}
+
+void Expression::EvaluateColumns(std::span<const double* const> columns, Eigen::Index rows,
+                                 double* out) const {
+  USVID_CHECK(columns.size() >= variables_.size(), "a column for every variable");
+  Eigen::ArrayXXd stack(std::min(kBlockRows, std::max<Eigen::Index>(rows, 1)), max_stack_);
   for (Eigen::Index start = 0; start < rows; start += kBlockRows) {
     const Eigen::Index n = std::min(kBlockRows, rows - start);
     Eigen::Index top = -1;
@@ -484,8 +500,8 @@ Eigen::VectorXd Expression::Evaluate(const Dataset& data) const {
           column(++top).setConstant(in.value);
           break;
         case OpCode::kVariable:
-          column(++top) =
-              channels[static_cast<std::size_t>(in.index)]->values.segment(start, n).array();
+          column(++top) = Eigen::Map<const Eigen::ArrayXd>(
+              columns[static_cast<std::size_t>(in.index)] + start, n);
           break;
         case OpCode::kNegate:
           column(top) = -column(top);
@@ -529,12 +545,8 @@ Eigen::VectorXd Expression::Evaluate(const Dataset& data) const {
           break;
       }
     }
-    result.segment(start, n) = column(0).matrix();
+    Eigen::Map<Eigen::ArrayXd>(out + start, n) = column(0);
   }
-  for (const Channel* channel : channels) {
-    if (!channel->FullySampled()) result = channel->sampled.select(result.array(), kNaN).matrix();
-  }
-  return result;
 }
 
 std::string Expression::ToString() const {

@@ -96,6 +96,12 @@ class Expression {
   // Value at every row of `data`, evaluated column-wise in blocks, bit-identical to
   // Evaluate(span) row by row; NaN at rows where a channel the expression uses is not sampled.
   Eigen::VectorXd Evaluate(const Dataset& data) const;
+  // Values at `rows` rows given column by column: columns[i] points to the rows' values of
+  // Variables()[i], `out` receives one value per row. Evaluated an operator at a time over blocks
+  // of rows (one dispatch per operator and block, not per row), bit-identical to Evaluate(span)
+  // row by row. Aborts if there are fewer columns than variables.
+  void EvaluateColumns(std::span<const double* const> columns, Eigen::Index rows,
+                       double* out) const;
   // The same as Evaluate(span) on any scalar with the <cmath> functions found by ADL.
   template <typename T>
   T EvaluateT(const T* variables) const;

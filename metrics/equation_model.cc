@@ -96,4 +96,65 @@ void EquationModel::Step(const Eigen::VectorXd& u, double h, Eigen::VectorXd& x)
   x += h / 6.0 * (k1_ + 2 * k2_ + 2 * k3_ + k4_);
 }
 
+void EquationModel::Derivatives(const Eigen::ArrayXXd& x, const Eigen::ArrayXXd& u,
+                                Eigen::ArrayXXd& dx) const {
+  const Eigen::Index rows = x.rows();
+  dx.resize(rows, x.cols());
+  for (size_t e = 0; e < equations_.size(); ++e) {
+    columns_.clear();
+    for (const Source& s : sources_[e])
+      columns_.push_back(s.state >= 0 ? x.col(s.state).data() : u.col(s.input).data());
+    equations_[e].EvaluateColumns(columns_, rows, dx.col(static_cast<Eigen::Index>(e)).data());
+  }
+  // The kinematics as Derivative() writes them, element by element.
+  for (Eigen::Index j = 0; j < rows; ++j) {
+    switch (kinematics_) {
+      case Kinematics::kBody:
+        dx(j, psi_) = x(j, r_);
+        dx(j, north_) = x(j, u_) * std::cos(x(j, psi_)) - x(j, v_) * std::sin(x(j, psi_));
+        dx(j, east_) = x(j, u_) * std::sin(x(j, psi_)) + x(j, v_) * std::cos(x(j, psi_));
+        break;
+      case Kinematics::kSpeedCourse:
+        dx(j, chi_) = x(j, r_);
+        dx(j, north_) = x(j, speed_) * std::cos(x(j, chi_));
+        dx(j, east_) = x(j, speed_) * std::sin(x(j, chi_));
+        break;
+      case Kinematics::kMsd:
+        dx(j, x_) = x(j, v_);
+        break;
+      case Kinematics::kHeading:
+        dx(j, psi_) = x(j, r_);
+        break;
+      case Kinematics::kNone:
+        break;
+    }
+  }
+}
+
+void EquationModel::Steps(const Eigen::ArrayXXd& u, const Eigen::ArrayXd& h,
+                          const std::vector<bool>& advance, Eigen::ArrayXXd& x) const {
+  // Step()'s operations in Step()'s order, per row: x + (0.5 h) k1, ..., then
+  // x + (h / 6) (((k1 + 2 k2) + 2 k3) + k4).
+  const auto stage = [&](const Eigen::ArrayXXd& k, double factor) {
+    batch_at_.resize(x.rows(), x.cols());
+    for (Eigen::Index j = 0; j < x.rows(); ++j) {
+      const double step = factor * h(j);
+      batch_at_.row(j) = x.row(j) + step * k.row(j);
+    }
+  };
+  Derivatives(x, u, batch_k1_);
+  stage(batch_k1_, 0.5);
+  Derivatives(batch_at_, u, batch_k2_);
+  stage(batch_k2_, 0.5);
+  Derivatives(batch_at_, u, batch_k3_);
+  stage(batch_k3_, 1.0);
+  Derivatives(batch_at_, u, batch_k4_);
+  for (Eigen::Index j = 0; j < x.rows(); ++j) {
+    if (!advance[static_cast<size_t>(j)]) continue;
+    const double sixth = h(j) / 6.0;
+    x.row(j) +=
+        sixth * (batch_k1_.row(j) + 2 * batch_k2_.row(j) + 2 * batch_k3_.row(j) + batch_k4_.row(j));
+  }
+}
+
 }  // namespace usvid

@@ -41,6 +41,15 @@ class EquationModel {
   // One classical Runge-Kutta step of length h with the inputs held (zero-order hold).
   void Step(const Eigen::VectorXd& u, double h, Eigen::VectorXd& x) const;
 
+  // Many states side by side, one row each: x has a column per channel (Channels()), u per input
+  // (Inputs()); dx receives x's shape. Each equation is evaluated an operator at a time over all
+  // rows (Expression::EvaluateColumns), bit-identical to Derivative() row by row.
+  void Derivatives(const Eigen::ArrayXXd& x, const Eigen::ArrayXXd& u, Eigen::ArrayXXd& dx) const;
+  // Step() for every row whose `advance` is set, each with its own h; the other rows are left as
+  // they are. Bit-identical to Step() row by row.
+  void Steps(const Eigen::ArrayXXd& u, const Eigen::ArrayXd& h, const std::vector<bool>& advance,
+             Eigen::ArrayXXd& x) const;
+
  private:
   enum class Kinematics { kNone, kBody, kSpeedCourse, kMsd, kHeading };
   struct Source {
@@ -55,6 +64,8 @@ class EquationModel {
   double delay_s_ = 0.0;
   mutable std::vector<double> vars_;
   mutable Eigen::VectorXd k1_, k2_, k3_, k4_;
+  mutable Eigen::ArrayXXd batch_k1_, batch_k2_, batch_k3_, batch_k4_, batch_at_;
+  mutable std::vector<const double*> columns_;
 };
 
 }  // namespace usvid

@@ -172,22 +172,19 @@ std::string HorizonKey(double horizon_s) {
 
 std::map<std::string, double> HorizonFit(const nlohmann::json& model, const Dataset& data,
                                          double horizon_s) {
-  std::map<std::string, Eigen::VectorXd> predicted;
+  std::vector<Eigen::Index> starts;
   const Eigen::VectorXd& t = data.t();
   for (Eigen::Index start = 0; start < data.rows();) {
+    starts.push_back(start);
     Eigen::Index end = start + 1;
     while (end < data.rows() && t(end) < t(start) + horizon_s - 1e-9) ++end;
-    const Dataset window = data.Rows(start, end - start);
-    const FreeRun run = FreeRunModel(model, window);
-    for (const std::string& c : run.channels) {
-      if (!data.Has(c)) continue;
-      auto [it, _] = predicted.try_emplace(c, Eigen::VectorXd::Constant(data.rows(), NAN));
-      it->second.segment(start, end - start) = run.simulated[c];
-    }
     start = end;
   }
   std::map<std::string, double> fit;
-  for (const auto& [c, p] : predicted) fit[c] = ScoreChannel(data[c], p).fit_percent;
+  if (starts.empty()) return fit;
+  const FreeRun run = FreeRunWindows(model, data, starts);
+  for (const std::string& c : run.channels)
+    if (data.Has(c)) fit[c] = ScoreChannel(data[c], run.simulated[c]).fit_percent;
   return fit;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/check.h"
 #include "core/error.h"
 #include "effects/effect.h"
 #include "effects/effect_values.h"
@@ -108,13 +109,10 @@ FreeRun FreeRunVessel(const nlohmann::json& model, const Dataset& data, double m
   return run;
 }
 
-}  // namespace
-
-FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double max_step) {
-  if (IsVesselModel(model)) return FreeRunVessel(model, data, max_step);
-  const EquationModel system(model, [&](const std::string& c) { return data.Has(c); });
-  const std::vector<std::string>& channels = system.Channels();
-  for (const std::string& c : channels)
+// The data's channels for `system`'s inputs; throws InputError for a channel the data lack.
+std::vector<const Eigen::VectorXd*> InputChannels(const EquationModel& system,
+                                                  const Dataset& data) {
+  for (const std::string& c : system.Channels())
     if (c != "north" && c != "east" && !data.Has(c)) {
       data.CheckNotText(c);
       throw InputError("data: no channel '" + c + "' for the model's free run");
@@ -127,6 +125,24 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
     }
     inputs.push_back(&data[name]);
   }
+  return inputs;
+}
+
+// HeldInput within the rows [first, first + count) of `d`, as HeldInput on those rows alone.
+double HeldInputIn(const Dataset& d, const Eigen::VectorXd& u, Eigen::Index first,
+                   Eigen::Index count, double t) {
+  const double* ts = d.t().data() + first;
+  const auto* it = std::upper_bound(ts, ts + count, t);
+  return u(first + std::max<Eigen::Index>(0, (it - ts) - 1));
+}
+
+}  // namespace
+
+FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double max_step) {
+  if (IsVesselModel(model)) return FreeRunVessel(model, data, max_step);
+  const EquationModel system(model, [&](const std::string& c) { return data.Has(c); });
+  const std::vector<std::string>& channels = system.Channels();
+  const std::vector<const Eigen::VectorXd*> inputs = InputChannels(system, data);
   const auto n = static_cast<Eigen::Index>(channels.size());
   Eigen::VectorXd x(n);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -162,6 +178,102 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
     out.row(k) = x.transpose();
   }
   run.simulated = Dataset(data.t());
+  for (Eigen::Index i = 0; i < n; ++i) run.simulated.Set(channels[i], out.col(i));
+  return run;
+}
+
+FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
+                       const std::vector<Eigen::Index>& starts, double max_step) {
+  const Eigen::Index rows = data.rows();
+  const auto windows = static_cast<Eigen::Index>(starts.size());
+  USVID_CHECK(
+      windows > 0 && starts.front() == 0 && std::ranges::is_sorted(starts) && starts.back() < rows,
+      "window starts from 0, ascending, inside the record");
+  const auto end = [&](Eigen::Index j) { return j + 1 < windows ? starts[j + 1] : rows; };
+  FreeRun run;
+  run.simulated = Dataset(data.t());
+  if (IsVesselModel(model)) {
+    std::map<std::string, Eigen::VectorXd> stitched;
+    for (Eigen::Index j = 0; j < windows; ++j) {
+      const FreeRun part = FreeRunModel(model, data.Rows(starts[j], end(j) - starts[j]), max_step);
+      run.channels = part.channels;
+      run.diverged |= part.diverged;
+      for (const std::string& c : part.channels) {
+        auto [it, _] = stitched.try_emplace(c, Eigen::VectorXd::Constant(rows, NAN));
+        it->second.segment(starts[j], end(j) - starts[j]) = part.simulated[c];
+      }
+    }
+    for (auto& [c, values] : stitched) run.simulated.Set(c, std::move(values));
+    return run;
+  }
+  const EquationModel system(model, [&](const std::string& c) { return data.Has(c); });
+  const std::vector<std::string>& channels = system.Channels();
+  const std::vector<const Eigen::VectorXd*> inputs = InputChannels(system, data);
+  const auto n = static_cast<Eigen::Index>(channels.size());
+  const auto m = static_cast<Eigen::Index>(inputs.size());
+  // Each window's start, bounds and length, as FreeRunModel sees its window.
+  Eigen::ArrayXXd x(windows, n);
+  std::vector<DivergenceBounds> bounds;
+  Eigen::Index longest = 0;
+  for (Eigen::Index j = 0; j < windows; ++j) {
+    const Dataset window = data.Rows(starts[j], end(j) - starts[j]);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::string& c = channels[i];
+      x(j, i) = window.Has(c) && window.Get(c).sampled(0) ? window[c](0) : 0.0;
+    }
+    bounds.emplace_back(channels, window);
+    longest = std::max(longest, end(j) - starts[j]);
+  }
+  Eigen::MatrixXd out(rows, n);
+  for (Eigen::Index j = 0; j < windows; ++j) out.row(starts[j]) = x.row(j).matrix();
+  std::vector<bool> diverged(static_cast<size_t>(windows), false), advance(diverged.size());
+  Eigen::ArrayXXd u(windows, m);
+  Eigen::ArrayXd h(windows), t0(windows);
+  Eigen::ArrayXi steps(windows);
+  Eigen::VectorXd state(n);
+  const Eigen::VectorXd& t = data.t();
+  for (Eigen::Index k = 1; k < longest; ++k) {
+    // This row's interval in each window still running, cut into equal steps of at most max_step.
+    int most = 0;
+    for (Eigen::Index j = 0; j < windows; ++j) {
+      steps(j) = 0;
+      if (k >= end(j) - starts[j] || diverged[static_cast<size_t>(j)]) continue;
+      t0(j) = t(starts[j] + k - 1);
+      const double span = t(starts[j] + k) - t0(j);
+      steps(j) = std::max(1, static_cast<int>(std::ceil(span / max_step - 1e-9)));
+      h(j) = span / steps(j);
+      most = std::max(most, steps(j));
+    }
+    for (int s = 0; s < most; ++s) {
+      for (Eigen::Index j = 0; j < windows; ++j) {
+        advance[static_cast<size_t>(j)] = s < steps(j);
+        if (!advance[static_cast<size_t>(j)]) {
+          h(j) = 0.0;  // a row that stays: any finite step, its result unused
+          continue;
+        }
+        // The input is held at its value at the step's start (zero-order hold).
+        const double at = t0(j) + s * h(j);
+        for (Eigen::Index i = 0; i < m; ++i)
+          u(j, i) = HeldInputIn(data, *inputs[static_cast<size_t>(i)], starts[j],
+                                end(j) - starts[j], at - system.DelayS());
+      }
+      system.Steps(u, h, advance, x);
+    }
+    for (Eigen::Index j = 0; j < windows; ++j) {
+      if (k >= end(j) - starts[j]) continue;
+      const Eigen::Index row = starts[j] + k;
+      if (!diverged[static_cast<size_t>(j)]) {
+        state = x.row(j).matrix().transpose();
+        if (bounds[static_cast<size_t>(j)].Exceeded(state) >= 0) {
+          diverged[static_cast<size_t>(j)] = true;
+          run.diverged = true;
+          x.row(j) = out.row(row - 1).array();
+        }
+      }
+      out.row(row) = x.row(j).matrix();
+    }
+  }
+  run.channels = channels;
   for (Eigen::Index i = 0; i < n; ++i) run.simulated.Set(channels[i], out.col(i));
   return run;
 }

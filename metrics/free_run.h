@@ -64,4 +64,14 @@ struct FreeRun {
 // channel the data lack.
 FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double max_step = 0.01);
 
+// Free runs over consecutive windows of `data`, each from its own first row, stitched into one
+// record: window j holds the rows [starts[j], starts[j + 1]) (the last to the record's end) and
+// is what FreeRunModel(model, data.Rows(...)) gives for it, bit for bit (its bounds are the
+// window's, and a run that diverges holds its last value to the window's end). An equation
+// model's windows are integrated side by side, each operator dispatched once per step for all
+// of them; a vessel model's one after another. `diverged` says whether any window diverged.
+// `starts` begins at 0 and ascends. Throws as FreeRunModel does.
+FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
+                       const std::vector<Eigen::Index>& starts, double max_step = 0.01);
+
 }  // namespace usvid

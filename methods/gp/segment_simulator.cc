@@ -65,7 +65,7 @@ double SegmentSimulator::Error(const std::vector<const Model*>& models,
     std::vector<const double*> pointers;
     for (const auto& c : cols) pointers.push_back(c.data());
     Interpreter<double> interp(pointers);
-    std::vector<double> args(data_.names.size());  // a derived column's arguments at one row
+    std::vector<const double*> args(data_.names.size());  // a derived column's arguments
     Eigen::ArrayXXd x(ns, count), k1(ns, count), k2(ns, count), k3(ns, count), k4(ns, count);
     std::vector<bool> active(count, true);
     for (int j = 0; j < count; ++j)
@@ -75,12 +75,12 @@ double SegmentSimulator::Error(const std::vector<const Model*>& models,
         for (int j = 0; j < count; ++j)
           cols[v][j] = is_state_[v] >= 0 ? state(is_state_[v], j)
                                          : data_.variables[v](starts[first + j] + k);
-      for (const DerivedColumn& d : data_.derived)
-        for (int j = 0; j < count; ++j) {
-          for (size_t a = 0; a < d.arguments.size(); ++a) args[a] = cols[d.arguments[a]][j];
-          cols[d.index][j] =
-              d.expression.Evaluate(std::span<const double>(args.data(), d.arguments.size()));
-        }
+      for (const DerivedColumn& d : data_.derived) {
+        for (size_t a = 0; a < d.arguments.size(); ++a) args[a] = cols[d.arguments[a]].data();
+        d.expression.EvaluateColumns(
+            std::span<const double* const>(args.data(), d.arguments.size()), count,
+            cols[d.index].data());
+      }
       for (int s = 0; s < ns; ++s) {
         const Model& m = *models[s];
         interp.Evaluate(m.tree, 0, count);

@@ -307,6 +307,29 @@ TEST_F(ExpressionTest, DatasetEvaluationMatchesPerSample) {
   }
 }
 
+// The columns of a simulation's batch (GP's segment simulator computes its regime features so):
+// any number of rows, across the block size and below it, bit for bit as per sample.
+TEST_F(ExpressionTest, ColumnEvaluationMatchesPerSample) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  const Expression e = Expression::Parse("abs(sqrt(u*u + v*v)/3.1 - 0.4) - 1/v + exp(u)*2");
+  for (const Eigen::Index rows :
+       {Eigen::Index{1}, Eigen::Index{7}, Eigen::Index{256}, Eigen::Index{600}}) {
+    std::vector<Eigen::VectorXd> columns(e.Variables().size(), Eigen::VectorXd(rows));
+    for (Eigen::VectorXd& c : columns)
+      for (Eigen::Index i = 0; i < rows; ++i) c(i) = noise(rng);
+    columns[1](0) = 0.0;  // protected division
+    std::vector<const double*> pointers;
+    for (const Eigen::VectorXd& c : columns) pointers.push_back(c.data());
+    Eigen::VectorXd out(rows);
+    e.EvaluateColumns(pointers, rows, out.data());
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      const std::vector<double> x = {columns[0](i), columns[1](i)};
+      EXPECT_TRUE(Same(out(i), e.Evaluate(x))) << rows << " rows, row " << i;
+    }
+  }
+}
+
 // Evaluation folds a constant or a variable into the operator that takes it as its right operand
 // (Expression::Fuse); each binary operator then computes exactly what the operator itself does,
 // protected division by a near-zero operand included.
