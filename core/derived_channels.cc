@@ -26,4 +26,22 @@ void AddSpeedAndCourse(Dataset& data) {
   }
 }
 
+void AddWindComponents(Dataset& data) {
+  if (!data.Has("wind_speed") || !data.Has("wind_direction")) return;
+  if (data.Has("wind_u") && data.Has("wind_v")) return;
+  const Channel& speed = data.Get("wind_speed");
+  const Channel& from = data.Get("wind_direction");
+  Eigen::VectorXd along = -(speed.values.array() * from.values.array().cos()).matrix();
+  Eigen::VectorXd across = -(speed.values.array() * from.values.array().sin()).matrix();
+  const Eigen::ArrayX<bool> sampled = speed.sampled && from.sampled;
+  // Set() may move the channels: `speed` and `from` are not read after the first.
+  if (!data.Has("wind_u")) data.Set("wind_u", std::move(along), sampled);
+  if (!data.Has("wind_v")) data.Set("wind_v", std::move(across), sampled);
+}
+
+void AddDerivedChannels(Dataset& data) {
+  AddSpeedAndCourse(data);
+  AddWindComponents(data);
+}
+
 }  // namespace usvid

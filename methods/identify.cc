@@ -18,8 +18,9 @@ MethodOptions CheckedOptions(const Method& method, const IdentifyRequest& reques
 nlohmann::json Identify(const Method& method, Dataset data, const IdentifyRequest& o,
                         const Logger& log) {
   const MethodOptions options = CheckedOptions(method, o, "");
-  // Speed and course where only body velocities were logged (the 2-DOF models need them).
-  AddSpeedAndCourse(data);
+  // Speed and course where only body velocities were logged (the 2-DOF models need them), and
+  // the relative wind's body components where its speed and direction were.
+  AddDerivedChannels(data);
   AddForces(data, o.preprocess.forces);
   nlohmann::json model = method.identify(data, o, options, log);
   if (const std::vector<std::string> unread = options.Unread(); !unread.empty())

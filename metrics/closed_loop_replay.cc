@@ -467,7 +467,7 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& v
     return out;
   }
   Dataset full = recorded_data;
-  AddSpeedAndCourse(full);
+  AddDerivedChannels(full);
   const Actuation& act = FindVessel(vessel).Info().actuation;
   const std::string rudder = act.input_names.at(act.yaw_input);
   // A real log's test starts after its approach: replay from the lead-in before the execute.

@@ -223,7 +223,7 @@ nlohmann::json Scores::ToJson() const {
 Evaluation EvaluateModel(const nlohmann::json& model, const Dataset& recorded,
                          EvaluationScope scope) {
   Dataset data = recorded;
-  AddSpeedAndCourse(data);  // for models in speed and course (2-DOF)
+  AddDerivedChannels(data);  // U, chi (2-DOF models), wind_u, wind_v
   AddModelForces(model, data);
   Evaluation e;
   e.run = FreeRunModel(model, data);

@@ -1,4 +1,5 @@
-// Speed over ground and course from body velocities: U = |(u, v)|, chi = psi + atan2(v, u);
+// Speed over ground and course from body velocities: U = |(u, v)|, chi = psi + atan2(v, u); the
+// relative wind's body components, the air's velocity past the ship, from where it blows;
 // existing channels are left as they are.
 #include "core/derived_channels.h"
 
@@ -33,6 +34,37 @@ TEST_F(DerivedChannelsTest, SpeedAndCourseFromBodyVelocities) {
   AddSpeedAndCourse(e);
   EXPECT_EQ(e["U"](0), 7.0);
   EXPECT_FALSE(e.Has("chi"));  // no heading, no course
+}
+
+TEST_F(DerivedChannelsTest, WindComponentsAreTheAirsVelocityPastTheShip) {
+  Eigen::VectorXd t(3), speed(3), from(3);
+  t << 0, 1, 2;
+  speed << 2, 3, 4;
+  from << 0.0, M_PI / 2, std::nan("");  // from ahead, from starboard, a gap in the log
+  Dataset d(t);
+  d.Set("wind_speed", speed);
+  d.Set("wind_direction", from, Eigen::Array<bool, 3, 1>(true, true, false));
+  AddDerivedChannels(d);
+  // From ahead, the air streams aft at the wind's speed; from starboard, towards port.
+  EXPECT_DOUBLE_EQ(d["wind_u"](0), -2.0);
+  EXPECT_NEAR(d["wind_v"](0), 0.0, 1e-15);
+  EXPECT_NEAR(d["wind_u"](1), 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(d["wind_v"](1), -3.0);
+  // The pressure force's products: V^2 cos(gamma) = -V wind_u.
+  EXPECT_DOUBLE_EQ(-speed(0) * d["wind_u"](0), 4.0);
+  // A row whose direction was not logged has no components.
+  EXPECT_FALSE(d.Get("wind_u").sampled(2));
+  EXPECT_FALSE(d.Get("wind_v").sampled(2));
+  EXPECT_FALSE(d.Has("U"));  // no body velocities, no speed
+}
+
+TEST_F(DerivedChannelsTest, ARecordWithoutWindGetsNoWindComponents) {
+  Eigen::VectorXd t(2);
+  t << 0, 1;
+  Dataset d(t);
+  d.Set("wind_speed", Eigen::VectorXd::Constant(2, 3.0));
+  AddDerivedChannels(d);
+  EXPECT_FALSE(d.Has("wind_u"));  // a speed alone has no direction
 }
 
 }  // namespace
