@@ -53,8 +53,12 @@ struct Mmg : MmgCoefficients {
   static constexpr std::array<double, kInputs> kInputMin = {-0.6109, 0.0, 0.0, -6.2832};
   static constexpr std::array<double, kInputs> kInputMax = {0.6109, 2.5, 100.0, 6.2832};
   static constexpr int kYawInput = 0, kThrustInput = 1, kRateState = 5, kHeadingState = 2;
-  static constexpr std::array<std::string_view, 5> kRefitParams = {"R_0", "Y_v", "Y_r", "N_v",
-                                                                   "N_r"};
+  // What refit frees by default (docs/model.md#what-refit-frees): the resistance and the linear
+  // hull terms, the two cubic yaw terms that decide a tight turn, and the wind's three leading
+  // coefficients (a head wind's drag, the beam wind's force and the moment that turns the bow
+  // into the wind; held by the prior where the record has no wind).
+  static constexpr std::array<std::string_view, 10> kRefitParams = {
+      "R_0", "Y_v", "Y_r", "N_v", "N_r", "N_vvr", "N_rrr", "C_X1", "C_Y1", "C_N2"};
   static constexpr bool kSpeedScaledForces = true;  // MMG: forces 1/2 rho L d U^2 X'(v', r')
   static constexpr double kRunInS = 7200.0;         // [s] at most, from rest to steady speed
   // Parameters from this index on are the particulars: fixed.
