@@ -227,9 +227,11 @@ FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
   Eigen::MatrixXd out(rows, n);
   for (Eigen::Index j = 0; j < windows; ++j) out.row(starts[j]) = x.row(j).matrix();
   std::vector<bool> diverged(static_cast<size_t>(windows), false), advance(diverged.size());
-  Eigen::ArrayXXd u(windows, m);
-  Eigen::ArrayXd h(windows), t0(windows);
-  Eigen::ArrayXi steps(windows);
+  // A window that does not advance in a step still passes through Steps (its result unused):
+  // its inputs and step stay at values that are defined.
+  Eigen::ArrayXXd u = Eigen::ArrayXXd::Zero(windows, m);
+  Eigen::ArrayXd h = Eigen::ArrayXd::Zero(windows), t0 = Eigen::ArrayXd::Zero(windows);
+  Eigen::ArrayXi steps = Eigen::ArrayXi::Zero(windows);
   Eigen::VectorXd state(n);
   const Eigen::VectorXd& t = data.t();
   for (Eigen::Index k = 1; k < longest; ++k) {
@@ -248,7 +250,7 @@ FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
       for (Eigen::Index j = 0; j < windows; ++j) {
         advance[static_cast<size_t>(j)] = s < steps(j);
         if (!advance[static_cast<size_t>(j)]) {
-          h(j) = 0.0;  // a row that stays: any finite step, its result unused
+          h(j) = 0.0;
           continue;
         }
         // The input is held at its value at the step's start (zero-order hold).
