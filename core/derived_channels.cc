@@ -44,4 +44,12 @@ void AddDerivedChannels(Dataset& data) {
   AddWindComponents(data);
 }
 
+bool CanDerive(const Dataset& data, const std::string& name) {
+  if (name == "U") return data.Has("u") && data.Has("v");
+  if (name == "chi") return data.Has("u") && data.Has("v") && data.Has("psi");
+  if (name == "wind_u" || name == "wind_v")
+    return data.Has("wind_speed") && data.Has("wind_direction");
+  return false;
+}
+
 }  // namespace usvid

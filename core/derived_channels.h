@@ -12,6 +12,8 @@
 // A row is sampled where every channel it is derived from is.
 #pragma once
 
+#include <string>
+
 #include "core/dataset.h"
 
 namespace usvid {
@@ -22,5 +24,9 @@ void AddWindComponents(Dataset& data);
 // Both of the above: what identification, evaluation and replay add before they read a model's
 // channels.
 void AddDerivedChannels(Dataset& data);
+
+// Whether AddDerivedChannels would give `data` the channel `name` (it has what it is derived
+// from): a command that checks its records' channels before it identifies accepts these.
+bool CanDerive(const Dataset& data, const std::string& name);
 
 }  // namespace usvid

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/csv_dataset.h"
+#include "core/derived_channels.h"
 #include "core/error.h"
 #include "core/records.h"
 
@@ -36,7 +37,7 @@ Dataset ReadDataFiles(const std::string& list, const std::string& command,
     records.push_back(ReadDataFile(file, command));
     if (each) each(records.back());
     for (const std::string& channel : required)
-      if (!records.back().Has(channel)) {
+      if (!records.back().Has(channel) && !CanDerive(records.back(), channel)) {
         records.back().CheckNotText(channel);
         throw InputError(file + ": no channel '" + channel + "'" +
                          (files.size() > 1 ? " (every record of --data needs it)" : ""));

@@ -63,8 +63,24 @@ TEST_F(DerivedChannelsTest, ARecordWithoutWindGetsNoWindComponents) {
   t << 0, 1;
   Dataset d(t);
   d.Set("wind_speed", Eigen::VectorXd::Constant(2, 3.0));
+  EXPECT_FALSE(CanDerive(d, "wind_u"));
   AddDerivedChannels(d);
   EXPECT_FALSE(d.Has("wind_u"));  // a speed alone has no direction
+}
+
+// CanDerive says beforehand what AddDerivedChannels will add, so a command can check its
+// records' channels before it identifies.
+TEST_F(DerivedChannelsTest, CanDeriveAgreesWithWhatIsAdded) {
+  Eigen::VectorXd t(2);
+  t << 0, 1;
+  Dataset d(t);
+  for (const char* c : {"u", "v", "wind_speed", "wind_direction"})
+    d.Set(c, Eigen::VectorXd::Constant(2, 1.0));
+  for (const char* c : {"U", "wind_u", "wind_v"}) EXPECT_TRUE(CanDerive(d, c)) << c;
+  for (const char* c : {"chi", "r", "u"}) EXPECT_FALSE(CanDerive(d, c)) << c;  // u is logged
+  AddDerivedChannels(d);
+  for (const char* c : {"U", "wind_u", "wind_v"}) EXPECT_TRUE(d.Has(c)) << c;
+  EXPECT_FALSE(d.Has("chi"));
 }
 
 }  // namespace
