@@ -15,6 +15,7 @@
 #include "metrics/zigzag_response.h"
 #include "preprocessing/actuator_dynamics.h"
 #include "preprocessing/waterjet_forces.h"
+#include "simulation/input_track.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -42,7 +43,7 @@ double SampledMedian(const Eigen::VectorXd& v) {
 class RecordedApproach : public Maneuver {
  public:
   RecordedApproach(std::unique_ptr<Maneuver> inner, const Actuation& act, const Dataset& recorded)
-      : inner_(std::move(inner)), held_(act.inputs(), NAN), followed_(act.inputs()) {
+      : inner_(std::move(inner)), held_(act.inputs(), NAN), followed_(act.inputs(), InputTrack(1)) {
     for (int i = 0; i < act.inputs(); ++i) {
       if (i == act.yaw_input || !recorded.Has(act.input_names[i])) continue;
       const Channel& c = recorded.Get(act.input_names[i]);
@@ -51,7 +52,7 @@ class RecordedApproach : public Maneuver {
         continue;
       }
       for (Eigen::Index k = 0; k < recorded.rows(); ++k)
-        if (c.sampled(k)) followed_[i].emplace_back(recorded.t()(k), c.values(k));
+        if (c.sampled(k)) followed_[i].Append(recorded.t()(k), std::span(&c.values(k), 1));
     }
   }
   std::string Spec() const override { return inner_->Spec(); }
@@ -73,16 +74,12 @@ class RecordedApproach : public Maneuver {
   void Hold(double t, U& u) const {
     for (size_t i = 0; i < held_.size(); ++i) {
       if (std::isfinite(held_[i])) u[i] = held_[i];
-      const auto& f = followed_[i];
-      if (f.empty()) continue;
-      auto it = std::upper_bound(f.begin(), f.end(), t + 1e-12,
-                                 [](double x, const auto& sample) { return x < sample.first; });
-      u[i] = it == f.begin() ? f.front().second : std::prev(it)->second;
+      if (followed_[i].size() > 0) u[i] = followed_[i].At(t + 1e-12)[0];
     }
   }
   std::unique_ptr<Maneuver> inner_;
   std::vector<double> held_;
-  std::vector<std::vector<std::pair<double, double>>> followed_;  // (t, value) per measured input
+  std::vector<InputTrack> followed_;  // per measured input, its record (one value each); else empty
 };
 
 double SampleRate(const Dataset& d) {
