@@ -9,7 +9,7 @@ namespace usvid {
 namespace {
 
 // A table cell: '|' would end it.
-std::string Cell(std::string text) {
+std::string TableCell(std::string text) {
   for (size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2))
     text.replace(at, 1, "\\|");
   return text;
@@ -22,9 +22,9 @@ void Table(std::ostringstream& out, const std::vector<OptionSpec>& specs) {
   }
   out << "| key | flag | allowed | default | what |\n| --- | --- | --- | --- | --- |\n";
   for (const OptionSpec& s : specs)
-    out << "| `" << s.key << "` | `" << s.Flag() << "` | " << Cell(s.AllowedValues()) << " | "
-        << Cell(s.type == OptionType::kFlag ? "false" : s.DefaultText()) << " | " << Cell(s.help)
-        << " |\n";
+    out << "| `" << s.key << "` | `" << s.Flag() << "` | " << TableCell(s.AllowedValues()) << " | "
+        << TableCell(s.type == OptionType::kFlag ? "false" : s.DefaultText()) << " | "
+        << TableCell(s.help) << " |\n";
   out << '\n';
 }
 

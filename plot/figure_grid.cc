@@ -12,8 +12,8 @@
 namespace usvid {
 namespace {
 
-constexpr double kPad = 10.0;
-constexpr double kTitleFont = 16.0;
+constexpr double kGridPad = 10.0;
+constexpr double kGridTitleFont = 16.0;
 constexpr double kPanelTitleFont = 13.0;
 constexpr double kMinArea = 20.0;
 constexpr int kLayoutPasses = 3;
@@ -90,7 +90,7 @@ std::string FigureGrid::ToSvg(int width, int height) const {
 
   // Heights: fixed chrome (titles, ticks, labels) per panel, the rest shared by the plot areas;
   // margins: the widest of all, so that the plot areas line up. Both settle in a few passes.
-  const double top = title_.empty() ? 0.0 : kPad + kTitleFont;
+  const double top = title_.empty() ? 0.0 : kGridPad + kGridTitleFont;
   const double available = height - top;
   const double shares = std::accumulate(panels_.begin(), panels_.end(), 0.0,
                                         [](double s, const Panel& p) { return s + p.share; });
@@ -118,8 +118,8 @@ std::string FigureGrid::ToSvg(int width, int height) const {
 
   std::string out = svg::DocumentStart(width, height);
   if (!title_.empty()) {
-    const svg::FittedText t = svg::FitText(title_, kTitleFont, width - 2.0 * kPad, true);
-    svg::AppendText(out, width / 2.0, kPad + kTitleFont * 0.8, t.text, t.font_size,
+    const svg::FittedText t = svg::FitText(title_, kGridTitleFont, width - 2.0 * kGridPad, true);
+    svg::AppendText(out, width / 2.0, kGridPad + kGridTitleFont * 0.8, t.text, t.font_size,
                     svg::Anchor::kMiddle, "font-weight=\"bold\"");
   }
   double y = top;

@@ -23,12 +23,6 @@ double WidestOf(const std::vector<std::string>& labels, double font) {
   return w;
 }
 
-std::string Str(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%g", v);
-  return buf;
-}
-
 }  // namespace
 
 HeatMap::HeatMap(std::vector<std::string> row_labels, std::vector<std::string> column_labels,
@@ -67,7 +61,7 @@ HeatMap& HeatMap::SetValueLabel(std::string label, std::string unit) {
 
 HeatMap& HeatMap::SetValueRange(double lo, double hi) {
   if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
-    throw InputError("HeatMap::SetValueRange: range [" + Str(lo) + ", " + Str(hi) +
+    throw InputError("HeatMap::SetValueRange: range [" + svg::Short(lo) + ", " + svg::Short(hi) +
                      "] must be finite with lo < hi");
   }
   range_ = std::pair{lo, hi};

@@ -14,16 +14,10 @@ namespace {
 
 using Range = std::pair<double, double>;
 
-std::string Str(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%g", v);
-  return buf;
-}
-
 void CheckRange(const char* what, double lo, double hi) {
   if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
-    throw InputError(std::string("LinePlot::") + what + ": range [" + Str(lo) + ", " + Str(hi) +
-                     "] must be finite with lo < hi");
+    throw InputError(std::string("LinePlot::") + what + ": range [" + svg::Short(lo) + ", " +
+                     svg::Short(hi) + "] must be finite with lo < hi");
   }
 }
 
@@ -85,8 +79,8 @@ LinePlot& LinePlot::SetYRange(double lo, double hi) {
 
 LinePlot& LinePlot::AddBand(double lo, double hi, std::string label, std::string color) {
   if (std::isnan(lo) || std::isnan(hi) || !(lo < hi)) {
-    throw InputError("LinePlot::AddBand: band '" + label + "' [" + Str(lo) + ", " + Str(hi) +
-                     "] needs lo < hi");
+    throw InputError("LinePlot::AddBand: band '" + label + "' [" + svg::Short(lo) + ", " +
+                     svg::Short(hi) + "] needs lo < hi");
   }
   bands_.push_back({lo, hi, std::move(label), std::move(color)});
   return *this;
@@ -94,7 +88,7 @@ LinePlot& LinePlot::AddBand(double lo, double hi, std::string label, std::string
 
 LinePlot& LinePlot::AddVerticalLine(double x, std::string label, std::string color) {
   if (!std::isfinite(x)) {
-    throw InputError("LinePlot::AddVerticalLine: line '" + label + "' at x = " + Str(x) +
+    throw InputError("LinePlot::AddVerticalLine: line '" + label + "' at x = " + svg::Short(x) +
                      " is not finite");
   }
   lines_.push_back({x, std::move(label), std::move(color)});

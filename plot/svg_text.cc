@@ -63,6 +63,12 @@ std::string Num(double value) {
   return s;
 }
 
+std::string Short(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%g", value);
+  return buf;
+}
+
 double TextWidth(std::string_view text, double font_size, bool bold) {
   double units = 0.0;
   for (const char c : text) {

@@ -18,6 +18,9 @@ std::string Escape(std::string_view text);
 // A pixel coordinate with at most two decimals and no trailing zeros ("12.5", "-3", "0").
 std::string Num(double value);
 
+// A value as printf's %g writes it ("0.001", "1e+06"): the numbers of the plots' error messages.
+std::string Short(double value);
+
 // Estimated drawn width [px] of `text` (UTF-8) at `font_size` [px]; `bold` adds about 8 %.
 double TextWidth(std::string_view text, double font_size, bool bold = false);
 

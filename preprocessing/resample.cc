@@ -6,17 +6,10 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/median.h"
 #include "preprocessing/cubic_spline.h"
 
 namespace usvid {
-namespace {
-
-double Median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
-}  // namespace
 
 std::vector<std::string> ResampleReport::Summary() const {
   std::vector<std::string> lines;
@@ -54,7 +47,7 @@ Dataset Resample(const Dataset& data, const ResampleOptions& options, ResampleRe
       throw InputError("resample: channel '" + c.name + "' has fewer than two samples");
     std::vector<double> gaps_between(ts.size() - 1);
     for (size_t k = 0; k + 1 < ts.size(); ++k) gaps_between[k] = ts[k + 1] - ts[k];
-    ChannelResampling info{c.name, static_cast<long>(ts.size()), Median(gaps_between), 0, 0};
+    ChannelResampling info{c.name, static_cast<long>(ts.size()), SampleMedian(gaps_between), 0, 0};
     const double max_gap = options.max_gap_s > 0 ? options.max_gap_s : 4 * info.median_interval_s;
 
     // Split into stretches without a long gap; each is interpolated on its own.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/median.h"
 
 namespace usvid {
 namespace {
@@ -21,10 +22,9 @@ constexpr double kMaxMu = 1e12;
 constexpr double kGridStep = 10.0;
 constexpr double kLogMuTolerance = 1e-2;
 constexpr double kInvGoldenRatio = 0.6180339887498949;
-// The even orders of the differences whose MAD estimates the noise, and 1 / Phi^-1(3/4).
+// The even orders of the differences whose MAD estimates the noise.
 constexpr int kMinNoiseOrder = 4;
 constexpr int kMaxNoiseOrder = 8;
-constexpr double kMadToSd = 1.482602218505602;
 
 // The Reinsch system in units of samples: with D the n x (n-2) second-difference matrix
 // (columns 1, -2, 1) and R' = tridiag(1/6, 2/3, 1/6),
@@ -121,13 +121,6 @@ std::string Str(double v) {
   return out.str();
 }
 
-double Median(std::vector<double>& v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  if (v.size() % 2 == 1) return *mid;
-  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
-}
-
 // Minimises risk(log mu) on a grid of decades of mu, then by golden section around the best.
 template <typename Risk>
 double MinimiseOverMu(const Risk& risk) {
@@ -208,7 +201,7 @@ double EstimateNoiseSd(const Eigen::VectorXd& y) {
     magnitude.resize(diff.size());
     std::transform(diff.begin(), diff.end(), magnitude.begin(),
                    [](double v) { return std::abs(v); });
-    estimate = std::min(estimate, kMadToSd * Median(magnitude) / std::sqrt(gain));
+    estimate = std::min(estimate, kMadToSd * SampleMedian(magnitude) / std::sqrt(gain));
   }
   return std::isfinite(estimate) ? estimate : 0.0;
 }

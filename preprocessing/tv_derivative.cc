@@ -7,12 +7,12 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/median.h"
 
 namespace usvid {
 namespace {
 
 constexpr int kNoiseDifferenceOrder = 4;
-constexpr double kMadToSd = 1.482602218505602;  // 1 / Phi^-1(3/4)
 constexpr double kStepTolerance = 1e-10;        // on max |w_k+1 - w_k| [std(f)]
 constexpr double kLogLambdaMin = -8.0;
 constexpr double kLogLambdaMax = 8.0;

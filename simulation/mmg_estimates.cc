@@ -2,11 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 namespace usvid {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string Format(double x) {
   char b[32];
@@ -67,7 +66,7 @@ std::vector<MmgEstimate> EstimateMmgCoefficients(const MmgHull& h) {
   add("X_vr", m_y - 1.91 * cbl + 0.08, yoshimura);
   add("X_rr", -0.085 * cbl + 0.008 + x_G * m_y, yoshimura);
   add("X_vvvv", -6.68 * cbl + 1.1, yoshimura);
-  add("Y_v", -(0.5 * kPi * k + 1.4 * cbl), kijima);
+  add("Y_v", -(0.5 * std::numbers::pi * k + 1.4 * cbl), kijima);
   add("Y_r", m + m_x - 1.5 * cbl, kijima);
   add("Y_vvv", -0.185 * lb + 0.48, yoshimura);
   add("Y_vvr", 1.5 * db * h.C_b - 0.65, kijima);

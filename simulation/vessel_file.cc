@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 
@@ -18,8 +19,6 @@
 
 namespace usvid {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A YAML mapping read key by key: every key must be known, and errors name file:line.
 class Section {
@@ -263,17 +262,17 @@ VesselFile ReadVesselFile(const std::string& path) {
   out.warnings = OutsideValidity(h);
 
   Actuation& a = out.actuation;
-  const double full = rudder_max_deg * kPi / 180.0;
+  const double full = rudder_max_deg * std::numbers::pi / 180.0;
   a.yaw_is_angle = true;
   a.yaw_full = full;
   a.yaw_full_deg = rudder_max_deg;
   a.thrust_cruise = n_cruise;
   // No wind unless measured; its direction either way round the compass.
   a.neutral = {0.0, n_cruise, 0.0, 0.0};
-  a.input_min = {-full, n_min, 0.0, -2.0 * kPi};
-  a.input_max = {full, n_max, 100.0, 2.0 * kPi};
+  a.input_min = {-full, n_min, 0.0, -2.0 * std::numbers::pi};
+  a.input_max = {full, n_max, 100.0, 2.0 * std::numbers::pi};
   a.yaw_sign = sign == "ittc" ? -1.0 : 1.0;
-  a.yaw_rate_limit = rudder_rate * kPi / 180.0;
+  a.yaw_rate_limit = rudder_rate * std::numbers::pi / 180.0;
   return out;
 }
 

@@ -128,7 +128,6 @@ std::vector<std::vector<size_t>> Tries(const std::vector<std::vector<size_t>>& r
 void ChooseFreeRunning(const SelectionData& data, const std::vector<int>& state_vars,
                        const std::vector<StateCandidates>& states,
                        const std::vector<std::vector<size_t>>& ranked, Selection& out) {
-  const long rows = data.t.size();
   const SegmentSimulator joint(data, state_vars);
   const std::vector<std::vector<size_t>> tries = Tries(ranked);
   auto combination = [&](const std::vector<size_t>& rank) {
