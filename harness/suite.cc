@@ -1,8 +1,5 @@
 #include "harness/suite.h"
 
-#include "harness/default_suites.h"
-#include "methods/registry.h"
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,7 +9,9 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "harness/embedded_suites.h"
 #include "maneuvers/maneuver_factory.h"
+#include "methods/registry.h"
 #include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
 #include "simulation/vessel_simulator.h"

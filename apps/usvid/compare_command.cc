@@ -1,11 +1,14 @@
-// usvid compare [--suite S.json | --quick] [--threads N] [--baseline PREV/results.json]
-//               [--fresh] --out DIR
+// usvid compare [--suite S.json | --suite NAME | --quick] [--data-dir DIR] [--threads N]
+//               [--baseline PREV/results.json] [--fresh] --out DIR
 // The whole benchmark: every method fitted on every training maneuver and scored in free run on
 // held-out test maneuvers; writes DIR/results.json, DIR/results.csv and DIR/summary.md. Each
 // finished cell is kept in DIR/cells, so the same command resumes a killed run; under
 // `mpirun -n N` (built with -DUSVID_WITH_MPI=ON) the cells are spread over the ranks.
+// `--suite real` runs one such suite per vessel of the measured data in --data-dir
+// (harness/real_suite.h), each into DIR/<track>, and DIR/summary.md gathers them.
 
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -16,6 +19,7 @@
 #include "core/json_file.h"
 #include "harness/distributed_run.h"
 #include "harness/ranks.h"
+#include "harness/real_suite.h"
 #include "harness/regression.h"
 #include "harness/report.h"
 #include "harness/results.h"
@@ -27,20 +31,23 @@ namespace {
 struct CompareOptions {
   std::string suite;
   std::string baseline;
+  std::string data_dir = "../shared/data";
   bool quick = false;
   bool fresh = false;
   int threads = 0;
   std::string out;
 };
 
-void RunCompare(const CompareOptions& o) {
-  if (!o.suite.empty() && o.quick) throw InputError("compare: give --suite or --quick, not both");
-  const Suite suite = o.suite.empty()
-                          ? DefaultSuite(o.quick)
-                          : ParseSuite(ReadJsonFile(o.suite, JsonComments::kAllowed), o.suite);
-  // The baseline is read before hours of fitting, not after.
-  const nlohmann::json baseline = o.baseline.empty() ? nlohmann::json() : ReadJsonFile(o.baseline);
-  EnsureOutputDirectory(o.out);
+struct SuiteOutcome {
+  std::string summary;
+  int worse = 0;  // groups worse than the baseline
+};
+
+// One suite fitted and scored into `out`: results.json, results.csv, summary.md, plots and
+// report.html (and regressions.json against a baseline).
+SuiteOutcome RunSuiteInto(const Suite& suite, const std::string& out, const CompareOptions& o,
+                          const nlohmann::json& baseline) {
+  EnsureOutputDirectory(out);
   const auto start = std::chrono::steady_clock::now();
   if (ranks::Rank() == 0)
     std::cerr << "usvid compare: suite '" << suite.name << "', " << FitJobs(suite).size()
@@ -48,33 +55,94 @@ void RunCompare(const CompareOptions& o) {
               << (ranks::Size() > 1 ? " on " + std::to_string(ranks::Size()) + " ranks" : "")
               << '\n';
   const DistributedRun run = RunSuiteDistributed(
-      suite, o.out, {.threads = o.threads, .fresh = o.fresh, .build = ExecutableIdentity()},
+      suite, out, {.threads = o.threads, .fresh = o.fresh, .build = ExecutableIdentity()},
       [](const std::string& line) {
         // One write per line: the lines of several MPI ranks must not interleave.
         std::cerr << "usvid compare: " + line + "\n" << std::flush;
       });
-  if (ranks::Rank() != 0) return;  // rank 0 writes the outputs
+  SuiteOutcome outcome;
+  if (ranks::Rank() != 0) return outcome;  // rank 0 writes the outputs
   const std::vector<ResultRow>& rows = run.rows;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  WriteJsonFile(o.out + "/results.json", ResultsJson(suite, rows, seconds));
-  WriteFileAtomically(o.out + "/results.csv", ResultsCsv(rows));
-  std::string summary = SummaryMarkdown(suite, rows, seconds);
-  int worse = 0;
+  WriteJsonFile(out + "/results.json", ResultsJson(suite, rows, seconds));
+  WriteFileAtomically(out + "/results.csv", ResultsCsv(rows));
+  outcome.summary = SummaryMarkdown(suite, rows, seconds);
   if (!o.baseline.empty()) {
     const RegressionReport r = CompareWithBaseline(rows, baseline, o.baseline);
-    WriteJsonFile(o.out + "/regressions.json", {{"baseline", o.baseline}, {"groups", r.groups}});
-    summary += "\n" + r.Markdown();
-    worse = r.worse;
+    WriteJsonFile(out + "/regressions.json", {{"baseline", o.baseline}, {"groups", r.groups}});
+    outcome.summary += "\n" + r.Markdown();
+    outcome.worse = r.worse;
   }
-  WriteFileAtomically(o.out + "/summary.md", summary);
-  WriteReport(suite, rows, summary, o.out);
+  WriteFileAtomically(out + "/summary.md", outcome.summary);
+  WriteReport(suite, rows, outcome.summary, out);
   std::cerr << "usvid compare: wrote results.json, results.csv, summary.md, plots and report.html "
                "to "
-            << o.out << " (" << seconds << " s)\n";
-  if (worse > 0)
-    throw RegressionFound("compare: " + std::to_string(worse) + " groups worse than the baseline " +
-                          o.baseline + " (see " + o.out + "/regressions.json)");
+            << out << " (" << seconds << " s)\n";
+  return outcome;
+}
+
+// The markdown of a track's summary one heading level down, under the real suite's own title.
+std::string Demoted(const std::string& markdown) {
+  std::string out;
+  size_t at = 0;
+  while (at < markdown.size()) {
+    size_t end = markdown.find('\n', at);
+    if (end == std::string::npos) end = markdown.size();
+    const std::string line = markdown.substr(at, end - at);
+    out += (line.starts_with("#") ? "#" : "") + line + "\n";
+    at = end + 1;
+  }
+  return out;
+}
+
+// --suite real: one suite per vessel of the data folder, each into OUT/<track>.
+void RunRealSuite(const CompareOptions& o) {
+  if (!o.baseline.empty())
+    throw InputError(
+        "compare: --baseline compares one suite; give it with a track's own suite "
+        "(--suite real runs several)");
+  if (!std::filesystem::is_directory(o.data_dir)) {
+    std::cerr << "usvid compare: suite 'real' skipped: no data folder " << o.data_dir
+              << " (give it with --data-dir; docs/compare.md#the-real-suite)\n";
+    return;
+  }
+  const std::vector<SuiteTrack> tracks = RealSuiteTracks(o.data_dir, o.out + "/vessels");
+  std::string summary = "# usvid compare: real\n\nMeasured data from " + o.data_dir +
+                        ", one track per vessel, each with its own verdict and its own folder "
+                        "(results.json, report.html).\n\n";
+  for (const SuiteTrack& track : tracks) {
+    for (const std::string& note : track.notes)
+      std::cerr << "usvid compare: track " << track.name << ": " << note << '\n';
+    const SuiteOutcome outcome = RunSuiteInto(track.suite, o.out + "/" + track.name, o, {});
+    summary += "## Track " + track.name + " (" + track.name + "/)\n\n";
+    for (const std::string& note : track.notes) summary += "- " + note + "\n";
+    summary += "\n" + Demoted(outcome.summary) + "\n";
+  }
+  if (ranks::Rank() == 0) WriteFileAtomically(o.out + "/summary.md", summary);
+}
+
+void RunCompare(const CompareOptions& o) {
+  if (!o.suite.empty() && o.quick) throw InputError("compare: give --suite or --quick, not both");
+  if (o.suite == "real") return RunRealSuite(o);
+  Suite suite;
+  if (o.suite.empty() || o.suite == "default" || o.suite == "quick") {
+    suite = DefaultSuite(o.quick || o.suite == "quick");
+  } else if (IsSuiteName(o.suite)) {
+    std::string names;
+    for (const std::string& n : EmbeddedSuiteNames()) names += (names.empty() ? "" : ", ") + n;
+    throw InputError("compare: --suite '" + o.suite + "' is no embedded suite (" + names +
+                     ") and no suite file (a path with .json)");
+  } else {
+    suite = ParseSuite(ReadJsonFile(o.suite, JsonComments::kAllowed), o.suite);
+  }
+  // The baseline is read before hours of fitting, not after.
+  const nlohmann::json baseline = o.baseline.empty() ? nlohmann::json() : ReadJsonFile(o.baseline);
+  const SuiteOutcome outcome = RunSuiteInto(suite, o.out, o, baseline);
+  if (outcome.worse > 0)
+    throw RegressionFound("compare: " + std::to_string(outcome.worse) +
+                          " groups worse than the baseline " + o.baseline + " (see " + o.out +
+                          "/regressions.json)");
 }
 
 }  // namespace
@@ -83,7 +151,12 @@ void AddCompareCommand(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand(
       "compare", "The benchmark: methods x maneuvers x vessels x noise x seeds, held-out scores");
-  cmd->add_option("--suite", o->suite, "Suite JSON (default: the embedded default suite)");
+  cmd->add_option("--suite", o->suite,
+                  "A suite JSON file, or an embedded suite: default (the default), quick, or "
+                  "real (the measured data of --data-dir)");
+  cmd->add_option("--data-dir", o->data_dir,
+                  "The measured data of --suite real (default ../shared/data); absent, the suite "
+                  "is skipped");
   cmd->add_flag("--quick", o->quick, "The default suite, smaller: seconds, not minutes");
   cmd->add_option("--baseline", o->baseline,
                   "A previous results.json: per vessel and method, the cells paired with the "

@@ -1,0 +1,160 @@
+#include "harness/real_suite.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "harness/embedded_suites.h"
+
+namespace usvid {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TrackSpec {
+  const char* name;
+  const char* json;
+  std::vector<const char*> folders;  // scanned for further test runs, from the data folder
+  const char* extension;
+};
+
+const std::vector<TrackSpec>& Tracks() {
+  static const std::vector<TrackSpec> tracks = {
+      {"kvlcc2", kRealKvlcc2SuiteJson, {"kvlcc2-marin"}, ".dat"},
+      {"esso-osaka",
+       kRealEssoOsakaSuiteJson,
+       {"esso-osaka/zigzag", "esso-osaka/turning", "esso-osaka/random"},
+       ".csv"}};
+  return tracks;
+}
+
+// The embedded vessel files a track may name as "@FILE".
+struct EmbeddedVessel {
+  const char* name;
+  const char* text;
+};
+const EmbeddedVessel kVessels[] = {{"esso-osaka.yaml", kEssoOsakaVesselYaml}};
+
+std::vector<std::string> FilesOf(const nlohmann::json& entry) {
+  const nlohmann::json& f = entry.at("file");
+  if (f.is_string()) return {f.get<std::string>()};
+  return f.get<std::vector<std::string>>();
+}
+
+// Every data file of `suite` joined to `data_dir`; the relative names, as listed, into `listed`
+// and the absent ones into `missing`.
+void Resolve(nlohmann::json& suite, const fs::path& data_dir, std::set<std::string>& listed,
+             std::vector<std::string>& missing) {
+  for (const char* part : {"train", "test"})
+    for (nlohmann::json& entry : suite["data"][part]) {
+      std::vector<std::string> files = FilesOf(entry);
+      for (std::string& f : files) {
+        listed.insert(fs::path(f).lexically_normal().string());
+        const fs::path path = data_dir / f;
+        if (!fs::is_regular_file(path)) missing.push_back(f);
+        f = path.lexically_normal().string();
+      }
+      if (entry["file"].is_string())
+        entry["file"] = files[0];
+      else
+        entry["file"] = files;
+    }
+}
+
+// The runs of the track's folders that the track does not list, sorted, as test entries like
+// its first one (format, column map) but without a maneuver: scored by their free runs.
+std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::json& suite,
+                                        const fs::path& data_dir,
+                                        const std::set<std::string>& listed) {
+  std::vector<std::string> found;
+  for (const char* folder : spec.folders) {
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(data_dir / folder, ec)) {
+      if (!e.is_regular_file() || e.path().extension() != spec.extension) continue;
+      const std::string relative = (fs::path(folder) / e.path().filename()).string();
+      if (!listed.contains(relative)) found.push_back(relative);
+    }
+  }
+  std::sort(found.begin(), found.end());
+  std::vector<nlohmann::json> out;
+  const nlohmann::json& like = suite["data"]["test"].at(0);
+  for (const std::string& f : found) {
+    nlohmann::json entry = {{"name", "held-out " + fs::path(f).stem().string()},
+                            {"format", like.at("format")},
+                            {"file", (data_dir / f).lexically_normal().string()}};
+    if (like.contains("map")) entry["map"] = like["map"];
+    out.push_back(entry);
+  }
+  return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& EmbeddedSuiteNames() {
+  static const std::vector<std::string> names = {"default", "quick", "real"};
+  return names;
+}
+
+bool IsSuiteName(const std::string& suite) {
+  return suite.find('/') == std::string::npos && suite.find('.') == std::string::npos;
+}
+
+std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir,
+                                        const std::string& vessel_dir) {
+  std::vector<SuiteTrack> tracks;
+  std::vector<std::string> missing;
+  std::vector<nlohmann::json> jsons;
+  for (const TrackSpec& spec : Tracks()) {
+    nlohmann::json suite =
+        nlohmann::json::parse(spec.json, nullptr, true, /*ignore_comments=*/true);
+    std::set<std::string> listed;
+    std::vector<std::string> lacks;
+    Resolve(suite, data_dir, listed, lacks);
+    if (lacks.size() == listed.size())  // the whole vessel is absent: name its folder
+      missing.push_back(fs::path(spec.folders[0]).begin()->string() + "/ (all " +
+                        std::to_string(listed.size()) + " of the track's runs)");
+    else
+      missing.insert(missing.end(), lacks.begin(), lacks.end());
+    SuiteTrack track;
+    track.name = spec.name;
+    const std::vector<nlohmann::json> further = FurtherRuns(spec, suite, data_dir, listed);
+    for (const nlohmann::json& entry : further) suite["data"]["test"].push_back(entry);
+    if (further.empty())
+      track.notes.push_back(
+          "the data folder holds only the shared runs: trained and tested on "
+          "those (the papers' own test runs are not there)");
+    else
+      track.notes.push_back(std::to_string(further.size()) +
+                            (further.size() == 1 ? " further run" : " further runs") +
+                            " of the data folder scored as held-out tests (free runs; no "
+                            "maneuver re-run)");
+    jsons.push_back(std::move(suite));
+    tracks.push_back(std::move(track));
+  }
+  if (!missing.empty()) {
+    std::string list;
+    for (const std::string& f : missing) list += (list.empty() ? "" : ", ") + f;
+    throw InputError("compare --suite real: the data folder " + data_dir + " lacks " + list +
+                     " (docs/compare.md#the-real-suite)");
+  }
+  for (size_t i = 0; i < tracks.size(); ++i) {
+    nlohmann::json& suite = jsons[i];
+    for (nlohmann::json& vessel : suite["vessels"]) {
+      const std::string name = vessel.get<std::string>();
+      if (!name.starts_with("@")) continue;
+      for (const EmbeddedVessel& v : kVessels)
+        if (name.substr(1) == v.name) {
+          EnsureOutputDirectory(vessel_dir);
+          const std::string path = (fs::path(vessel_dir) / v.name).string();
+          WriteFileAtomically(path, v.text);
+          vessel = path;
+        }
+    }
+    tracks[i].suite = ParseSuite(suite, "embedded suite real, track " + tracks[i].name);
+  }
+  return tracks;
+}
+
+}  // namespace usvid

@@ -1,0 +1,85 @@
+// The real suite's tracks (harness/real_suite.h) on a data folder: the shared runs, and every
+// further run of a track's folders added as a held-out test (the papers' test runs, where a
+// folder holds them). Skips without ../shared/data.
+#include "harness/real_suite.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace usvid {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+const fs::path kShared = USVID_SHARED_DATA_DIR;
+
+fs::path TempDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("usvid_real_suite_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::vector<std::string> TestNames(const Suite& s) {
+  std::vector<std::string> names;
+  for (const SuiteData& d : s.test_data) names.push_back(d.name);
+  return names;
+}
+
+TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
+  if (!fs::exists(kShared / "esso-osaka") || !fs::exists(kShared / "kvlcc2-marin"))
+    GTEST_SKIP() << "shared data absent: " << kShared;
+  const fs::path dir = TempDir("further");
+  const fs::path data = dir / "data";
+  fs::create_directories(data);
+  fs::create_directory_symlink(fs::absolute(kShared / "kvlcc2-marin"), data / "kvlcc2-marin");
+  // A copy of the Esso folder with one run more: a zig-zag the shared folder does not have.
+  for (const char* sub : {"zigzag", "turning", "random", "berthing"}) {
+    fs::create_directories(data / "esso-osaka" / sub);
+    for (const auto& e : fs::directory_iterator(kShared / "esso-osaka" / sub))
+      fs::create_symlink(fs::absolute(e.path()), data / "esso-osaka" / sub / e.path().filename());
+  }
+  fs::create_symlink(fs::absolute(kShared / "esso-osaka/zigzag/zigzag_31-Jul-2020_13_04_24.csv"),
+                     data / "esso-osaka/zigzag/zigzag_from_the_paper.csv");
+
+  const std::vector<SuiteTrack> tracks = RealSuiteTracks(data.string(), (dir / "out").string());
+  ASSERT_EQ(tracks.size(), 2u);
+  const SuiteTrack& kvlcc2 = tracks[0];
+  const SuiteTrack& esso = tracks[1];
+  EXPECT_EQ(kvlcc2.name, "kvlcc2");
+  EXPECT_THAT(TestNames(kvlcc2.suite), ::testing::ElementsAre("zigzag -20/20", "turning 35"));
+  ASSERT_EQ(kvlcc2.notes.size(), 1u);
+  EXPECT_THAT(kvlcc2.notes[0], HasSubstr("only the shared runs"));
+
+  EXPECT_EQ(esso.name, "esso-osaka");
+  const std::vector<std::string> names = TestNames(esso.suite);
+  // Every zig-zag, turning and random run but the eight it trains on (the folder's further runs
+  // too, the added one among them); no berthing run.
+  long runs = 0;
+  for (const char* sub : {"zigzag", "turning", "random"})
+    for (const auto& e : fs::directory_iterator(data / "esso-osaka" / sub))
+      runs += e.path().extension() == ".csv";
+  EXPECT_EQ(static_cast<long>(names.size()), runs - 8);
+  EXPECT_THAT(names, ::testing::Contains("held-out zigzag_from_the_paper"));
+  EXPECT_THAT(names, ::testing::Contains("zigzag 31-Jul 13:04"));
+  const auto added = std::find(names.begin(), names.end(), "held-out zigzag_from_the_paper");
+  const SuiteData& run = esso.suite.test_data[added - names.begin()];
+  EXPECT_EQ(run.format, "csv-log");
+  EXPECT_EQ(run.map, esso.suite.test_data.front().map);
+  EXPECT_TRUE(run.maneuver.empty());
+  EXPECT_THAT(esso.notes[0],
+              HasSubstr(std::to_string(runs - 16) + " further runs of the data folder"));
+  // The embedded vessel file is written beside the results, and the track names it there.
+  ASSERT_EQ(esso.suite.vessels.size(), 1u);
+  EXPECT_EQ(esso.suite.vessels[0], (dir / "out" / "esso-osaka.yaml").string());
+  EXPECT_TRUE(fs::exists(dir / "out" / "esso-osaka.yaml"));
+  for (const SuiteData& d : esso.suite.train_data)
+    for (const std::string& f : d.files) EXPECT_TRUE(fs::exists(f)) << f;
+}
+
+}  // namespace
+}  // namespace usvid
