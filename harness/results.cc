@@ -370,13 +370,16 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
      << " s. Every score is on held-out data (another maneuver, or the same with another seed). "
         "Fits are the free-run fit % averaged over the identified states; tables give the "
         "median [interquartile range] of the raw values (results.json has every row).\n\n";
-  md << "## Verdict\n\nPer vessel, training maneuver and metric: each method's cell score (a "
-        "noise level and seed; its test maneuvers averaged), the methods ranked by a Friedman "
+  md << "## Verdict\n\nPer vessel, training maneuver and metric: each method's cell score ("
+     << (suite.Measured() ? "a held-out run and seed"
+                          : "a noise level and seed; its test maneuvers averaged")
+     << "), the methods ranked by a Friedman "
         "test over the paired cells, each against the best and the next by Wilcoxon "
         "signed-rank tests, Holm-adjusted, at "
-     << kVerdictAlpha
-     << ". The medians shown are of the cell scores; nominal (the true simulator) is the "
-        "ceiling.\n"
+     << kVerdictAlpha << ". The medians shown are of the cell scores; nominal "
+     << (suite.Measured() ? "(the vessel as given, unfitted) is shown apart, as a baseline"
+                          : "(the true simulator) is the ceiling")
+     << ".\n"
      << VerdictMarkdown(Verdict(suite, rows)) << '\n';
   std::set<std::string> methods, vessels;
   for (const ResultRow& r : rows) {

@@ -53,7 +53,10 @@ const std::vector<Metric>& Metrics() {
   return metrics;
 }
 
-using CellKey = std::pair<double, uint64_t>;  // noise, seed
+// noise, seed, and on measured data the test run: there each held-out run is a block of its
+// own (the runs are independent records, and a suite on logs has one seed), elsewhere the test
+// maneuvers of a cell are averaged ("" here).
+using CellKey = std::tuple<double, uint64_t, std::string>;
 
 struct MethodCells {
   std::map<CellKey, double> score;  // mean over the cell's test maneuvers
@@ -62,17 +65,17 @@ struct MethodCells {
 
 // Per method, its cells' scores for one metric (a failed fit: the worst score).
 std::map<std::string, MethodCells> CellScores(const std::vector<const ResultRow*>& rows,
-                                              const Metric& metric) {
+                                              const Metric& metric, bool per_run) {
   const double worst = metric.higher_is_better ? -INFINITY : INFINITY;
   std::map<std::string, std::map<CellKey, std::vector<double>>> values;
   std::map<std::string, MethodCells> out;
-  std::set<std::tuple<std::string, double, uint64_t>> failed;
+  std::set<std::tuple<std::string, double, uint64_t>> failed;  // failed fits, counted once
   // The test maneuvers the metric applies to, shown by the rows that were scored on them.
   std::set<std::string> applies;
   for (const ResultRow* r : rows)
     if (r->status == "ok" && metric.score(*r)) applies.insert(r->test_maneuver);
   for (const ResultRow* r : rows) {
-    const CellKey cell{r->noise, r->seed};
+    const CellKey cell{r->noise, r->seed, per_run ? r->test_maneuver : std::string()};
     if (r->status != "ok") {
       if (!applies.contains(r->test_maneuver)) continue;
       if (failed.insert({r->method, r->noise, r->seed}).second) ++out[r->method].failed;
@@ -95,14 +98,14 @@ std::map<std::string, MethodCells> CellScores(const std::vector<const ResultRow*
 }
 
 VerdictEntry Judge(const std::string& vessel, const std::string& train, const Metric& metric,
-                   const std::vector<const ResultRow*>& rows) {
+                   const std::vector<const ResultRow*>& rows, bool per_run) {
   VerdictEntry e;
   e.vessel = vessel;
   e.train_maneuver = train;
   e.metric = metric.key;
   e.label = metric.label;
   e.higher_is_better = metric.higher_is_better;
-  std::map<std::string, MethodCells> cells = CellScores(rows, metric);
+  std::map<std::string, MethodCells> cells = CellScores(rows, metric, per_run);
   if (const auto it = cells.find(std::string(kNominalMethodName)); it != cells.end()) {
     std::vector<double> v;
     for (const auto& [_, s] : it->second.score) v.push_back(s);
@@ -203,7 +206,7 @@ std::vector<VerdictEntry> Verdict(const Suite& suite, const std::vector<ResultRo
         if (r.vessel == vessel && r.train_maneuver == train) cell_rows.push_back(&r);
       if (cell_rows.empty()) continue;
       for (const Metric& metric : Metrics()) {
-        VerdictEntry e = Judge(vessel, train, metric, cell_rows);
+        VerdictEntry e = Judge(vessel, train, metric, cell_rows, suite.Measured());
         if (!e.ranking.empty()) out.push_back(std::move(e));
       }
     }

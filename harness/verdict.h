@@ -2,17 +2,20 @@
 // with ties marked where the data cannot tell two apart.
 //
 // Cells: a method's score in one (noise level, seed) cell is the mean of its scores over the
-// test maneuvers (which share the fitted model, so they are not independent). The methods'
-// cells are paired (same training data), so the test is rank-based and paired: Friedman over
-// the cells (metrics/rank_tests.h), the methods ordered by mean rank, and each compared with the
-// best and with the one ranked above it by a Wilcoxon signed-rank test, Holm-adjusted over those
-// comparisons. Demsar (2006, JMLR 7) recommends the Wilcoxon and Friedman tests for comparing
-// methods over paired cases; Benavoli et al. (2016, JMLR 17) the pairwise Wilcoxon tests with
-// Holm's correction as the post-hoc test, rather than tests on mean ranks. Two methods are
-// tied when the Friedman test or the adjusted pairwise test does not reach kVerdictAlpha. Ranks
-// need no clamping: a diverged run's fit of -1e5 % is simply the worst in its cell. A fit that
-// failed counts as the worst score in its cell; a method that failed in every cell is not
-// ranked but listed. The nominal model (the true simulator) is the ceiling, not a contender.
+// test maneuvers (which share the fitted model, so they are not independent). On measured data
+// a cell is one held-out run: the runs are separate records of the vessel, a suite on logs has
+// no noise levels and usually one seed, and the question is which model predicts a new run
+// better, so the runs are the blocks. The methods' cells are paired (same training data), so the
+// test is rank-based and paired: Friedman over the cells (metrics/rank_tests.h), the methods
+// ordered by mean rank, and each compared with the best and with the one ranked above it by a
+// Wilcoxon signed-rank test, Holm-adjusted over those comparisons. Demsar (2006, JMLR 7) recommends
+// the Wilcoxon and Friedman tests for comparing methods over paired cases; Benavoli et al. (2016,
+// JMLR 17) the pairwise Wilcoxon tests with Holm's correction as the post-hoc test, rather than
+// tests on mean ranks. Two methods are tied when the Friedman test or the adjusted pairwise test
+// does not reach kVerdictAlpha. Ranks need no clamping: a diverged run's fit of -1e5 % is simply
+// the worst in its cell. A fit that failed counts as the worst score in its cell; a method that
+// failed in every cell is not ranked but listed. The nominal model (the true simulator) is the
+// ceiling, not a contender.
 //
 // Metrics: the free-run fit %, the 5 s and 30 s horizon fits (higher is better), and the
 // absolute errors of the closed-loop criteria (zig-zag overshoots, turning circle's tactical

@@ -298,6 +298,29 @@ TEST_F(VerdictTest, FailedRowOfAnotherTestManeuverDoesNotCountForItsMetric) {
 // the JSON has per entry and per standing the fields of VerdictEntry and Standing (but the label,
 // which only the Markdown needs; ceiling as "nominal", only when there is one), so the report and
 // results.json say the same.
+// On measured data a suite has one seed and no noise levels: one (noise, seed) cell, which no
+// test can separate. There each held-out run is a block: A 5 points above B on every one of ten
+// runs separates them (exact Wilcoxon p = 2 / 2^10); the same rows in a simulated suite are one
+// cell, and tie.
+TEST_F(VerdictTest, OnMeasuredDataEachHeldOutRunIsABlock) {
+  const Cell one{0.0, 1};
+  for (size_t i = 0; i < 10; ++i) {
+    const std::string run = "run " + std::to_string(i);
+    rows_.push_back(Row("A", run, one, Base(i)));
+    rows_.push_back(Row("B", run, one, Base(i) - 5.0 + Jitter(i)));
+  }
+  const VerdictEntry simulated = Entry(Verdict(suite_, rows_), "free_run_fit_percent");
+  EXPECT_EQ(simulated.cells, 1);
+  EXPECT_TRUE(Of(simulated, "B").tied_with_best);
+
+  suite_.train_data = {SuiteData{}};  // a suite on measured data
+  const VerdictEntry measured = Entry(Verdict(suite_, rows_), "free_run_fit_percent");
+  EXPECT_EQ(measured.cells, 10);
+  EXPECT_EQ(Order(measured), (std::vector<std::string>{"A", "B"}));
+  EXPECT_FALSE(Of(measured, "B").tied_with_best);
+  EXPECT_LT(measured.friedman_p, 0.05);
+}
+
 TEST_F(VerdictTest, MarkdownAndJsonReportTheRanking) {
   AddThreeMethods(10);
   const std::vector<VerdictEntry> verdict = Verdict(suite_, rows_);
