@@ -82,7 +82,8 @@ SuiteOutcome RunSuiteInto(const Suite& suite, const std::string& out, const Comp
   return outcome;
 }
 
-// The markdown of a track's summary one heading level down, under the real suite's own title.
+// The markdown of a track's summary one heading level down, under the real suite's own title
+// (its own title line left out: the track's heading stands for it).
 std::string Demoted(const std::string& markdown) {
   std::string out;
   size_t at = 0;
@@ -90,7 +91,7 @@ std::string Demoted(const std::string& markdown) {
     size_t end = markdown.find('\n', at);
     if (end == std::string::npos) end = markdown.size();
     const std::string line = markdown.substr(at, end - at);
-    out += (line.starts_with("#") ? "#" : "") + line + "\n";
+    if (!line.starts_with("# ")) out += (line.starts_with("#") ? "#" : "") + line + "\n";
     at = end + 1;
   }
   return out;
