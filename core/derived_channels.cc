@@ -52,4 +52,11 @@ bool CanDerive(const Dataset& data, const std::string& name) {
   return false;
 }
 
+std::string DerivedFrom(const std::string& name) {
+  if (name == "U") return "u and v";
+  if (name == "chi") return "u, v and psi";
+  if (name == "wind_u" || name == "wind_v") return "wind_speed and wind_direction";
+  return "";
+}
+
 }  // namespace usvid

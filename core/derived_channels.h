@@ -29,4 +29,8 @@ void AddDerivedChannels(Dataset& data);
 // from): a command that checks its records' channels before it identifies accepts these.
 bool CanDerive(const Dataset& data, const std::string& name);
 
+// What a derived channel is derived from, for an error that names it ("wind_speed and
+// wind_direction"); empty for a channel that is not derived.
+std::string DerivedFrom(const std::string& name);
+
 }  // namespace usvid

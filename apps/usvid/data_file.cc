@@ -39,7 +39,9 @@ Dataset ReadDataFiles(const std::string& list, const std::string& command,
     for (const std::string& channel : required)
       if (!records.back().Has(channel) && !CanDerive(records.back(), channel)) {
         records.back().CheckNotText(channel);
+        const std::string from = DerivedFrom(channel);
         throw InputError(file + ": no channel '" + channel + "'" +
+                         (from.empty() ? "" : ", nor " + from + " to derive it from") +
                          (files.size() > 1 ? " (every record of --data needs it)" : ""));
       }
   }

@@ -134,7 +134,8 @@ TEST(VesselFileCliTest, EquationMethodsReadTheLoggedWindThroughItsBodyComponents
                             (dir / "no_direction.csv").string() + " --out " +
                             (dir / "bad.json").string());
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_THAT(bad.err, ::testing::HasSubstr("no channel 'wind_u'"));
+  EXPECT_THAT(bad.err, ::testing::HasSubstr("no channel 'wind_u', nor wind_speed and "
+                                            "wind_direction to derive it from"));
   EXPECT_FALSE(fs::exists(dir / "bad.json"));
 }
 

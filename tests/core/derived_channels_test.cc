@@ -81,6 +81,10 @@ TEST_F(DerivedChannelsTest, CanDeriveAgreesWithWhatIsAdded) {
   AddDerivedChannels(d);
   for (const char* c : {"U", "wind_u", "wind_v"}) EXPECT_TRUE(d.Has(c)) << c;
   EXPECT_FALSE(d.Has("chi"));
+  // What an error names when a channel is neither logged nor derivable.
+  EXPECT_EQ(DerivedFrom("wind_u"), "wind_speed and wind_direction");
+  EXPECT_EQ(DerivedFrom("chi"), "u, v and psi");
+  EXPECT_EQ(DerivedFrom("r"), "");
 }
 
 }  // namespace
