@@ -1,6 +1,9 @@
 #include "core/derived_channels.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <vector>
 
 namespace usvid {
 
@@ -44,19 +47,33 @@ void AddDerivedChannels(Dataset& data) {
   AddWindComponents(data);
 }
 
+namespace {
+
+// Each derived channel and the logged channels it is computed from.
+const std::vector<std::string>* SourcesOf(const std::string& name) {
+  static const std::map<std::string, std::vector<std::string>> sources = {
+      {"U", {"u", "v"}},
+      {"chi", {"u", "v", "psi"}},
+      {"wind_u", {"wind_speed", "wind_direction"}},
+      {"wind_v", {"wind_speed", "wind_direction"}}};
+  const auto it = sources.find(name);
+  return it == sources.end() ? nullptr : &it->second;
+}
+
+}  // namespace
+
 bool CanDerive(const Dataset& data, const std::string& name) {
-  if (name == "U") return data.Has("u") && data.Has("v");
-  if (name == "chi") return data.Has("u") && data.Has("v") && data.Has("psi");
-  if (name == "wind_u" || name == "wind_v")
-    return data.Has("wind_speed") && data.Has("wind_direction");
-  return false;
+  const std::vector<std::string>* from = SourcesOf(name);
+  return from != nullptr &&
+         std::all_of(from->begin(), from->end(), [&](const std::string& c) { return data.Has(c); });
 }
 
 std::string DerivedFrom(const std::string& name) {
-  if (name == "U") return "u and v";
-  if (name == "chi") return "u, v and psi";
-  if (name == "wind_u" || name == "wind_v") return "wind_speed and wind_direction";
-  return "";
+  const std::vector<std::string>* from = SourcesOf(name);
+  std::string out;
+  for (size_t i = 0; from != nullptr && i < from->size(); ++i)
+    out += (i == 0 ? "" : i + 1 == from->size() ? " and " : ", ") + (*from)[i];
+  return out;
 }
 
 }  // namespace usvid
