@@ -63,11 +63,19 @@ function(usvid_per_vessel_sources target template)
   usvid_jet_sources(${target} ${sources})
 endfunction()
 
-# usvid_precompile_headers(TARGET [CERES] [CLI]): TARGET's files parse Eigen, nlohmann-json and
-# the common standard headers once, from a precompiled header (with CERES also ceres.h, with
-# CLI CLI11). Parsing them took 2-4 s per header and file, a third of a small file's compile.
+# usvid_precompile_headers(TARGET [CERES] [CLI] [FROM OTHER]): TARGET's files parse Eigen,
+# nlohmann-json and the common standard headers once, from a precompiled header (with CERES also
+# ceres.h, with CLI CLI11). Parsing them took 2-4 s per header and file, a third of a small
+# file's compile. FROM: TARGET reuses OTHER's precompiled header instead of compiling its own
+# (10-17 s each, docs/performance.md#build-time). GCC accepts it only where the two are compiled
+# alike: both with OpenMP or both without (-fopenmp defines _OPENMP and _REENTRANT, which the
+# standard headers read); otherwise it warns (-Winvalid-pch) and parses the headers anew.
 function(usvid_precompile_headers target)
-  cmake_parse_arguments(ARG "CERES;CLI" "" "" ${ARGN})
+  cmake_parse_arguments(ARG "CERES;CLI" "FROM" "" ${ARGN})
+  if(ARG_FROM)
+    target_precompile_headers(${target} REUSE_FROM ${ARG_FROM})
+    return()
+  endif()
   set(headers <algorithm> <map> <memory> <optional> <string> <vector> <Eigen/Dense>
               <nlohmann/json.hpp>)
   if(ARG_CERES)

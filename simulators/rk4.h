@@ -29,13 +29,19 @@ using StateVector = Eigen::Matrix<T, N, 1>;
 // How a step calls f (docs/performance.md#build-time). Everything f calls is inlined into it
 // (flatten): with ceres::Jet the arithmetic is hundreds of small inline operators, and GCC stops
 // inlining them once a translation unit grows (several vessels instantiated in one file made the
-// Jet step 3x slower). For a Jet of 8 derivatives or more each of the four stages is one such
+// Jet step 3x slower). For a Jet of 5 derivatives or more each of the four stages is one such
 // flattened function, called four times: four inlined copies of a vessel's Jet derivative in one
 // step took GCC 3.6 times as long to compile (62 s against 17 s for the five vessels' Jet
-// benchmark), and the step runs as many instructions. For double and small Jets the whole step
-// is flattened, as there a call per stage costs as much as the stage (msd: 46 ns a step).
+// benchmark), and the step runs as many instructions. The bound was 8 until the effect fitters'
+// one-size Jets (a vessel's states and one effect size, 7 for mmg) showed the same: the mmg
+// effect fitter compiled in 13 s instead of 23 s, and the diagnosis ran no slower. For double
+// and the smallest Jets (msd's) the whole step is flattened, as there a call per stage costs as
+// much as the stage (msd: 46 ns a step).
 template <typename T>
-concept WideJet = requires { T::DIMENSION; } && T::DIMENSION >= 8;
+concept WideJet = requires {
+  T::DIMENSION;
+}
+&&T::DIMENSION >= 5;
 
 template <typename T, typename F>
 [[gnu::noinline]] USVID_FLATTEN void Rk4Stage(const F& f, const T* x, T* dx) {
