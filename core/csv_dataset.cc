@@ -181,7 +181,7 @@ std::string FormatDatasetCsv(const Dataset& data) {
     out += FormatNumber(data.t()(i));
     for (const Channel& c : data.channels()) {
       out += ',';
-      if (c.sampled(i)) out += FormatNumber(c.values(i));
+      if (c.IsSampled(i)) out += FormatNumber(c.Value(i));
     }
     out += '\n';
   }

@@ -13,8 +13,9 @@ void AddSpeedAndCourse(Dataset& data) {
   if (!data.Has("U")) {
     const Channel& u = data.Get("u");
     const Channel& v = data.Get("v");
-    Eigen::VectorXd speed = (u.values.array().square() + v.values.array().square()).sqrt().matrix();
-    Eigen::ArrayX<bool> sampled = u.sampled && v.sampled;
+    Eigen::VectorXd speed =
+        (u.values().array().square() + v.values().array().square()).sqrt().matrix();
+    Eigen::ArrayX<bool> sampled = u.sampled() && v.sampled();
     data.Set("U", std::move(speed), std::move(sampled));
   }
   if (!data.Has("chi") && data.Has("psi")) {
@@ -23,8 +24,8 @@ void AddSpeedAndCourse(Dataset& data) {
     const Channel& psi = data.Get("psi");
     Eigen::VectorXd course(data.rows());
     for (Eigen::Index k = 0; k < data.rows(); ++k)
-      course(k) = psi.values(k) + std::atan2(v.values(k), u.values(k));
-    Eigen::ArrayX<bool> sampled = u.sampled && v.sampled && psi.sampled;
+      course(k) = psi.Value(k) + std::atan2(v.Value(k), u.Value(k));
+    Eigen::ArrayX<bool> sampled = u.sampled() && v.sampled() && psi.sampled();
     data.Set("chi", std::move(course), std::move(sampled));
   }
 }
@@ -34,9 +35,9 @@ void AddWindComponents(Dataset& data) {
   if (data.Has("wind_u") && data.Has("wind_v")) return;
   const Channel& speed = data.Get("wind_speed");
   const Channel& from = data.Get("wind_direction");
-  Eigen::VectorXd along = -(speed.values.array() * from.values.array().cos()).matrix();
-  Eigen::VectorXd across = -(speed.values.array() * from.values.array().sin()).matrix();
-  const Eigen::ArrayX<bool> sampled = speed.sampled && from.sampled;
+  Eigen::VectorXd along = -(speed.values().array() * from.values().array().cos()).matrix();
+  Eigen::VectorXd across = -(speed.values().array() * from.values().array().sin()).matrix();
+  const Eigen::ArrayX<bool> sampled = speed.sampled() && from.sampled();
   // Set() may move the channels: `speed` and `from` are not read after the first.
   if (!data.Has("wind_u")) data.Set("wind_u", std::move(along), sampled);
   if (!data.Has("wind_v")) data.Set("wind_v", std::move(across), sampled);

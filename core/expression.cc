@@ -477,11 +477,11 @@ Eigen::VectorXd Expression::Evaluate(const Dataset& data) const {
   for (Eigen::Index start = 0; start < rows; start += kBlockRows) {
     const Eigen::Index n = std::min(kBlockRows, rows - start);
     for (std::size_t i = 0; i < channels.size(); ++i)
-      columns[i] = channels[i]->values.data() + start;
+      columns[i] = channels[i]->values().data() + start;
     EvaluateColumns(columns, n, result.data() + start);
   }
   for (const Channel* channel : channels) {
-    if (!channel->FullySampled()) result = channel->sampled.select(result.array(), kNaN).matrix();
+    if (!channel->FullySampled()) result = channel->sampled().select(result.array(), kNaN).matrix();
   }
   return result;
 }

@@ -39,8 +39,8 @@ Dataset JoinRecords(std::vector<Dataset> records, std::vector<std::string>* drop
     end = t(at + d.rows() - 1);
     for (size_t c = 0; c < kept.size(); ++c) {
       const Channel& channel = d.Get(kept[c]);
-      values[c].segment(at, d.rows()) = channel.values;
-      sampled[c].segment(at, d.rows()) = channel.sampled;
+      values[c].segment(at, d.rows()) = channel.values();
+      sampled[c].segment(at, d.rows()) = channel.sampled();
     }
     at += d.rows();
     sources += (sources.empty() ? "" : ", ") +

@@ -35,7 +35,7 @@ Part MakePart(const MeasuredData& d, Eigen::Index begin, Eigen::Index end, doubl
 bool Moves(const Channel& c, Eigen::Index rows) {
   std::vector<double> v;
   for (Eigen::Index k = 0; k < rows; ++k)
-    if (c.sampled(k)) v.push_back(c.values(k));
+    if (c.IsSampled(k)) v.push_back(c.Value(k));
   const Eigen::Map<const Eigen::ArrayXd> a(v.data(), static_cast<Eigen::Index>(v.size()));
   const double sd = std::sqrt((a - a.mean()).square().mean());
   return sd > 1e-6 * (1.0 + a.abs().mean());
@@ -47,7 +47,7 @@ void ChooseChannels(const Dataset& data, const VesselInfo& info, MeasuredData& d
   d.state_channel.assign(info.states.size(), -1);
   for (size_t i = 0; i < info.states.size(); ++i) {
     const Channel* c = data.Find(info.states[i]);
-    if (c == nullptr || c->sampled.count() < 2) continue;
+    if (c == nullptr || c->SampleCount() < 2) continue;
     if (!Moves(*c, data.rows())) continue;
     d.state_channel[i] = static_cast<int>(d.channels.size());
     d.channels.push_back(info.states[i]);
@@ -69,9 +69,9 @@ void CopyMeasurements(const Dataset& data, MeasuredData& d) {
   d.sampled.resize(n, channels);
   for (Eigen::Index c = 0; c < channels; ++c) {
     const Channel& ch = data.Get(d.channels[c]);
-    d.sampled.col(c) = ch.sampled;
+    d.sampled.col(c) = ch.sampled();
     for (Eigen::Index k = 0; k < n; ++k)
-      if (ch.sampled(k)) d.measured(k, c) = ch.values(k);
+      if (ch.IsSampled(k)) d.measured(k, c) = ch.Value(k);
   }
 }
 
@@ -193,11 +193,11 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
     const std::string& name = info.inputs[i];
     d.measured_input.push_back(info.IsMeasuredInput(i));
     if (d.measured_input.back() && !data.Has(name)) continue;  // no wind logged
-    if (!data.Get(name).sampled.any())
+    if (data.Get(name).SampleCount() == 0)
       throw InputError(where + "input column '" + name + "' is empty");
   }
   d.peak_command = d.inputs.PeakAbs();
-  d.wind = info.wind_body && data.Has("wind_speed") && data.Get("wind_speed").sampled.any();
+  d.wind = info.wind_body && data.Has("wind_speed") && data.Get("wind_speed").SampleCount() > 0;
 
   ChooseChannels(data, info, d);
   CopyMeasurements(data, d);

@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       USVID_CHECK(d.t()(k) > d.t()(k - 1), "accepted time stamps must increase");
     for (const usvid::Channel& c : d.channels())
       for (Eigen::Index k = 0; k < d.rows(); ++k)
-        USVID_CHECK(!c.sampled(k) || std::isfinite(c.values(k)), "accepted samples are finite");
+        USVID_CHECK(!c.IsSampled(k) || std::isfinite(c.Value(k)), "accepted samples are finite");
     // What was read writes back and reads again to the same values.
     const usvid::Dataset again = usvid::ParseDatasetCsv(usvid::FormatDatasetCsv(d), "again.csv");
     USVID_CHECK(again.rows() == d.rows(), "a written file reads back with its rows");

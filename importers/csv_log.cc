@@ -37,18 +37,18 @@ void UnwrapHeadings(Dataset& data, ImportReport& report) {
   for (const char* name : {"psi", "chi"}) {
     if (!data.Has(name)) continue;
     const Channel& c = data.Get(name);
-    const Eigen::VectorXd unwrapped = UnwrappedAngle(c.values);
+    const Eigen::VectorXd unwrapped = UnwrappedAngle(c.values());
     Eigen::Index jumps = 0;
     double last = NAN;
-    for (Eigen::Index k = 0; k < c.values.size(); ++k) {
-      if (!c.sampled(k)) continue;
-      if (std::isfinite(last) && std::abs((unwrapped(k) - c.values(k)) - last) > 1.0) ++jumps;
-      last = unwrapped(k) - c.values(k);
+    for (Eigen::Index k = 0; k < c.values().size(); ++k) {
+      if (!c.IsSampled(k)) continue;
+      if (std::isfinite(last) && std::abs((unwrapped(k) - c.Value(k)) - last) > 1.0) ++jumps;
+      last = unwrapped(k) - c.Value(k);
     }
     if (jumps == 0) continue;
     report.Note(std::string(name) + ": unwrapped " + std::to_string(jumps) +
                 (jumps == 1 ? " jump" : " jumps") + " of 2 pi (a heading logged within one turn)");
-    data.Set(name, unwrapped, c.sampled);
+    data.Set(name, unwrapped, c.sampled());
   }
 }
 
@@ -142,8 +142,9 @@ Dataset ParseCsvLog(const std::string& text, const std::string& file,
     const Channel& vn = data.Get("vn");
     const Channel& ve = data.Get("ve");
     const Channel& psi = data.Get("psi");
-    const Eigen::Array<bool, Eigen::Dynamic, 1> both = vn.sampled && ve.sampled && psi.sampled;
-    BodyVelocities body = EarthToBody(vn.values, ve.values, psi.values);
+    const Eigen::Array<bool, Eigen::Dynamic, 1> both =
+        vn.sampled() && ve.sampled() && psi.sampled();
+    BodyVelocities body = EarthToBody(vn.values(), ve.values(), psi.values());
     data.Set("u", std::move(body.u), both);
     data.Set("v", std::move(body.v), both);
     report.Note("earth-fixed vn, ve rotated to body-fixed u, v with psi");

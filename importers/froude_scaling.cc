@@ -121,7 +121,7 @@ std::vector<ScaledChannel> FroudeScale(Dataset& data, double lambda,
   data.SetTime(data.t() * std::sqrt(lambda));
   for (const ScaledChannel& s : out) {
     const Channel& c = data.Get(s.channel);
-    data.Set(s.channel, c.values * s.factor, c.sampled);
+    data.Set(s.channel, c.values() * s.factor, c.sampled());
   }
   return out;
 }

@@ -34,7 +34,7 @@ std::map<std::string, double> SelfDamping(const nlohmann::json& equations, const
     }
     const Channel& x = *channels[static_cast<size_t>(self)];
     const double rms =
-        std::sqrt(x.values.array().isNaN().select(0.0, x.values.array()).square().mean());
+        std::sqrt(x.values().array().isNaN().select(0.0, x.values().array()).square().mean());
     std::vector<double> vars(names.size());
     double sum = 0.0;
     long rows = 0;
@@ -42,8 +42,8 @@ std::map<std::string, double> SelfDamping(const nlohmann::json& equations, const
     for (Eigen::Index i = 0; i < data.rows(); i += stride) {
       bool sampled = true;
       for (size_t k = 0; k < channels.size() && sampled; ++k) {
-        sampled = channels[k]->sampled(i);
-        vars[k] = channels[k]->values(i);
+        sampled = channels[k]->IsSampled(i);
+        vars[k] = channels[k]->Value(i);
       }
       if (!sampled) continue;
       const double x0 = vars[static_cast<size_t>(self)];

@@ -51,8 +51,9 @@ class RecordedApproach : public Maneuver {
         held_[i] = recorded[act.input_names[i]](0);
         continue;
       }
-      for (Eigen::Index k = 0; k < recorded.rows(); ++k)
-        if (c.sampled(k)) followed_[i].Append(recorded.t()(k), std::span(&c.values(k), 1));
+      c.ForEachSample([&](Eigen::Index k, double v) {
+        followed_[i].Append(recorded.t()(k), std::span(&v, 1));
+      });
     }
   }
   std::string Spec() const override { return inner_->Spec(); }

@@ -147,7 +147,7 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
   Eigen::VectorXd x(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const std::string& c = channels[i];
-    x(i) = data.Has(c) && data.Get(c).sampled(0) ? data[c](0) : 0.0;
+    x(i) = data.Has(c) && data.Get(c).IsSampled(0) ? data[c](0) : 0.0;
   }
   const DivergenceBounds bounds(channels, data);
   Eigen::VectorXd u(static_cast<Eigen::Index>(inputs.size()));
@@ -219,7 +219,7 @@ FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
     const Dataset window = data.Rows(starts[j], end(j) - starts[j]);
     for (Eigen::Index i = 0; i < n; ++i) {
       const std::string& c = channels[i];
-      x(j, i) = window.Has(c) && window.Get(c).sampled(0) ? window[c](0) : 0.0;
+      x(j, i) = window.Has(c) && window.Get(c).IsSampled(0) ? window[c](0) : 0.0;
     }
     bounds.emplace_back(channels, window);
     longest = std::max(longest, end(j) - starts[j]);

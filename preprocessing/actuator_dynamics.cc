@@ -308,12 +308,12 @@ const Channel& Checked(const Dataset& data, const std::string& name, const std::
   }
   double low = INFINITY, high = -INFINITY;
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
-    if (!c->sampled(k)) continue;
-    if (!std::isfinite(c->values(k)))
+    if (!c->IsSampled(k)) continue;
+    if (!std::isfinite(c->Value(k)))
       throw InputError(what + "channel '" + name +
                        "' has a non-finite value at t = " + std::to_string(data.t()(k)) + " s");
-    low = std::min(low, c->values(k));
-    high = std::max(high, c->values(k));
+    low = std::min(low, c->Value(k));
+    high = std::max(high, c->Value(k));
   }
   if (!(high >= low)) throw InputError(what + "channel '" + name + "' has no samples");
   if (varying && high == low)
@@ -328,12 +328,12 @@ Record MakeRecord(const Dataset& data, const Channel& command, const Channel* st
                   double y_scale) {
   Record r;
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
-    if (command.sampled(k)) {
+    if (command.IsSampled(k)) {
       r.command_t.push_back(data.t()(k));
-      r.command.push_back(command.values(k) / u_scale);
+      r.command.push_back(command.Value(k) / u_scale);
     }
-    if (state == nullptr || state->sampled(k)) r.t.push_back(data.t()(k));
-    if (state != nullptr && state->sampled(k)) r.y.push_back(state->values(k) / y_scale);
+    if (state == nullptr || state->IsSampled(k)) r.t.push_back(data.t()(k));
+    if (state != nullptr && state->IsSampled(k)) r.y.push_back(state->Value(k) / y_scale);
   }
   if (!r.y.empty()) r.y0 = r.y[0];
   return r;
@@ -341,8 +341,8 @@ Record MakeRecord(const Dataset& data, const Channel& command, const Channel* st
 
 double Range(const Channel& c) {
   double low = INFINITY, high = -INFINITY;
-  for (Eigen::Index k = 0; k < c.values.size(); ++k)
-    if (c.sampled(k)) low = std::min(low, c.values(k)), high = std::max(high, c.values(k));
+  for (Eigen::Index k = 0; k < c.values().size(); ++k)
+    if (c.IsSampled(k)) low = std::min(low, c.Value(k)), high = std::max(high, c.Value(k));
   return high - low;
 }
 

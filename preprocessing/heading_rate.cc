@@ -12,10 +12,10 @@ namespace usvid {
 Eigen::VectorXd RateFromHeading(const Dataset& data, const std::string& heading) {
   const Channel* c = data.Find(heading);
   if (c == nullptr) throw InputError(data.SourcePrefix() + "no heading column '" + heading + "'");
-  if (!c->sampled.all())
+  if (!c->FullySampled())
     throw InputError(data.SourcePrefix() + "heading '" + heading +
                      "' has empty cells: resample it first");
-  return SmoothingSpline(UnwrappedAngle(c->values), MedianInterval(data.t())).derivative;
+  return SmoothingSpline(UnwrappedAngle(c->values()), MedianInterval(data.t())).derivative;
 }
 
 }  // namespace usvid

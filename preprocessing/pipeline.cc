@@ -101,7 +101,7 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
   std::vector<bool> keep(grid.rows(), true);
   for (const auto& names : {states, inputs})
     for (const std::string& n : names)
-      for (Eigen::Index k = 0; k < grid.rows(); ++k) keep[k] = keep[k] && grid.Get(n).sampled(k);
+      for (Eigen::Index k = 0; k < grid.rows(); ++k) keep[k] = keep[k] && grid.Get(n).IsSampled(k);
   // Stretches too short to differentiate (under 10 rows) are dropped too.
   long short_stretches = 0;
   for (Eigen::Index k = 0; k < grid.rows();) {

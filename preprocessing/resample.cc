@@ -38,11 +38,10 @@ Dataset Resample(const Dataset& data, const ResampleOptions& options, ResampleRe
             options.channels.end())
       continue;
     std::vector<double> ts, ys;
-    for (Eigen::Index i = 0; i < data.rows(); ++i)
-      if (c.sampled(i)) {
-        ts.push_back(data.t()(i));
-        ys.push_back(c.values(i));
-      }
+    c.ForEachSample([&](Eigen::Index i, double v) {
+      ts.push_back(data.t()(i));
+      ys.push_back(v);
+    });
     if (ts.size() < 2)
       throw InputError("resample: channel '" + c.name + "' has fewer than two samples");
     std::vector<double> gaps_between(ts.size() - 1);

@@ -10,11 +10,11 @@ ZScore ZScore::Fit(const Dataset& data, const std::vector<std::string>& channels
   ZScore z;
   for (const std::string& name : channels) {
     const Channel& c = data.Get(name);
-    const double n = static_cast<double>(c.sampled.count());
+    const double n = static_cast<double>(c.SampleCount());
     if (n < 2) throw InputError("z-score: channel '" + name + "' has fewer than two samples");
-    const Eigen::ArrayXd v = c.sampled.select(c.values.array(), 0.0);
+    const Eigen::ArrayXd v = c.sampled().select(c.values().array(), 0.0);
     const double mean = v.sum() / n;
-    const double sd = std::sqrt(c.sampled.select((v - mean).square(), 0.0).sum() / (n - 1));
+    const double sd = std::sqrt(c.sampled().select((v - mean).square(), 0.0).sum() / (n - 1));
     z.stats_[name] = {mean, sd > 0 ? sd : 1.0};
   }
   return z;
@@ -25,9 +25,9 @@ Dataset ZScore::Map(const Dataset& data, bool forward) const {
   for (const auto& [name, ms] : stats_) {
     if (!data.Has(name)) continue;
     const Channel& c = data.Get(name);
-    const Eigen::VectorXd v = forward ? Eigen::VectorXd((c.values.array() - ms.first) / ms.second)
-                                      : Eigen::VectorXd(c.values.array() * ms.second + ms.first);
-    out.Set(name, v, c.sampled);
+    const Eigen::VectorXd v = forward ? Eigen::VectorXd((c.values().array() - ms.first) / ms.second)
+                                      : Eigen::VectorXd(c.values().array() * ms.second + ms.first);
+    out.Set(name, v, c.sampled());
   }
   return out;
 }

@@ -36,12 +36,12 @@ void AddWaterjetForces(Dataset& data) {
   const Channel& nozzle = data.Get("nozzle_angle");
   const Channel& bucket = data.Get("bucket_position");
   const Eigen::Array<bool, Eigen::Dynamic, 1> sampled =
-      rpm.sampled && nozzle.sampled && bucket.sampled;
+      rpm.sampled() && nozzle.sampled() && bucket.sampled();
   const Eigen::Index n = data.rows();
   Eigen::VectorXd fx = Eigen::VectorXd::Constant(n, NAN), fy = fx, fn = fx, flow = fx;
   for (Eigen::Index k = 0; k < n; ++k) {
     if (!sampled(k)) continue;
-    const auto f = WaterjetForces(rpm.values(k), nozzle.values(k), bucket.values(k));
+    const auto f = WaterjetForces(rpm.Value(k), nozzle.Value(k), bucket.Value(k));
     fx(k) = f[0], fy(k) = f[1], fn(k) = f[2], flow(k) = f[3];
   }
   data.Set("tau_x", fx, sampled);

@@ -66,7 +66,7 @@ py::dict ToDict(const Dataset& data) {
     return a;
   };
   out["t"] = array(data.t());
-  for (const Channel& c : data.channels()) out[py::str(c.name)] = array(c.values);
+  for (const Channel& c : data.channels()) out[py::str(c.name)] = array(c.values());
   return out;
 }
 

@@ -24,10 +24,10 @@ std::vector<double> AddGaussianNoise(Dataset& data, const std::vector<std::strin
   std::vector<double> sds;
   for (const std::string& name : channels) {
     const Channel& c = data.Get(name);
-    const auto n = static_cast<double>(c.sampled.count());
-    const Eigen::ArrayXd v = c.sampled.select(c.values.array(), 0.0);
+    const auto n = static_cast<double>(c.SampleCount());
+    const Eigen::ArrayXd v = c.sampled().select(c.values().array(), 0.0);
     const double mean = n > 0 ? v.sum() / n : 0.0;
-    const double var = n > 0 ? c.sampled.select((v - mean).square(), 0.0).sum() / n : 0.0;
+    const double var = n > 0 ? c.sampled().select((v - mean).square(), 0.0).sum() / n : 0.0;
     const double sd = level * std::sqrt(var);
     sds.push_back(sd);
     if (sd == 0.0) continue;
@@ -36,9 +36,9 @@ std::vector<double> AddGaussianNoise(Dataset& data, const std::vector<std::strin
                       static_cast<uint32_t>(h), static_cast<uint32_t>(h >> 32)};
     std::mt19937_64 rng(seq);
     std::normal_distribution<double> normal(0.0, sd);
-    Eigen::VectorXd noisy = c.values;
+    Eigen::VectorXd noisy = c.values();
     for (Eigen::Index i = 0; i < noisy.size(); ++i) noisy(i) += normal(rng);
-    data.Set(name, std::move(noisy), c.sampled);
+    data.Set(name, std::move(noisy), c.sampled());
   }
   return sds;
 }

@@ -48,7 +48,7 @@ void ApplySampleRates(Dataset& data, const std::map<std::string, double>& rates)
   const double t0 = data.t()(0);
   for (const auto& [name, hz] : rates) {
     const Channel& c = data.Get(name);
-    Eigen::Array<bool, Eigen::Dynamic, 1> sampled = c.sampled;
+    Eigen::Array<bool, Eigen::Dynamic, 1> sampled = c.sampled();
     long next_period = 0;
     for (Eigen::Index i = 0; i < data.rows(); ++i) {
       const double periods = (data.t()(i) - t0) * hz;
@@ -59,7 +59,7 @@ void ApplySampleRates(Dataset& data, const std::map<std::string, double>& rates)
         sampled(i) = false;
       }
     }
-    data.Set(name, c.values, std::move(sampled));
+    data.Set(name, c.values(), std::move(sampled));
   }
 }
 

@@ -23,15 +23,15 @@ InputTrack RecordedInputs(const Dataset& data, const VesselInfo& info) {
   for (int i = 0; i < inputs; ++i) {
     if (channels[i] == nullptr) u[i] = info.actuation.neutral.at(i);
     for (Eigen::Index k = 0; k < data.rows() && channels[i] != nullptr; ++k)
-      if (channels[i]->sampled(k)) {
-        u[i] = channels[i]->values(k);
+      if (channels[i]->IsSampled(k)) {
+        u[i] = channels[i]->Value(k);
         break;
       }
   }
   InputTrack track(inputs);
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
     for (int i = 0; i < inputs; ++i)
-      if (channels[i] != nullptr && channels[i]->sampled(k)) u[i] = channels[i]->values(k);
+      if (channels[i] != nullptr && channels[i]->IsSampled(k)) u[i] = channels[i]->Value(k);
     track.Append(data.t()(k), u);
   }
   return track;

@@ -13,11 +13,11 @@ double HullLengthSeconds(const Dataset& data, const VesselInfo& info) {
   const Channel* u = data.Find("u");
   const Channel* v = data.Find("v");
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
-    if (U != nullptr && U->sampled(k)) {
-      speed.push_back(std::abs(U->values(k)));
-    } else if (u != nullptr && u->sampled(k)) {
-      const double vk = v != nullptr && v->sampled(k) ? v->values(k) : 0.0;
-      speed.push_back(std::hypot(u->values(k), vk));
+    if (U != nullptr && U->IsSampled(k)) {
+      speed.push_back(std::abs(U->Value(k)));
+    } else if (u != nullptr && u->IsSampled(k)) {
+      const double vk = v != nullptr && v->IsSampled(k) ? v->Value(k) : 0.0;
+      speed.push_back(std::hypot(u->Value(k), vk));
     }
   }
   if (speed.empty()) return 0.0;

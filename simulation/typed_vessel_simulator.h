@@ -52,7 +52,7 @@ class TypedVesselSimulator : public VesselSimulator {
     std::array<double, Plant<V>::kStates> x0{};
     for (int i = 0; i < V::kStates; ++i) {
       const Channel* c = data.Find(info_.states[i]);
-      if (c != nullptr && c->sampled(0)) x0[i] = c->values(0);
+      if (c != nullptr && c->IsSampled(0)) x0[i] = c->Value(0);
     }
     Plant<V>::InitialLagState(track.At(data.t()(0)), x0.data());
     std::array<double, V::kInputs> limits = NoLimits();

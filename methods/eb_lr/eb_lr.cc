@@ -69,10 +69,10 @@ void CheckOptions(const EbLrOptions& o) {
 Eigen::VectorXd Column(const Dataset& data, const std::string& name, const std::string& role) {
   const Channel* c = data.Find(name);
   if (c == nullptr) throw InputError("eb-lr: the data have no " + role + " channel '" + name + "'");
-  if (!c->FullySampled() || !c->values.allFinite())
+  if (!c->FullySampled() || !c->values().allFinite())
     throw InputError("eb-lr: channel '" + name +
                      "' is not fully sampled with finite values (resample multi-rate data first)");
-  return c->values;
+  return c->values();
 }
 
 // Least squares a c = b, columns divided by `scale` for conditioning; a term the rows do not

@@ -167,7 +167,7 @@ inline double ResidualSd(const Channel& channel, Eigen::Index rows, const std::s
                          const RefitOptions& o) {
   std::vector<double> samples;
   for (Eigen::Index k = 0; k < rows; ++k)
-    if (channel.sampled(k)) samples.push_back(channel.values(k));
+    if (channel.IsSampled(k)) samples.push_back(channel.Value(k));
   const Eigen::Map<const Eigen::VectorXd> y(samples.data(),
                                             static_cast<Eigen::Index>(samples.size()));
   const double spread = y.size() > 1 ? std::sqrt((y.array() - y.mean()).square().mean()) : 1.0;
@@ -269,13 +269,13 @@ RefitSegment<V>* NewSegment(const Dataset& data, const InputTrack& track, Eigen:
   seg->sampled.resize(b - a + 1, C);
   for (Eigen::Index k = a; k <= b; ++k)
     for (int c = 0; c < C; ++c) {
-      seg->sampled(k - a, c) = states.channels[c]->sampled(k);
+      seg->sampled(k - a, c) = states.channels[c]->IsSampled(k);
       seg->measured(k - a, c) =
-          states.channels[c]->sampled(k) ? states.channels[c]->values(k) : 0.0;
+          states.channels[c]->IsSampled(k) ? states.channels[c]->Value(k) : 0.0;
     }
   for (int i = 0; i < V::kStates; ++i) {
     const Channel* ch = data.Find(std::string(V::kStateNames[i]));
-    seg->first[i] = ch != nullptr && ch->sampled(a) ? ch->values(a) : 0.0;
+    seg->first[i] = ch != nullptr && ch->IsSampled(a) ? ch->Value(a) : 0.0;
   }
   seg->sd = states.sd;
   seg->scale = scale;

@@ -62,8 +62,14 @@ TEST_F(SimulateCliTest, MultiRateSensorsLeaveEmptyCells) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Dataset d = ReadDatasetCsv(out);
   EXPECT_NEAR(d.t()(1) - d.t()(0), 0.02, 1e-12);
-  EXPECT_EQ(d.Get("north").sampled.count(), 301);
+  EXPECT_EQ(d.Get("north").SampleCount(), 301);
   EXPECT_TRUE(d.Get("r").FullySampled());
+  // GPS at 5 Hz in a 50 Hz log fills a tenth of the rows: held sparse, as `usvid info` says.
+  EXPECT_TRUE(d.Get("north").Sparse());
+  EXPECT_FALSE(d.Get("r").Sparse());
+  const auto info = RunUsvid("info --data " + out);
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr("; sparse: north, east"));
 }
 
 // Bad input: exit 2, one line naming the option, and no output file left behind.

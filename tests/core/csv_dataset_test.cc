@@ -96,9 +96,9 @@ TEST_F(CsvDatasetTest, EmptyCellsAreUnsampled) {
   const Channel& gps = d.Get("gps");
   EXPECT_TRUE(d.Get("imu").FullySampled());
   EXPECT_FALSE(gps.FullySampled());
-  EXPECT_EQ(gps.sampled.count(), 2);
-  EXPECT_TRUE(std::isnan(gps.values(1)));
-  EXPECT_DOUBLE_EQ(gps.values(3), 6.0);
+  EXPECT_EQ(gps.SampleCount(), 2);
+  EXPECT_TRUE(std::isnan(gps.Value(1)));
+  EXPECT_DOUBLE_EQ(gps.Value(3), 6.0);
 }
 
 // Quoted names, blanks around numbers, a leading '+', no final line end: all valid.
@@ -120,7 +120,7 @@ TEST_F(CsvDatasetTest, RoundTripIsExact) {
   d.Set("x", x, s);
   const Dataset back = ParseDatasetCsv(FormatDatasetCsv(d), "round.csv");
   EXPECT_EQ(back.t(), d.t());
-  EXPECT_EQ(back.Get("x").sampled.matrix(), s.matrix());
+  EXPECT_EQ(back.Get("x").sampled().matrix(), s.matrix());
   EXPECT_EQ(back["x"](0), x(0));
   EXPECT_EQ(back["x"](2), x(2));
 }
@@ -185,7 +185,7 @@ TEST_F(CsvFileTest, StreamedFileReadsAsItsText) {
   ASSERT_EQ(file.rows(), 3);
   EXPECT_EQ(file.t(), parsed.t());
   EXPECT_EQ(file["u"], parsed["u"]);
-  EXPECT_EQ(file.Get("gps").sampled.matrix(), parsed.Get("gps").sampled.matrix());
+  EXPECT_EQ(file.Get("gps").sampled().matrix(), parsed.Get("gps").sampled().matrix());
   ASSERT_EQ(file.text_columns().size(), 1u);
   EXPECT_EQ(file.text_columns()[0].Error(), parsed.text_columns()[0].Error());
   for (const std::string bad : {"t,u\n0,1\n0,2\n", "t,u\n0,1\n1,2,3\n", "t,u\n0,1\n1,\x01\n"}) {

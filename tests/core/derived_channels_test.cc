@@ -53,8 +53,8 @@ TEST_F(DerivedChannelsTest, WindComponentsAreTheAirsVelocityPastTheShip) {
   // The pressure force's products: V^2 cos(gamma) = -V wind_u.
   EXPECT_DOUBLE_EQ(-speed(0) * d["wind_u"](0), 4.0);
   // A row whose direction was not logged has no components.
-  EXPECT_FALSE(d.Get("wind_u").sampled(2));
-  EXPECT_FALSE(d.Get("wind_v").sampled(2));
+  EXPECT_FALSE(d.Get("wind_u").IsSampled(2));
+  EXPECT_FALSE(d.Get("wind_v").IsSampled(2));
   EXPECT_FALSE(d.Has("U"));  // no body velocities, no speed
 }
 

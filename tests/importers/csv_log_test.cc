@@ -58,7 +58,7 @@ TEST_F(CsvLogTest, DropsRowsWithEveryCellEmpty) {
   const Dataset d =
       Parse("time,x,y\n0,1,2\n1,,3\n2,5,6\n,,\n , ,\n", {"t=time", "x=x", "y=y"}, &report);
   EXPECT_EQ(d.rows(), 3);
-  EXPECT_FALSE(d.Get("x").sampled(1));
+  EXPECT_FALSE(d.Get("x").IsSampled(1));
   EXPECT_THAT(
       report.notes,
       ::testing::Contains(HasSubstr("dropped 2 rows with every cell empty (the first at line 5)")));
@@ -76,7 +76,7 @@ TEST_F(CsvLogTest, UnwrapsAHeadingLoggedWithinOneTurnAndSaysSo) {
   const double deg = std::numbers::pi / 180.0;
   EXPECT_NEAR(d["psi"](1), 190 * deg, 1e-12);
   EXPECT_NEAR(d["psi"](2), 210 * deg, 1e-12);
-  EXPECT_FALSE(d.Get("psi").sampled(3));
+  EXPECT_FALSE(d.Get("psi").IsSampled(3));
   EXPECT_NEAR(d["psi"](4), 170 * deg, 1e-12);  // turned back through the wrap
   EXPECT_NEAR(d["psi"](5), 185 * deg, 1e-12);
   EXPECT_THAT(report.notes, ::testing::Contains(HasSubstr("psi: unwrapped 3 jumps of 2 pi")));

@@ -45,7 +45,7 @@ TEST(FroudeScalingTest, BackAndForthIsIdentity) {
   const Dataset original = Record();
   EXPECT_NEAR(d.t()(1), 1.0, 1e-14);
   for (const Channel& c : original.channels())
-    EXPECT_NEAR(d[c.name](1), c.values(1), 1e-12) << c.name;
+    EXPECT_NEAR(d[c.name](1), c.Value(1), 1e-12) << c.name;
 }
 
 // A bad scale or an unknown channel fails before anything changes.

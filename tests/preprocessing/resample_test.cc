@@ -39,7 +39,7 @@ TEST_F(ResampleTest, MultiRateLogKeepsEachChannelWithinItsNoise) {
       double sum = 0.0;
       long count = 0;
       for (Eigen::Index k = 0; k < out.rows(); ++k) {
-        if (!out.Get(channels[c]).sampled(k)) continue;
+        if (!out.Get(channels[c]).IsSampled(k)) continue;
         const double truth = clean[channels[c]](k * 5);
         sum += std::pow(out[channels[c]](k) - truth, 2);
         ++count;
@@ -64,8 +64,8 @@ TEST_F(ResampleTest, LongGapsAreNotBridged) {
   EXPECT_EQ(report.channels.at(0).gaps, 1);
   for (Eigen::Index k = 0; k < out.rows(); ++k) {
     const double t = out.t()(k);
-    EXPECT_EQ(out.Get("x").sampled(k), !(t > 39.95 && t < 50.0)) << t;
-    if (out.Get("x").sampled(k)) {
+    EXPECT_EQ(out.Get("x").IsSampled(k), !(t > 39.95 && t < 50.0)) << t;
+    if (out.Get("x").IsSampled(k)) {
       EXPECT_NEAR(out["x"](k), t, 1e-9);
     }
   }

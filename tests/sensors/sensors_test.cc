@@ -51,12 +51,12 @@ TEST_F(SensorsTest, SampleRatesLeaveRowsBetweenSamplesEmpty) {
   const Dataset clean = d;
   ApplySampleRates(d, ParseSampleRates({"gps=5", "r=10"}, d));
   const Channel& gps = d.Get("north");
-  EXPECT_EQ(gps.sampled.count(), 51);
+  EXPECT_EQ(gps.SampleCount(), 51);
   for (Eigen::Index k = 0; k < d.rows(); ++k) {
-    EXPECT_EQ(gps.sampled(k), k % 10 == 0) << k;
-    EXPECT_EQ(d.Get("r").sampled(k), k % 5 == 0) << k;
-    if (gps.sampled(k)) {
-      EXPECT_EQ(gps.values(k), clean["north"](k));
+    EXPECT_EQ(gps.IsSampled(k), k % 10 == 0) << k;
+    EXPECT_EQ(d.Get("r").IsSampled(k), k % 5 == 0) << k;
+    if (gps.IsSampled(k)) {
+      EXPECT_EQ(gps.Value(k), clean["north"](k));
     }
   }
   EXPECT_TRUE(d.Get("u").FullySampled());
