@@ -68,7 +68,8 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
     for (const SuiteData& d : suite.test_data)
       if (d.name == test) held = LoadSuiteData(d);
   } else {
-    held = SimulateForSuite(vessel, test, suite.test_seconds, first.noise, first.test_seed);
+    held = SimulateForSuite(vessel, test, suite.test_seconds, first.noise, first.test_seed,
+                            suite.conditions);
   }
   std::map<std::string, Evaluation> runs;
   for (const auto& [method, r] : chosen) runs[method] = EvaluateModel(r->model, held, EvaluationScope::kFreeRunOnly);

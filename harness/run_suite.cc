@@ -8,6 +8,8 @@
 #include <set>
 
 #include "core/error.h"
+#include "effects/effect.h"
+#include "effects/effect_values.h"
 #include "harness/suite_methods.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/channel_fit.h"
@@ -19,6 +21,7 @@
 #include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
 #include "sensors/noise.h"
+#include "sensors/sample_rates.h"
 #include "simulation/vessel_simulator.h"
 #include "simulators/vessel.h"
 
@@ -52,15 +55,22 @@ IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vess
 }
 
 Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
-                         double noise, uint64_t seed) {
+                         double noise, uint64_t seed, const SuiteConditions& conditions) {
   const VesselSimulator& sim = FindVessel(vessel);
+  const VesselInfo& info = sim.Info();
   // A step grid runs until its grid is done.
   const double duration = maneuver.starts_with("stepgrid") ? 0.0 : seconds;
-  auto m = MakeManeuver(maneuver, sim.Info().actuation, duration, seed);
-  Dataset d = sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
-  std::vector<std::string> measured = sim.Info().states;
-  measured.insert(measured.end(), sim.Info().derived.begin(), sim.Info().derived.end());
+  auto m = MakeManeuver(maneuver, info.actuation, duration, seed);
+  RunOptions run;
+  for (const auto& [_, hz] : ParseRateItems(conditions.sensors))
+    run.rate_hz = std::max(run.rate_hz, hz);
+  const EffectValues<double> effects =
+      ValuesOf(ParseEffects(conditions.effects, seed), info.inputs, info.states);
+  Dataset d = sim.RunManeuver(*m, info.default_params, effects, run).data;
+  std::vector<std::string> measured = info.states;
+  measured.insert(measured.end(), info.derived.begin(), info.derived.end());
   AddGaussianNoise(d, measured, noise, seed);
+  if (!conditions.sensors.empty()) ApplySampleRates(d, ParseSampleRates(conditions.sensors, d));
   return d;
 }
 
@@ -181,10 +191,10 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
   std::string failure;
   const auto start = std::chrono::steady_clock::now();
   try {
-    const Dataset train = suite.Measured()
-                              ? train_sets.at(job.train_maneuver)
-                              : SimulateForSuite(job.vessel, job.train_maneuver,
-                                                 suite.train_seconds, job.noise, job.seed);
+    const Dataset train =
+        suite.Measured() ? train_sets.at(job.train_maneuver)
+                         : SimulateForSuite(job.vessel, job.train_maneuver, suite.train_seconds,
+                                            job.noise, job.seed, suite.conditions);
     model = Identify(FindSuiteMethod(job.method.method), train, RequestFor(job));
   } catch (const std::exception& e) {
     failure = std::string("failed: ") + e.what();
@@ -203,9 +213,10 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       continue;
     }
     try {
-      const Dataset held = suite.Measured() ? test_sets.at(test)
-                                            : SimulateForSuite(job.vessel, test, suite.test_seconds,
-                                                               job.noise, row.test_seed);
+      const Dataset held = suite.Measured()
+                               ? test_sets.at(test)
+                               : SimulateForSuite(job.vessel, test, suite.test_seconds, job.noise,
+                                                  row.test_seed, suite.conditions);
       const Scores e = EvaluateModel(model, held, EvaluationScope::kRowScores).scores;
       for (const auto& [channel, score] : e.channels)
         row.channel_fit_percent[channel] = score.fit_percent;

@@ -23,9 +23,10 @@ namespace usvid {
 IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vessel, uint64_t seed);
 
 // The data a suite trains or tests on: `maneuver` on `vessel` (step grids run to the end of
-// their grid), noise on every measured channel, all from `seed`.
+// their grid) under the suite's hidden effects, noise on every measured channel, then the
+// sensors' rates, all from `seed`.
 Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
-                         double noise, uint64_t seed);
+                         double noise, uint64_t seed, const SuiteConditions& conditions = {});
 
 // Every cell (fit job) of the suite, in one process; rows in job order.
 std::vector<ResultRow> RunSuite(const Suite& suite, int threads,

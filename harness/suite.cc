@@ -9,11 +9,14 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "effects/effect.h"
+#include "effects/effect_values.h"
 #include "harness/embedded_suites.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/registry.h"
 #include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
+#include "sensors/sample_rates.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -195,11 +198,50 @@ std::string FitJob::Id() const {
   return s.str();
 }
 
+namespace {
+
+// "effects" and "sensors" (SuiteConditions), checked on every vessel of the suite before any
+// fit: an effect the vessel cannot take (wind without a wind model, an input or state it lacks)
+// or a sensor naming no group or channel of its records is an error naming the field.
+void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s) {
+  if (!v.contains("effects") && !v.contains("sensors")) return;
+  if (s.Measured())
+    throw InputError(file + ": 'effects' and 'sensors' make simulated records; measured data " +
+                     "have their own");
+  if (v.contains("effects"))
+    s.conditions.effects = ListOf<std::string>(v["effects"], file + ": effects");
+  if (v.contains("sensors"))
+    s.conditions.sensors = ListOf<std::string>(v["sensors"], file + ": sensors");
+  for (const std::string& vessel : s.vessels) {
+    const VesselInfo& info = FindVessel(vessel).Info();
+    try {
+      const std::vector<Effect> effects = ParseEffects(s.conditions.effects, 1);
+      for (const Effect& e : effects)
+        if (e.kind == EffectKind::kWind && !info.wind_body)
+          throw InputError("vessel " + info.name + " has no wind model");
+      ValuesOf(effects, info.inputs, info.states);
+    } catch (const InputError& e) {
+      throw InputError(file + ": effects: " + e.what());
+    }
+    // The channels a simulated record of the vessel holds, one row: what a sensor may name.
+    Dataset record(Eigen::VectorXd::Zero(1));
+    for (const std::vector<std::string>* names : {&info.states, &info.derived, &info.inputs})
+      for (const std::string& name : *names) record.Set(name, Eigen::VectorXd::Zero(1));
+    try {
+      ParseSampleRates(s.conditions.sensors, record);
+    } catch (const InputError& e) {
+      throw InputError(file + ": sensors: " + info.name + ": " + e.what());
+    }
+  }
+}
+
+}  // namespace
+
 Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
   if (!v.is_object()) throw InputError(file + ": a suite is a JSON object");
   static const std::set<std::string> kFields = {
-      "name",  "vessels", "train_maneuvers", "test_maneuvers", "methods",
-      "noise", "seeds",   "train_seconds",   "test_seconds",   "data"};
+      "name",  "vessels",       "train_maneuvers", "test_maneuvers", "methods", "noise",
+      "seeds", "train_seconds", "test_seconds",    "data",           "effects", "sensors"};
   for (const auto& [key, _] : v.items())
     if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
   const bool measured = v.contains("data");
@@ -252,6 +294,7 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     if (!(n >= 0 && n < 1)) throw InputError(file + ": noise: levels must be in [0, 1)");
   s.seeds = v.contains("seeds") ? ListOf<uint64_t>(v["seeds"], file + ": seeds")
                                 : std::vector<uint64_t>{1};
+  ParseConditions(v, file, s);
   for (const char* key : {"train_seconds", "test_seconds"}) {
     if (!v.contains(key)) continue;
     if (!v[key].is_number() || !(v[key].get<double>() > 0))
@@ -282,15 +325,19 @@ nlohmann::json SuiteToJson(const Suite& s) {
         {"name", s.name},     {"vessels", s.vessels}, {"data", {{"train", train}, {"test", test}}},
         {"methods", methods}, {"noise", s.noise},     {"seeds", s.seeds}};
   }
-  return {{"name", s.name},
-          {"vessels", s.vessels},
-          {"train_maneuvers", s.train_maneuvers},
-          {"test_maneuvers", s.test_maneuvers},
-          {"methods", methods},
-          {"noise", s.noise},
-          {"seeds", s.seeds},
-          {"train_seconds", s.train_seconds},
-          {"test_seconds", s.test_seconds}};
+  nlohmann::json out = {{"name", s.name},
+                        {"vessels", s.vessels},
+                        {"train_maneuvers", s.train_maneuvers},
+                        {"test_maneuvers", s.test_maneuvers},
+                        {"methods", methods},
+                        {"noise", s.noise},
+                        {"seeds", s.seeds},
+                        {"train_seconds", s.train_seconds},
+                        {"test_seconds", s.test_seconds}};
+  // Only when given, so that a suite without them echoes (and resumes) as before.
+  if (!s.conditions.effects.empty()) out["effects"] = s.conditions.effects;
+  if (!s.conditions.sensors.empty()) out["sensors"] = s.conditions.sensors;
+  return out;
 }
 
 std::vector<FitJob> FitJobs(const Suite& s) {

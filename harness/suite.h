@@ -3,7 +3,9 @@
 // on: another maneuver, or the same maneuver with another seed. JSON form:
 //   {"name": "...", "vessels": ["odin3dof"], "train_maneuvers": ["random-steps"],
 //    "test_maneuvers": ["multisine"], "methods": [NAME, or {"method": NAME, options...}],
-//    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180}
+//    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180,
+//    "effects": ["current=0.3"], "sensors": ["imu=50", "gps=5"]}
+// ("effects" and "sensors" optional: SuiteConditions)
 // (a method's options are those it declares, docs/options.md, with the keys every method
 // shares: states, inputs, rate, forces and derivative; harness/suites/default.json is an
 // example).
@@ -42,6 +44,18 @@ struct SuiteMethod {
   nlohmann::json OwnOptions() const;
 };
 
+// What every simulated record of a suite holds besides its maneuver and noise, the same for its
+// training and test records (docs/compare.md#conditions): effects hidden in the plant (effect
+// specs as `usvid simulate --effect` takes them, docs/data.md#effects; a current's direction,
+// when not given, drawn from each record's seed), which the methods are not told of, and sensors
+// sampled slower than the output rate (`usvid simulate --rates` items: "imu=50", "gps=5"; the
+// output rate is raised to the fastest).
+struct SuiteConditions {
+  std::vector<std::string> effects;
+  std::vector<std::string> sensors;
+  bool empty() const { return effects.empty() && sensors.empty(); }
+};
+
 struct Suite {
   std::string name = "suite";
   std::vector<std::string> vessels;
@@ -51,6 +65,7 @@ struct Suite {
   std::vector<uint64_t> seeds;
   double train_seconds = 300.0;
   double test_seconds = 180.0;
+  SuiteConditions conditions;  // simulated suites only
   // Measured data (train_maneuvers and test_maneuvers then hold their names).
   std::vector<SuiteData> train_data, test_data;
   bool Measured() const { return !train_data.empty(); }

@@ -19,25 +19,35 @@ const std::map<std::string, std::vector<std::string>>& Groups() {
 
 }  // namespace
 
-std::map<std::string, double> ParseSampleRates(const std::vector<std::string>& items,
-                                               const Dataset& data) {
-  std::map<std::string, double> rates;
+std::vector<std::pair<std::string, double>> ParseRateItems(const std::vector<std::string>& items) {
+  std::vector<std::pair<std::string, double>> out;
   for (const std::string& item : items) {
     const std::string where = "--rates '" + item + "': ";
     const auto eq = item.find('=');
     if (eq == std::string::npos) throw InputError(where + "expected NAME=HZ");
-    const std::string name = item.substr(0, eq);
     const ParsedNumber hz = ParseNumber(item.substr(eq + 1));
     if (hz.status != NumberStatus::kOk || !(hz.value > 0))
       throw InputError(where + "the rate must be a positive number of Hz");
+    out.emplace_back(item.substr(0, eq), hz.value);
+  }
+  return out;
+}
+
+std::map<std::string, double> ParseSampleRates(const std::vector<std::string>& items,
+                                               const Dataset& data) {
+  std::map<std::string, double> rates;
+  const std::vector<std::pair<std::string, double>> parsed = ParseRateItems(items);
+  for (size_t i = 0; i < parsed.size(); ++i) {
+    const auto& [name, hz] = parsed[i];
     const auto group = Groups().find(name);
     if (group != Groups().end()) {
       for (const std::string& c : group->second)
-        if (data.Has(c)) rates[c] = hz.value;
+        if (data.Has(c)) rates[c] = hz;
     } else if (data.Has(name)) {
-      rates[name] = hz.value;
+      rates[name] = hz;
     } else {
-      throw InputError(where + "no group or channel '" + name + "' (groups: imu, gps, jet)");
+      throw InputError("--rates '" + items[i] + "': no group or channel '" + name +
+                       "' (groups: imu, gps, jet)");
     }
   }
   return rates;

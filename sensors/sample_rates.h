@@ -8,11 +8,16 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/dataset.h"
 
 namespace usvid {
+
+// Each item's name and rate [Hz], in order; throws InputError on an item that is not NAME=HZ
+// with HZ > 0.
+std::vector<std::pair<std::string, double>> ParseRateItems(const std::vector<std::string>& items);
 
 // Channel -> rate [Hz]; throws InputError on a bad item or a channel the data lack.
 std::map<std::string, double> ParseSampleRates(const std::vector<std::string>& items,

@@ -102,11 +102,7 @@ void RunSimulate(const SimulateOptions& o) {
   nlohmann::json truth;
   if (!o.maneuver.empty()) {
     // Multi-rate sensors need an output grid at least as fast as the fastest sensor.
-    for (const std::string& item : o.rates) {
-      const auto eq = item.find('=');
-      if (eq != std::string::npos)
-        run.rate_hz = std::max(run.rate_hz, std::atof(item.c_str() + eq + 1));
-    }
+    for (const auto& [_, hz] : ParseRateItems(o.rates)) run.rate_hz = std::max(run.rate_hz, hz);
     Actuation act = info.actuation;
     if (o.cruise) {
       if (act.thrust_input < 0)

@@ -1,0 +1,88 @@
+// A suite's conditions (harness/suite.h, SuiteConditions): effects hidden in every simulated
+// record and sensors sampled slower than the output rate, the same for training and test
+// records, checked on every vessel before any fit, echoed so that a resumed run sees them.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "harness/run_suite.h"
+#include "harness/suite.h"
+
+namespace usvid {
+namespace {
+
+using ::testing::HasSubstr;
+
+nlohmann::json Base() {
+  return {{"name", "conditions"},
+          {"vessels", {"odin3dof"}},
+          {"train_maneuvers", {"random-steps"}},
+          {"test_maneuvers", {"zigzag:20/20"}},
+          {"methods", {"nominal"}},
+          {"train_seconds", 60},
+          {"test_seconds", 60}};
+}
+
+TEST(SuiteConditionsTest, AreReadCheckedOnEveryVesselAndEchoed) {
+  nlohmann::json j = Base();
+  j["effects"] = {"current=0.3:45"};
+  j["sensors"] = {"imu=50", "gps=5"};
+  const Suite s = ParseSuite(j, "s.json");
+  EXPECT_EQ(s.conditions.effects, std::vector<std::string>{"current=0.3:45"});
+  EXPECT_EQ(s.conditions.sensors, (std::vector<std::string>{"imu=50", "gps=5"}));
+  const nlohmann::json echo = SuiteToJson(s);
+  EXPECT_EQ(echo["effects"], j["effects"]);
+  EXPECT_EQ(echo["sensors"], j["sensors"]);
+  // Without them the echo is what it was before they existed (resumed runs match).
+  EXPECT_FALSE(SuiteToJson(ParseSuite(Base(), "s.json")).contains("effects"));
+
+  const std::vector<std::pair<nlohmann::json, std::string>> bad = {
+      {{{"effects", {"gust=3"}}}, "s.json: effects: "},
+      {{{"effects", {"wind=1"}}}, "odin3dof has no wind model"},
+      {{{"effects", "current=0.3"}}, "s.json: effects"},
+      {{{"sensors", {"gps=0"}}}, "positive number of Hz"},
+      {{{"sensors", {"sonar=5"}}}, "s.json: sensors: odin3dof: --rates 'sonar=5': no group"},
+  };
+  for (const auto& [extra, message] : bad) {
+    nlohmann::json b = Base();
+    b.update(extra);
+    try {
+      ParseSuite(b, "s.json");
+      ADD_FAILURE() << "accepted " << extra.dump();
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr(message)) << extra.dump();
+    }
+  }
+}
+
+// A hidden current moves the vessel over ground but not through the water; the GPS at 5 Hz in
+// a record at the IMU's 50 Hz fills every tenth row.
+TEST(SuiteConditionsTest, SimulatedRecordsCarryTheHiddenEffectsAndTheSensorRates) {
+  const Dataset calm = SimulateForSuite("odin3dof", "random-steps", 60, 0.0, 3);
+  SuiteConditions current;
+  current.effects = {"current=0.5:90"};
+  const Dataset drifted = SimulateForSuite("odin3dof", "random-steps", 60, 0.0, 3, current);
+  ASSERT_EQ(calm.rows(), drifted.rows());
+  const Eigen::Index last = calm.rows() - 1;
+  // 0.5 m/s to the east for 60 s: about 30 m further east at the end.
+  EXPECT_NEAR(drifted["east"](last) - calm["east"](last), 30.0, 3.0);
+  EXPECT_NEAR(drifted["north"](last), calm["north"](last), 3.0);
+
+  SuiteConditions sensors;
+  sensors.sensors = {"imu=50", "gps=5"};
+  const Dataset logged = SimulateForSuite("odin3dof", "random-steps", 60, 0.005, 3, sensors);
+  EXPECT_NEAR(logged.t()(1) - logged.t()(0), 0.02, 1e-12) << "the output rate is the IMU's";
+  EXPECT_TRUE(logged.Get("r").FullySampled());
+  EXPECT_EQ(logged.Get("north").SampleCount(), 301);
+  EXPECT_TRUE(logged.Get("north").Sparse());
+  // The same seed gives the same record.
+  const Dataset again = SimulateForSuite("odin3dof", "random-steps", 60, 0.005, 3, sensors);
+  EXPECT_EQ(logged.Get("north").values().cwiseEqual(again.Get("north").values()).count() +
+                (logged.rows() - logged.Get("north").SampleCount()),
+            logged.rows());
+}
+
+}  // namespace
+}  // namespace usvid
