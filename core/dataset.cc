@@ -53,15 +53,6 @@ Channel Channel::FromSamples(std::string name, Eigen::Index rows,
                   (sample_rows.empty() || (sample_rows.front() >= 0 && sample_rows.back() < rows)),
               "sampled rows ascending, within the rows");
   const auto count = static_cast<Eigen::Index>(sample_rows.size());
-  if (count * kSparseShareDenominator > rows || rows > std::numeric_limits<std::int32_t>::max()) {
-    Eigen::VectorXd values = Eigen::VectorXd::Constant(rows, kNaN);
-    Mask sampled = Mask::Constant(rows, false);
-    for (Eigen::Index i = 0; i < count; ++i) {
-      values(sample_rows[static_cast<std::size_t>(i)]) = samples(i);
-      sampled(sample_rows[static_cast<std::size_t>(i)]) = true;
-    }
-    return Channel(std::move(name), std::move(values), std::move(sampled));
-  }
   Channel c;
   c.name = std::move(name);
   c.size_ = rows;
@@ -71,6 +62,9 @@ Channel Channel::FromSamples(std::string name, Eigen::Index rows,
   form->rows = std::move(sample_rows);
   form->samples = std::move(samples);
   c.sparse_ = std::move(form);
+  // Too many samples to hold sparse: the dense form, built as for any sparse channel.
+  if (count * kSparseShareDenominator > rows || rows > std::numeric_limits<std::int32_t>::max())
+    return Channel(c.name, c.values(), c.sampled());
   return c;
 }
 

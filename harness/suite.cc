@@ -212,10 +212,15 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
     s.conditions.effects = ListOf<std::string>(v["effects"], file + ": effects");
   if (v.contains("sensors"))
     s.conditions.sensors = ListOf<std::string>(v["sensors"], file + ": sensors");
+  std::vector<Effect> effects;
+  try {
+    effects = ParseEffects(s.conditions.effects, 1);
+  } catch (const InputError& e) {
+    throw InputError(file + ": effects: " + e.what());
+  }
   for (const std::string& vessel : s.vessels) {
     const VesselInfo& info = FindVessel(vessel).Info();
     try {
-      const std::vector<Effect> effects = ParseEffects(s.conditions.effects, 1);
       for (const Effect& e : effects)
         if (e.kind == EffectKind::kWind && !info.wind_body)
           throw InputError("vessel " + info.name + " has no wind model");
