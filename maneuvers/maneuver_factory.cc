@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
+#include "maneuvers/autopilot.h"
 #include "maneuvers/input_schedule.h"
 #include "maneuvers/step_grid.h"
 #include "maneuvers/turning.h"
@@ -10,7 +11,8 @@
 namespace usvid {
 namespace {
 
-constexpr const char* kKnown = "zigzag:A/B, turning:A, stepgrid:T/Y, random-steps, prbs, multisine";
+constexpr const char* kKnown =
+    "zigzag:A/B, turning:A, stepgrid:T/Y, random-steps, prbs, multisine, autopilot:HOLD";
 
 // Splits "a/b" into numbers; `count` of them are expected.
 std::vector<double> Numbers(const std::string& args, size_t count, const std::string& spec) {
@@ -76,6 +78,10 @@ std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation&
   if (name == "multisine") {
     const double f_max = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 0.2;
     return MakeMultisine(act, f_max, duration(600), seed);
+  }
+  if (name == "autopilot") {
+    const double hold = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 20.0;
+    return std::make_unique<Autopilot>(act, hold, duration(600), seed);
   }
   throw InputError("--maneuver '" + spec + "': unknown maneuver (known: " + kKnown + ")");
 }

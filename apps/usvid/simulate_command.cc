@@ -178,7 +178,7 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--vessel", o->vessel, "Simulator: " + VesselChoices())->required();
   cmd->add_option("--maneuver", o->maneuver,
                   "zigzag[:A/B], turning[:A], stepgrid[:T/Y], random-steps[:HOLD_S], "
-                  "prbs[:CLOCK_S], multisine[:FMAX_HZ]");
+                  "prbs[:CLOCK_S], multisine[:FMAX_HZ], autopilot[:HOLD_S]");
   cmd->add_option("--inputs", o->inputs,
                   "Drive open-loop with the input columns of this CSV (zero-order hold); output "
                   "at its time stamps, initial state from its first row");

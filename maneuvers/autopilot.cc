@@ -1,0 +1,106 @@
+#include "maneuvers/autopilot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "core/error.h"
+#include "maneuvers/excitation.h"
+
+namespace usvid {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// An angle wrapped to [-pi, pi).
+double Wrap(double a) {
+  constexpr double kTurn = 2 * std::numbers::pi;
+  return a - kTurn * std::floor((a + std::numbers::pi) / kTurn);
+}
+
+}  // namespace
+
+Autopilot::Autopilot(const Actuation& act, double hold_s, double duration_s, uint64_t seed)
+    : act_(act), hold_s_(hold_s), duration_s_(duration_s) {
+  if (act.heading_state < 0 || act.rate_state < 0)
+    throw InputError("--maneuver autopilot: the vessel has no heading and yaw rate");
+  if (!(hold_s > 0 && std::isfinite(hold_s)))
+    throw InputError("--maneuver autopilot:HOLD: HOLD must be positive seconds");
+  std::seed_seq seq{static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32), 0xA070u};
+  std::mt19937_64 rng(seq);
+  std::uniform_real_distribution<double> span(0.5 * hold_s, 1.5 * hold_s);
+  std::uniform_real_distribution<double> course(-kCourseSpanDeg * kDeg, kCourseSpanDeg * kDeg);
+  course_times_ = {0.0};
+  course_offsets_ = {0.0};
+  for (double t = span(rng); t < duration_s; t += span(rng)) {
+    course_times_.push_back(t);
+    course_offsets_.push_back(course(rng));
+  }
+  if (act.thrust_input >= 0) {
+    const auto [lo, hi] = ExcitationRange(act, act.thrust_input);
+    std::uniform_real_distribution<double> level(lo, hi), thrust_span(2 * hold_s, 6 * hold_s);
+    for (double t = 0; t < duration_s || t == 0; t += thrust_span(rng)) {
+      thrust_times_.push_back(t);
+      thrust_levels_.push_back(level(rng));
+    }
+  }
+}
+
+double Autopilot::At(const std::vector<double>& times, const std::vector<double>& values,
+                     double t) {
+  const auto it = std::upper_bound(times.begin(), times.end(), t);
+  return values[std::max<ptrdiff_t>(0, (it - times.begin()) - 1)];
+}
+
+std::string Autopilot::Spec() const {
+  const double rounded = std::round(hold_s_);
+  return "autopilot:" +
+         (rounded == hold_s_ ? std::to_string(static_cast<int>(rounded)) : std::to_string(hold_s_));
+}
+
+std::vector<double> Autopilot::InitialCommand() const {
+  std::vector<double> u = CruiseCommand(act_);
+  if (act_.thrust_input >= 0) u[act_.thrust_input] = thrust_levels_.front();
+  return u;
+}
+
+void Autopilot::Command(double t, std::span<const double> state, std::span<double> u) {
+  const std::vector<double> cruise = CruiseCommand(act_);
+  std::copy(cruise.begin(), cruise.end(), u.begin());
+  if (act_.thrust_input >= 0) u[act_.thrust_input] = At(thrust_times_, thrust_levels_, t);
+  const double psi = state[act_.heading_state];
+  if (!started_) {
+    psi0_ = psi;
+    last_t_ = t;
+    started_ = true;
+  }
+  const double error_deg = Wrap(psi0_ + At(course_times_, course_offsets_, t) - psi) / kDeg;
+  const double rate_deg = state[act_.rate_state] / kDeg;
+  const double kp = act_.yaw_full_deg / kFullErrorDeg;
+  const double ki = kp / kIntegralTimeS, kd = kp * kDerivativeTimeS;
+  const double unclipped = kp * error_deg - kd * rate_deg + ki * integral_;
+  const double full = act_.yaw_full_deg;
+  const bool clipped = std::abs(unclipped) > full;
+  // Conditional integration: the integral holds while the command is clipped (no wind-up).
+  if (!clipped) integral_ += error_deg * (t - last_t_);
+  last_t_ = t;
+  error_sq_sum_ += error_deg * error_deg;
+  ++periods_;
+  clipped_ += clipped ? 1 : 0;
+  u[act_.yaw_input] = yaw_.Toward(act_, t, act_.YawCommand(std::clamp(unclipped, -full, full)));
+}
+
+nlohmann::json Autopilot::Report() const {
+  const double n = std::max<double>(1.0, static_cast<double>(periods_));
+  std::vector<double> courses_deg;
+  for (double c : course_offsets_) courses_deg.push_back(c / kDeg);
+  return {{"hold_s", hold_s_},
+          {"course_times_s", course_times_},
+          {"courses_deg", courses_deg},
+          {"course_changes", course_times_.size() - 1},
+          {"rms_heading_error_deg", std::sqrt(error_sq_sum_ / n)},
+          {"clipped_share", static_cast<double>(clipped_) / n}};
+}
+
+}  // namespace usvid
