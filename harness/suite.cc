@@ -16,7 +16,9 @@
 #include "methods/registry.h"
 #include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
+#include "sensors/dropouts.h"
 #include "sensors/sample_rates.h"
+#include "sensors/wave_motion.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -200,23 +202,40 @@ std::string FitJob::Id() const {
 
 namespace {
 
-// "effects" and "sensors" (SuiteConditions), checked on every vessel of the suite before any
-// fit: an effect the vessel cannot take (wind without a wind model, an input or state it lacks)
-// or a sensor naming no group or channel of its records is an error naming the field.
+// "effects", "sensors", "waves" and "dropouts" (SuiteConditions), checked on every vessel of
+// the suite before any fit: an effect the vessel cannot take (wind without a wind model, an
+// input or state it lacks), waves on a vessel without positions and body velocities, or a
+// sensor naming no group or channel of its records is an error naming the field.
 void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s) {
-  if (!v.contains("effects") && !v.contains("sensors")) return;
+  if (!v.contains("effects") && !v.contains("sensors") && !v.contains("waves") &&
+      !v.contains("dropouts"))
+    return;
   if (s.Measured())
-    throw InputError(file + ": 'effects' and 'sensors' make simulated records; measured data " +
-                     "have their own");
+    throw InputError(file + ": 'effects', 'sensors', 'waves' and 'dropouts' make simulated " +
+                     "records; measured data have their own");
   if (v.contains("effects"))
     s.conditions.effects = ListOf<std::string>(v["effects"], file + ": effects");
   if (v.contains("sensors"))
     s.conditions.sensors = ListOf<std::string>(v["sensors"], file + ": sensors");
+  if (v.contains("dropouts"))
+    s.conditions.dropouts = ListOf<std::string>(v["dropouts"], file + ": dropouts");
+  if (v.contains("waves")) {
+    if (!v["waves"].is_string())
+      throw InputError(file + ": 'waves' must be a string, HS[:TP[:FROM_DEG]]");
+    s.conditions.waves = v["waves"].get<std::string>();
+  }
   std::vector<Effect> effects;
+  std::vector<Dropout> dropouts;
   try {
     effects = ParseEffects(s.conditions.effects, 1);
   } catch (const InputError& e) {
     throw InputError(file + ": effects: " + e.what());
+  }
+  try {
+    dropouts = ParseDropouts(s.conditions.dropouts);
+    if (!s.conditions.waves.empty()) ParseWaveSea(s.conditions.waves, 1, "waves");
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.what());
   }
   for (const std::string& vessel : s.vessels) {
     const VesselInfo& info = FindVessel(vessel).Info();
@@ -234,6 +253,9 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
       for (const std::string& name : *names) record.Set(name, Eigen::VectorXd::Zero(1));
     try {
       ParseSampleRates(s.conditions.sensors, record);
+      ApplyDropouts(record, dropouts, 1);
+      if (!s.conditions.waves.empty())
+        AddWaveMotion(record, ParseWaveSea(s.conditions.waves, 1, "waves"), 0.0, 1);
     } catch (const InputError& e) {
       throw InputError(file + ": sensors: " + info.name + ": " + e.what());
     }
@@ -245,8 +267,9 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
 Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
   if (!v.is_object()) throw InputError(file + ": a suite is a JSON object");
   static const std::set<std::string> kFields = {
-      "name",  "vessels",       "train_maneuvers", "test_maneuvers", "methods", "noise",
-      "seeds", "train_seconds", "test_seconds",    "data",           "effects", "sensors"};
+      "name",    "vessels", "train_maneuvers", "test_maneuvers", "methods",
+      "noise",   "seeds",   "train_seconds",   "test_seconds",   "data",
+      "effects", "sensors", "waves",           "dropouts"};
   for (const auto& [key, _] : v.items())
     if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
   const bool measured = v.contains("data");
@@ -342,6 +365,8 @@ nlohmann::json SuiteToJson(const Suite& s) {
   // Only when given, so that a suite without them echoes (and resumes) as before.
   if (!s.conditions.effects.empty()) out["effects"] = s.conditions.effects;
   if (!s.conditions.sensors.empty()) out["sensors"] = s.conditions.sensors;
+  if (!s.conditions.waves.empty()) out["waves"] = s.conditions.waves;
+  if (!s.conditions.dropouts.empty()) out["dropouts"] = s.conditions.dropouts;
   return out;
 }
 

@@ -5,7 +5,7 @@
 //    "test_maneuvers": ["multisine"], "methods": [NAME, or {"method": NAME, options...}],
 //    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180,
 //    "effects": ["current=0.3"], "sensors": ["imu=50", "gps=5"]}
-// ("effects" and "sensors" optional: SuiteConditions)
+// ("effects", "sensors", "waves" and "dropouts" optional: SuiteConditions)
 // (a method's options are those it declares, docs/options.md, with the keys every method
 // shares: states, inputs, rate, forces and derivative; harness/suites/default.json is an
 // example).
@@ -51,9 +51,13 @@ struct SuiteMethod {
 // sampled slower than the output rate (`usvid simulate --rates` items: "imu=50", "gps=5"; the
 // output rate is raised to the fastest).
 struct SuiteConditions {
-  std::vector<std::string> effects;
-  std::vector<std::string> sensors;
-  bool empty() const { return effects.empty() && sensors.empty(); }
+  std::vector<std::string> effects;   // `simulate --effect` items
+  std::vector<std::string> sensors;   // `simulate --rates` items
+  std::string waves;                  // `simulate --waves` (sensors/wave_motion.h); "": calm
+  std::vector<std::string> dropouts;  // `simulate --dropouts` items (sensors/dropouts.h)
+  bool empty() const {
+    return effects.empty() && sensors.empty() && waves.empty() && dropouts.empty();
+  }
 };
 
 struct Suite {

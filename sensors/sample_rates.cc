@@ -39,18 +39,25 @@ std::map<std::string, double> ParseSampleRates(const std::vector<std::string>& i
   const std::vector<std::pair<std::string, double>> parsed = ParseRateItems(items);
   for (size_t i = 0; i < parsed.size(); ++i) {
     const auto& [name, hz] = parsed[i];
-    const auto group = Groups().find(name);
-    if (group != Groups().end()) {
-      for (const std::string& c : group->second)
-        if (data.Has(c)) rates[c] = hz;
-    } else if (data.Has(name)) {
-      rates[name] = hz;
-    } else {
+    const std::vector<std::string> channels = SensorChannels(name, data);
+    if (channels.empty())
       throw InputError("--rates '" + items[i] + "': no group or channel '" + name +
                        "' (groups: imu, gps, jet)");
-    }
+    for (const std::string& c : channels) rates[c] = hz;
   }
   return rates;
+}
+
+std::vector<std::string> SensorChannels(const std::string& name, const Dataset& data) {
+  std::vector<std::string> out;
+  const auto group = Groups().find(name);
+  if (group == Groups().end()) {
+    if (data.Has(name)) out.push_back(name);
+    return out;
+  }
+  for (const std::string& c : group->second)
+    if (data.Has(c)) out.push_back(c);
+  return out;
 }
 
 void ApplySampleRates(Dataset& data, const std::map<std::string, double>& rates) {

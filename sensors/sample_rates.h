@@ -23,6 +23,9 @@ std::vector<std::pair<std::string, double>> ParseRateItems(const std::vector<std
 std::map<std::string, double> ParseSampleRates(const std::vector<std::string>& items,
                                                const Dataset& data);
 
+// The channels of `data` that a group or channel name stands for; empty when it names neither.
+std::vector<std::string> SensorChannels(const std::string& name, const Dataset& data);
+
 void ApplySampleRates(Dataset& data, const std::map<std::string, double>& rates);
 
 }  // namespace usvid

@@ -1,5 +1,6 @@
 // usvid simulate --vessel V --maneuver M [--effect NAME=VALUE[@INPUT] ...] [--noise S] [--seed N]
-//                [--rates imu=50,gps=5,jet=10] [--wind SPEED[:FROM_DEG]] --out F.csv
+//                [--rates imu=50,gps=5,jet=10] [--wind SPEED[:FROM_DEG]]
+//                [--waves HS[:TP[:FROM_DEG]]] [--dropouts gps=0.05,...] --out F.csv
 //                                                                   (writes F.truth.json too)
 // usvid simulate --vessel V --inputs IN.csv [--dt H] --out F.csv
 
@@ -19,8 +20,10 @@
 #include "effects/effect_values.h"
 #include "maneuvers/maneuver_factory.h"
 #include "maneuvers/true_wind.h"
+#include "sensors/dropouts.h"
 #include "sensors/noise.h"
 #include "sensors/sample_rates.h"
+#include "sensors/wave_motion.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -41,6 +44,8 @@ struct SimulateOptions {
   double rate_hz = 20.0;
   std::string integrator = "rk4";
   std::string wind;
+  std::string waves;
+  std::vector<std::string> dropouts;
   std::string out;
 };
 
@@ -132,12 +137,22 @@ void RunSimulate(const SimulateOptions& o) {
     throw InputError("simulate: the " + info.name + " simulation diverged at t = " +
                      std::to_string(result.diverged_at_s) + " s (check --params and inputs)");
 
+  // What the sensors log: the waves' motion on top, noise, each sensor's rate, its gaps.
   Dataset& data = result.data;
+  if (!o.waves.empty()) {
+    const WaveSea sea = ParseWaveSea(o.waves, o.seed, "--waves '" + o.waves + "'");
+    const double hull = WaveHullLength(info.length_m);
+    AddWaveMotion(data, sea, hull, o.seed);
+    truth["waves"] = WaveSeaToJson(sea, hull);
+  }
   std::vector<std::string> measured = info.states;
   measured.insert(measured.end(), info.derived.begin(), info.derived.end());
   const std::vector<double> sds = AddGaussianNoise(data, measured, o.noise, o.seed);
   const auto rates = ParseSampleRates(o.rates, data);
   ApplySampleRates(data, rates);
+  const std::vector<Dropout> dropouts = ParseDropouts(o.dropouts);
+  ApplyDropouts(data, dropouts, o.seed);
+  if (!dropouts.empty()) truth["dropouts"] = DropoutsToJson(dropouts);
 
   nlohmann::json p = nlohmann::json::object();
   for (size_t i = 0; i < params.size(); ++i) p[info.params[i]] = params[i];
@@ -201,6 +216,15 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--rates", o->rates,
                   "Multi-rate sensors, e.g. imu=50,gps=5,jet=10 (groups or channel names, Hz); "
                   "other rows are written as empty cells")
+      ->delimiter(',');
+  cmd->add_option("--waves", o->waves,
+                  "First-order wave motion on the logged motion: significant height [m], peak "
+                  "period [s] (default 5 sqrt(Hs)), where from [deg] (default: drawn from the "
+                  "seed)")
+      ->type_name("HS[:TP[:FROM_DEG]]");
+  cmd->add_option("--dropouts", o->dropouts,
+                  "Sensor dropouts: NAME=FRACTION of the time lost in gaps of 2 s mean, e.g. "
+                  "gps=0.05 (groups imu, gps, jet, or a channel)")
       ->delimiter(',');
   cmd->add_option("--params", o->params,
                   "JSON of parameter overrides (name: value), or a truth/model file's "

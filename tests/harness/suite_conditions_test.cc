@@ -1,10 +1,12 @@
 // A suite's conditions (harness/suite.h, SuiteConditions): effects hidden in every simulated
-// record and sensors sampled slower than the output rate, the same for training and test
-// records, checked on every vessel before any fit, echoed so that a resumed run sees them.
+// record, sensors sampled slower than the output rate, waves on the logged motion and sensor
+// dropouts, the same for training and test records, checked on every vessel before any fit,
+// echoed so that a resumed run sees them.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "core/error.h"
 #include "harness/run_suite.h"
@@ -35,6 +37,11 @@ TEST(SuiteConditionsTest, AreReadCheckedOnEveryVesselAndEchoed) {
   const nlohmann::json echo = SuiteToJson(s);
   EXPECT_EQ(echo["effects"], j["effects"]);
   EXPECT_EQ(echo["sensors"], j["sensors"]);
+  j["waves"] = "0.5:4";
+  j["dropouts"] = {"gps=0.1"};
+  const nlohmann::json sea = SuiteToJson(ParseSuite(j, "s.json"));
+  EXPECT_EQ(sea["waves"], "0.5:4");
+  EXPECT_EQ(sea["dropouts"], j["dropouts"]);
   // Without them the echo is what it was before they existed (resumed runs match).
   EXPECT_FALSE(SuiteToJson(ParseSuite(Base(), "s.json")).contains("effects"));
 
@@ -44,6 +51,12 @@ TEST(SuiteConditionsTest, AreReadCheckedOnEveryVesselAndEchoed) {
       {{{"effects", "current=0.3"}}, "s.json: effects"},
       {{{"sensors", {"gps=0"}}}, "positive number of Hz"},
       {{{"sensors", {"sonar=5"}}}, "s.json: sensors: odin3dof: --rates 'sonar=5': no group"},
+      {{{"waves", "0"}}, "s.json: waves: the significant wave height"},
+      {{{"waves", {"1"}}}, "s.json: 'waves' must be a string"},
+      {{{"dropouts", {"gps=2"}}}, "s.json: --dropouts 'gps=2'"},
+      {{{"dropouts", {"sonar=0.1"}}}, "s.json: sensors: odin3dof: --dropouts 'sonar'"},
+      {{{"vessels", {"msd"}}, {"test_maneuvers", {"random-steps"}}, {"waves", "1"}},
+       "s.json: sensors: msd: --waves: the record has no"},
   };
   for (const auto& [extra, message] : bad) {
     nlohmann::json b = Base();
@@ -82,6 +95,25 @@ TEST(SuiteConditionsTest, SimulatedRecordsCarryTheHiddenEffectsAndTheSensorRates
   EXPECT_EQ(logged.Get("north").values().cwiseEqual(again.Get("north").values()).count() +
                 (logged.rows() - logged.Get("north").SampleCount()),
             logged.rows());
+}
+
+// Waves move the logged motion but not the vessel the maneuver steers: the heading differs from
+// the calm record's by the waves' yaw alone, a few degrees; a GPS that drops a fifth of its time
+// keeps about four fifths of its samples.
+TEST(SuiteConditionsTest, WavesAndDropoutsReachTheRecords) {
+  const Dataset calm = SimulateForSuite("odin3dof", "random-steps", 300, 0.0, 5);
+  SuiteConditions sea;
+  sea.waves = "0.5:4:30";
+  sea.sensors = {"gps=5"};
+  sea.dropouts = {"gps=0.2"};
+  const Dataset rough = SimulateForSuite("odin3dof", "random-steps", 300, 0.0, 5, sea);
+  ASSERT_EQ(calm.rows(), rough.rows());
+  const double wave_yaw = (rough["psi"] - calm["psi"]).cwiseAbs().maxCoeff();
+  EXPECT_GT(wave_yaw, 0.05 * std::numbers::pi / 180);
+  EXPECT_LT(wave_yaw, 10 * std::numbers::pi / 180);
+  const double kept = static_cast<double>(rough.Get("north").SampleCount()) / 1501.0;
+  EXPECT_GT(kept, 0.65);
+  EXPECT_LT(kept, 0.93);
 }
 
 }  // namespace
