@@ -93,7 +93,7 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
 }  // namespace
 
 const std::vector<std::string>& EmbeddedSuiteNames() {
-  static const std::vector<std::string> names = {"default", "quick", "real"};
+  static const std::vector<std::string> names = {"default", "quick", "realistic", "real"};
   return names;
 }
 

@@ -23,7 +23,7 @@ struct SuiteTrack {
   std::vector<std::string> notes;
 };
 
-// The names `usvid compare --suite` takes besides a file: default, quick and real.
+// The names `usvid compare --suite` takes besides a file: default, quick, realistic and real.
 const std::vector<std::string>& EmbeddedSuiteNames();
 
 // Whether `suite` names an embedded suite rather than a file: no '/' and no '.' in it.

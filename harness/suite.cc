@@ -338,6 +338,12 @@ Suite DefaultSuite(bool quick) {
                     "default suite");
 }
 
+Suite RealisticSuite() {
+  return ParseSuite(nlohmann::json::parse(kRealisticSuiteJson, nullptr, true,
+                                          /*ignore_comments=*/true),
+                    "realistic suite");
+}
+
 nlohmann::json SuiteToJson(const Suite& s) {
   nlohmann::json methods = nlohmann::json::array();
   for (const SuiteMethod& m : s.methods) {

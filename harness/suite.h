@@ -105,6 +105,10 @@ Suite ParseSuite(const nlohmann::json& value, const std::string& file);
 // eb-lr; two noise levels; four seeds. `quick` (quick.json): the same vessels, maneuvers and
 // methods with one noise level, one seed, shorter records and a smaller GP search.
 Suite DefaultSuite(bool quick);
+// The embedded realistic suite (harness/suites/realistic.json, docs/compare.md#realistic): the
+// default suite's vessels under an unmeasured current, waves, a gyro bias, saturated
+// actuators, an IMU at 50 Hz and a GPS at 5 Hz with dropouts, trained under a heading autopilot.
+Suite RealisticSuite();
 nlohmann::json SuiteToJson(const Suite& suite);
 
 // The fits a suite needs: every method on every training maneuver of every vessel that can run

@@ -45,6 +45,16 @@ Autopilot::Autopilot(const Actuation& act, double hold_s, double duration_s, uin
       thrust_levels_.push_back(level(rng));
     }
   }
+  for (int i = 0; i < act.inputs(); ++i)
+    if (act.roles[i] == InputRole::kSide) side_input_ = i;
+  if (side_input_ >= 0) {
+    const auto [lo, hi] = ExcitationRange(act, side_input_);
+    std::uniform_real_distribution<double> level(lo, hi), side_span(hold_s / 6, hold_s / 2);
+    for (double t = 0; t < duration_s || t == 0; t += side_span(rng)) {
+      side_times_.push_back(t);
+      side_levels_.push_back(level(rng));
+    }
+  }
 }
 
 double Autopilot::At(const std::vector<double>& times, const std::vector<double>& values,
@@ -62,6 +72,7 @@ std::string Autopilot::Spec() const {
 std::vector<double> Autopilot::InitialCommand() const {
   std::vector<double> u = CruiseCommand(act_);
   if (act_.thrust_input >= 0) u[act_.thrust_input] = thrust_levels_.front();
+  if (side_input_ >= 0) u[side_input_] = side_levels_.front();
   return u;
 }
 
@@ -69,6 +80,7 @@ void Autopilot::Command(double t, std::span<const double> state, std::span<doubl
   const std::vector<double> cruise = CruiseCommand(act_);
   std::copy(cruise.begin(), cruise.end(), u.begin());
   if (act_.thrust_input >= 0) u[act_.thrust_input] = At(thrust_times_, thrust_levels_, t);
+  if (side_input_ >= 0) u[side_input_] = At(side_times_, side_levels_, t);
   const double psi = state[act_.heading_state];
   if (!started_) {
     psi0_ = psi;

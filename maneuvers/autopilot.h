@@ -9,7 +9,10 @@
 //              e = psi_ref - psi wrapped to +-180 deg and r in deg/s; clipped at +-yaw_full_deg
 //              (the command saturates on every large course change) and slewed at the
 //              vessel's yaw rate limit; the integral stops while the command is clipped
-//   thrust     random levels within the excitation range, held 4 x hold_s, as random-steps
+//   thrust     random levels within the excitation range, held 2-6 x hold_s
+//   side       a side input (odin3dof's sway force), if any, at random levels within its range,
+//              held hold_s / 6 to hold_s / 2, as random-steps does: the operator's own use of
+//              a side thruster, which the autopilot does not close a loop on
 // Gains are the same for every vessel, in rudder degrees: full rudder at 20 deg of heading
 // error, derivative time 3 s, integral time 60 s. They are a plausible commercial tuning, not an
 // optimal one for any vessel: a slow ship overshoots its course more, which only adds excitation.
@@ -50,6 +53,8 @@ class Autopilot : public Maneuver {
   double hold_s_, duration_s_;
   std::vector<double> course_times_, course_offsets_;  // setpoint offsets from psi0 [rad]
   std::vector<double> thrust_times_, thrust_levels_;
+  std::vector<double> side_times_, side_levels_;
+  int side_input_ = -1;
   bool started_ = false;
   double psi0_ = 0.0, integral_ = 0.0, last_t_ = 0.0;
   double error_sq_sum_ = 0.0;

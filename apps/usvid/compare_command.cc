@@ -129,6 +129,8 @@ void RunCompare(const CompareOptions& o) {
   Suite suite;
   if (o.suite.empty() || o.suite == "default" || o.suite == "quick") {
     suite = DefaultSuite(o.quick || o.suite == "quick");
+  } else if (o.suite == "realistic") {
+    suite = RealisticSuite();
   } else if (IsSuiteName(o.suite)) {
     std::string names;
     for (const std::string& n : EmbeddedSuiteNames()) names += (names.empty() ? "" : ", ") + n;
@@ -153,8 +155,9 @@ void AddCompareCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "compare", "The benchmark: methods x maneuvers x vessels x noise x seeds, held-out scores");
   cmd->add_option("--suite", o->suite,
-                  "A suite JSON file, or an embedded suite: default (the default), quick, or "
-                  "real (the measured data of --data-dir)");
+                  "A suite JSON file, or an embedded suite: default (the default), quick, "
+                  "realistic (the sea and sensors of a real trial), or real (the measured data "
+                  "of --data-dir)");
   cmd->add_option("--data-dir", o->data_dir,
                   "The measured data of --suite real (default ../shared/data); absent, the suite "
                   "is skipped");

@@ -3,6 +3,7 @@
 // 3 `compare --baseline` found results worse than the baseline, 1 an internal failure.
 // Built with MPI, an error on one of several ranks ends all of them with its exit code.
 
+#include <glog/logging.h>
 #include <malloc.h>
 
 #include <CLI/CLI.hpp>
@@ -71,6 +72,11 @@ int main(int argc, char** argv) {
   // threshold after the first large block is freed, and a long log's freed columns and Jacobians
   // then stay in the heap: diagnose on a 2-hour log peaked at 272 MB of RSS, 220 MB with this.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  // Ceres logs a solve that cannot start (a candidate model whose first evaluation is not
+  // finite, which GP's refits meet and discard) at glog's ERROR level, whatever the solver's
+  // logging_type. usvid reports a failed fit itself, on one line: glog prints only fatal errors.
+  FLAGS_logtostderr = true;
+  FLAGS_minloglevel = google::GLOG_FATAL;
   usvid::RanksSession session(argc, argv);
   const int code = Run(argc, argv);
   // One rank's failure must not leave the others waiting for it in a collective.

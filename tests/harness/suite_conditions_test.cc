@@ -116,5 +116,21 @@ TEST(SuiteConditionsTest, WavesAndDropoutsReachTheRecords) {
   EXPECT_LT(kept, 0.93);
 }
 
+// The embedded realistic suite (docs/compare.md#realistic) hides the sea and the sensors of a
+// trial in every record of both vessels, trains under the autopilot and on random steps, and
+// keeps eight paired cells per vessel and training maneuver for the verdict's tests.
+TEST(SuiteConditionsTest, TheRealisticSuiteHasTheSeaAndTheSensorsOfATrial) {
+  const Suite s = RealisticSuite();
+  EXPECT_EQ(s.name, "realistic");
+  EXPECT_EQ(s.vessels, (std::vector<std::string>{"odin3dof", "odin-hs"}));
+  EXPECT_EQ(s.train_maneuvers, (std::vector<std::string>{"autopilot", "random-steps"}));
+  EXPECT_EQ(s.conditions.effects,
+            (std::vector<std::string>{"current=0.3", "sensor_bias=0.0017", "saturation=0.8"}));
+  EXPECT_EQ(s.conditions.sensors, (std::vector<std::string>{"imu=50", "gps=5"}));
+  EXPECT_EQ(s.conditions.dropouts, std::vector<std::string>{"gps=0.05"});
+  EXPECT_EQ(s.conditions.waves, "0.3");
+  EXPECT_EQ(s.noise.size() * s.seeds.size(), 8u);
+}
+
 }  // namespace
 }  // namespace usvid
