@@ -52,6 +52,11 @@ struct EffectValues {
   double saturation_fraction = 0.0;  // 0: no clipping
   T surge_acceleration = T(0);       // added to the surge (or speed) state's derivative
   T wind_scale = T(0);  // the measured wind's force, times the vessel's wind model, added
+  // An unmeasured disturbance (wind gusts, simulation/wind_gusts.h) as accelerations of the
+  // sway state v and the yaw rate r; with surge_acceleration, the simulation sets them anew at
+  // every control period. Not an effect of the catalogue: 0 in every fit.
+  T sway_acceleration = T(0);
+  T yaw_acceleration = T(0);
   // Extra delay per input, on top of delay_s (empty: none; shorter than the inputs: none for
   // the rest): input_delay on some inputs only.
   std::vector<double> input_delays_s;
@@ -92,6 +97,8 @@ EffectValues<T> CastValues(const EffectValues<double>& e) {
   out.saturation_fraction = e.saturation_fraction;
   out.surge_acceleration = T(e.surge_acceleration);
   out.wind_scale = T(e.wind_scale);
+  out.sway_acceleration = T(e.sway_acceleration);
+  out.yaw_acceleration = T(e.yaw_acceleration);
   out.input_delays_s = e.input_delays_s;
   out.lag_inputs = e.lag_inputs;
   out.saturation_inputs = e.saturation_inputs;

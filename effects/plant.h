@@ -11,7 +11,8 @@
 // resistance). The measured
 // rate channel carries sensor_bias (MeasuredRate); input_delay shifts u_c in time (caller);
 // surge_force adds its acceleration to the surge state's derivative (u, else U, else the msd's v),
-// and each missing term coefficient * term(x, u_a) to its state's derivative.
+// and each missing term coefficient * term(x, u_a) to its state's derivative. An unmeasured
+// disturbance (gusts) adds its accelerations to the surge, sway (v) and yaw rate (r) states.
 #pragma once
 
 #include <array>
@@ -32,6 +33,20 @@ struct Plant {
     for (std::string_view name : {"u", "U", "v"})
       for (int i = 0; i < V::kStates; ++i)
         if (V::kStateNames[i] == name) return i;
+    return -1;
+  }();
+  // The states a disturbance's sway and yaw accelerations act on: v beside a surge u, and r.
+  static constexpr int kSwayState = [] {
+    int u = -1, v = -1;
+    for (int i = 0; i < V::kStates; ++i) {
+      if (V::kStateNames[i] == std::string_view("u")) u = i;
+      if (V::kStateNames[i] == std::string_view("v")) v = i;
+    }
+    return u >= 0 ? v : -1;
+  }();
+  static constexpr int kYawRateState = [] {
+    for (int i = 0; i < V::kStates; ++i)
+      if (V::kStateNames[i] == std::string_view("r")) return i;
     return -1;
   }();
 
@@ -84,6 +99,11 @@ struct Plant {
     const Environment<T> env{e.current_north, e.current_east, e.wind_scale};
     V::template Derivative<T>(x, u_applied.data(), p_eff, env, dx);
     if constexpr (kSurgeState >= 0) dx[kSurgeState] += e.surge_acceleration;
+    // Never fitted (no derivative parts), so skipped when zero: a fit's Jets pay nothing.
+    if constexpr (kSwayState >= 0)
+      if (ValueOf(e.sway_acceleration) != 0.0) dx[kSwayState] += e.sway_acceleration;
+    if constexpr (kYawRateState >= 0)
+      if (ValueOf(e.yaw_acceleration) != 0.0) dx[kYawRateState] += e.yaw_acceleration;
     for (const ExtraTerm<T>& extra : e.extra_terms) {
       const ResolvedTerm& t = *extra.resolved;
       std::array<T, V::kStates + V::kInputs> values;

@@ -25,6 +25,7 @@
 #include "sensors/sample_rates.h"
 #include "sensors/wave_motion.h"
 #include "simulation/vessel_simulator.h"
+#include "simulation/wind_gusts.h"
 #include "simulators/vessel.h"
 
 namespace usvid {
@@ -66,6 +67,8 @@ Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver,
   RunOptions run;
   for (const auto& [_, hz] : ParseRateItems(conditions.sensors))
     run.rate_hz = std::max(run.rate_hz, hz);
+  if (!conditions.gusts.empty())
+    run.disturbance = GustDisturbance(MakeWindGusts(info, conditions.gusts, seed, "gusts"), seed);
   const EffectValues<double> effects =
       ValuesOf(ParseEffects(conditions.effects, seed), info.inputs, info.states);
   Dataset d = sim.RunManeuver(*m, info.default_params, effects, run).data;

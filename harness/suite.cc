@@ -20,6 +20,7 @@
 #include "sensors/sample_rates.h"
 #include "sensors/wave_motion.h"
 #include "simulation/vessel_simulator.h"
+#include "simulation/wind_gusts.h"
 
 namespace usvid {
 namespace {
@@ -207,12 +208,12 @@ namespace {
 // input or state it lacks), waves on a vessel without positions and body velocities, or a
 // sensor naming no group or channel of its records is an error naming the field.
 void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s) {
-  if (!v.contains("effects") && !v.contains("sensors") && !v.contains("waves") &&
-      !v.contains("dropouts"))
+  if (!v.contains("effects") && !v.contains("sensors") && !v.contains("gusts") &&
+      !v.contains("waves") && !v.contains("dropouts"))
     return;
   if (s.Measured())
-    throw InputError(file + ": 'effects', 'sensors', 'waves' and 'dropouts' make simulated " +
-                     "records; measured data have their own");
+    throw InputError(file + ": 'effects', 'sensors', 'gusts', 'waves' and 'dropouts' make " +
+                     "simulated records; measured data have their own");
   if (v.contains("effects"))
     s.conditions.effects = ListOf<std::string>(v["effects"], file + ": effects");
   if (v.contains("sensors"))
@@ -223,6 +224,11 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
     if (!v["waves"].is_string())
       throw InputError(file + ": 'waves' must be a string, HS[:TP[:FROM_DEG]]");
     s.conditions.waves = v["waves"].get<std::string>();
+  }
+  if (v.contains("gusts")) {
+    if (!v["gusts"].is_string())
+      throw InputError(file + ": 'gusts' must be a string, SPEED[:FROM_DEG]");
+    s.conditions.gusts = v["gusts"].get<std::string>();
   }
   std::vector<Effect> effects;
   std::vector<Dropout> dropouts;
@@ -247,6 +253,7 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
     } catch (const InputError& e) {
       throw InputError(file + ": effects: " + e.what());
     }
+    if (!s.conditions.gusts.empty()) MakeWindGusts(info, s.conditions.gusts, 1, file + ": gusts");
     // The channels a simulated record of the vessel holds, one row: what a sensor may name.
     Dataset record(Eigen::VectorXd::Zero(1));
     for (const std::vector<std::string>* names : {&info.states, &info.derived, &info.inputs})
@@ -269,7 +276,7 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
   static const std::set<std::string> kFields = {
       "name",    "vessels", "train_maneuvers", "test_maneuvers", "methods",
       "noise",   "seeds",   "train_seconds",   "test_seconds",   "data",
-      "effects", "sensors", "waves",           "dropouts"};
+      "effects", "sensors", "gusts",           "waves",          "dropouts"};
   for (const auto& [key, _] : v.items())
     if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
   const bool measured = v.contains("data");
@@ -371,6 +378,7 @@ nlohmann::json SuiteToJson(const Suite& s) {
   // Only when given, so that a suite without them echoes (and resumes) as before.
   if (!s.conditions.effects.empty()) out["effects"] = s.conditions.effects;
   if (!s.conditions.sensors.empty()) out["sensors"] = s.conditions.sensors;
+  if (!s.conditions.gusts.empty()) out["gusts"] = s.conditions.gusts;
   if (!s.conditions.waves.empty()) out["waves"] = s.conditions.waves;
   if (!s.conditions.dropouts.empty()) out["dropouts"] = s.conditions.dropouts;
   return out;

@@ -5,7 +5,7 @@
 //    "test_maneuvers": ["multisine"], "methods": [NAME, or {"method": NAME, options...}],
 //    "noise": [0.005], "seeds": [1, 2, 3], "train_seconds": 300, "test_seconds": 180,
 //    "effects": ["current=0.3"], "sensors": ["imu=50", "gps=5"]}
-// ("effects", "sensors", "waves" and "dropouts" optional: SuiteConditions)
+// ("effects", "sensors", "gusts", "waves" and "dropouts" optional: SuiteConditions)
 // (a method's options are those it declares, docs/options.md, with the keys every method
 // shares: states, inputs, rate, forces and derivative; harness/suites/default.json is an
 // example).
@@ -53,10 +53,11 @@ struct SuiteMethod {
 struct SuiteConditions {
   std::vector<std::string> effects;   // `simulate --effect` items
   std::vector<std::string> sensors;   // `simulate --rates` items
+  std::string gusts;                  // `simulate --gusts` (simulation/wind_gusts.h); "": none
   std::string waves;                  // `simulate --waves` (sensors/wave_motion.h); "": calm
   std::vector<std::string> dropouts;  // `simulate --dropouts` items (sensors/dropouts.h)
   bool empty() const {
-    return effects.empty() && sensors.empty() && waves.empty() && dropouts.empty();
+    return effects.empty() && sensors.empty() && gusts.empty() && waves.empty() && dropouts.empty();
   }
 };
 
@@ -106,7 +107,7 @@ Suite ParseSuite(const nlohmann::json& value, const std::string& file);
 // methods with one noise level, one seed, shorter records and a smaller GP search.
 Suite DefaultSuite(bool quick);
 // The embedded realistic suite (harness/suites/realistic.json, docs/compare.md#realistic): the
-// default suite's vessels under an unmeasured current, waves, a gyro bias, saturated
+// default suite's vessels under an unmeasured current and gusty wind, waves, a gyro bias, saturated
 // actuators, an IMU at 50 Hz and a GPS at 5 Hz with dropouts, trained under a heading autopilot.
 Suite RealisticSuite();
 nlohmann::json SuiteToJson(const Suite& suite);

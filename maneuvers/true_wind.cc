@@ -13,7 +13,7 @@ class UnderWind : public Maneuver {
  public:
   UnderWind(std::unique_ptr<Maneuver> inner, const Actuation& act, const TrueWind& wind,
             uint64_t seed)
-      : inner_(std::move(inner)), act_(act), wind_(wind) {
+      : inner_(std::move(inner)), act_(act), wind_(wind), speed_(wind, seed) {
     for (int i = 0; i < act.inputs(); ++i) {
       if (act.input_names[i] == "wind_speed") speed_input_ = i;
       if (act.input_names[i] == "wind_direction") direction_input_ = i;
@@ -24,12 +24,6 @@ class UnderWind : public Maneuver {
           "a vessel file with a wind section (docs/model.md#wind)");
     if (act.heading_state < 0 || act.speed_state < 0 || !act.speed_is_surge)
       throw InputError("--wind: the vessel has no heading and surge-sway states");
-    std::mt19937_64 rng(seed ^ 0x57196ull);
-    std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
-    for (int k = 0; k < kSines; ++k) {
-      frequency_[k] = 0.01 * std::pow(20.0, k / (kSines - 1.0));  // 0.01-0.2 Hz
-      phase_[k] = phase(rng);
-    }
   }
   std::string Spec() const override { return inner_->Spec(); }
   double Duration() const override { return inner_->Duration(); }
@@ -52,25 +46,36 @@ class UnderWind : public Maneuver {
   }
 
  private:
-  static constexpr int kSines = 6;
   template <typename U>
   void Set(double t, double psi, double surge, double sway, U& u) const {
-    double g = 0.0;
-    for (int k = 0; k < kSines; ++k)
-      g += std::sin(2.0 * std::numbers::pi * frequency_[k] * t + phase_[k]) / kSines;
-    const std::array<double, 2> rel =
-        RelativeWind(wind_.speed * (1.0 + wind_.gust * g), wind_.from_rad, psi, surge, sway);
+    const std::array<double, 2> rel = RelativeWind(speed_(t), wind_.from_rad, psi, surge, sway);
     u[speed_input_] = rel[0];
     u[direction_input_] = rel[1];
   }
   std::unique_ptr<Maneuver> inner_;
   Actuation act_;
   TrueWind wind_;
+  GustySpeed speed_;
   int speed_input_ = -1, direction_input_ = -1;
-  std::array<double, kSines> frequency_{}, phase_{};
 };
 
 }  // namespace
+
+GustySpeed::GustySpeed(const TrueWind& wind, uint64_t seed) : wind_(wind) {
+  std::mt19937_64 rng(seed ^ 0x57196ull);
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
+  for (int k = 0; k < kSines; ++k) {
+    frequency_[k] = 0.01 * std::pow(20.0, k / (kSines - 1.0));  // 0.01-0.2 Hz
+    phase_[k] = phase(rng);
+  }
+}
+
+double GustySpeed::operator()(double t) const {
+  double g = 0.0;
+  for (int k = 0; k < kSines; ++k)
+    g += std::sin(2.0 * std::numbers::pi * frequency_[k] * t + phase_[k]) / kSines;
+  return wind_.speed * (1.0 + wind_.gust * g);
+}
 
 std::array<double, 2> RelativeWind(double true_speed, double true_from_rad, double psi, double u,
                                    double v) {

@@ -23,6 +23,19 @@ struct TrueWind {
   double gust = 0.2;      // the gusts' largest fraction of the mean speed
 };
 
+// The true wind's speed over time: W (1 + gust g(t)), g the mean of six sines of 0.01-0.2 Hz
+// (log-spaced) with phases drawn from the seed, so |g| <= 1.
+class GustySpeed {
+ public:
+  GustySpeed(const TrueWind& wind, uint64_t seed);
+  double operator()(double t) const;
+
+ private:
+  static constexpr int kSines = 6;
+  TrueWind wind_;
+  std::array<double, kSines> frequency_{}, phase_{};
+};
+
 // The relative wind [speed, direction] over a hull heading psi with body velocities u, v.
 std::array<double, 2> RelativeWind(double true_speed, double true_from_rad, double psi, double u,
                                    double v);

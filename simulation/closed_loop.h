@@ -39,7 +39,9 @@ ClosedLoopRun RunClosedLoop(Maneuver& maneuver, const std::array<double, V::kPar
   constexpr int N = Plant<V>::kStates;
   std::array<double, V::kParams> p_eff;
   Plant<V>::ScaleParams(params.data(), effects, p_eff.data());
-  PlantStepper<V, double> stepper{p_eff.data(), &effects, limits, opt.integrator, {}};
+  // The effects the plant sees: a disturbance's accelerations change them at every period.
+  EffectValues<double> live = effects;
+  PlantStepper<V, double> stepper{p_eff.data(), &live, limits, opt.integrator, {}};
   const double delay = TotalDelay<V>(effects.delay_s);
   const double period = 1.0 / opt.rate_hz;
   const int substeps = std::max(1, static_cast<int>(std::ceil(period / opt.dt - 1e-9)));
@@ -76,6 +78,15 @@ ClosedLoopRun RunClosedLoop(Maneuver& maneuver, const std::array<double, V::kPar
         i != kinematic.heading)
       x(i) = opt.initial_state[i];
 
+  // A disturbance acts from t = 0 (the run-in is calm: the wind rises as the record starts).
+  auto disturb = [&](double t) {
+    if (!opt.disturbance) return;
+    const std::array<double, 3> a =
+        opt.disturbance(t, std::span<const double>(x.data(), V::kStates));
+    live.surge_acceleration = effects.surge_acceleration + a[0];
+    live.sway_acceleration = effects.sway_acceleration + a[1];
+    live.yaw_acceleration = effects.yaw_acceleration + a[2];
+  };
   std::vector<double> u(V::kInputs);
   InputTrack::Cursor cursor;
   const long ticks = static_cast<long>(std::floor(maneuver.Duration() * opt.rate_hz + 1e-9)) + 1;
@@ -86,6 +97,7 @@ ClosedLoopRun RunClosedLoop(Maneuver& maneuver, const std::array<double, V::kPar
     run.times.push_back(t);
     for (int i = 0; i < V::kStates; ++i) run.states.push_back(x(i));
     if (maneuver.Done() || k + 1 == ticks) break;
+    disturb(t);
     std::array<double, V::kInputs> cmd;
     for (int s = 0; s < substeps; ++s) {
       run.commands.Delayed(t + s * h, delay, effects.input_delays_s, cmd.data(), cursor);

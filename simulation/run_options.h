@@ -1,6 +1,9 @@
 // How a simulation runs: integration step, output (and control) rate, run-in to steady state.
 #pragma once
 
+#include <array>
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "simulation/integrator.h"
@@ -15,6 +18,10 @@ struct RunOptions {
   // Closed-loop maneuvers: the state at t = 0, one value per state; NaN keeps the run-in's
   // steady value (empty: all of them). Positions and heading start at 0 regardless.
   std::vector<double> initial_state;
+  // Closed-loop maneuvers: an unmeasured disturbance (simulation/wind_gusts.h), asked at every
+  // control period for the accelerations [surge, sway, yaw rate] it gives the vessel in its
+  // state at time t, held until the next period on top of the effects' own. Empty: none.
+  std::function<std::array<double, 3>(double t, std::span<const double> state)> disturbance;
 };
 
 }  // namespace usvid

@@ -1,6 +1,7 @@
 // usvid simulate --vessel V --maneuver M [--effect NAME=VALUE[@INPUT] ...] [--noise S] [--seed N]
 //                [--rates imu=50,gps=5,jet=10] [--wind SPEED[:FROM_DEG]]
-//                [--waves HS[:TP[:FROM_DEG]]] [--dropouts gps=0.05,...] --out F.csv
+//                [--gusts SPEED[:FROM_DEG]] [--waves HS[:TP[:FROM_DEG]]] [--dropouts gps=0.05,...]
+//                --out F.csv
 //                                                                   (writes F.truth.json too)
 // usvid simulate --vessel V --inputs IN.csv [--dt H] --out F.csv
 
@@ -25,6 +26,7 @@
 #include "sensors/sample_rates.h"
 #include "sensors/wave_motion.h"
 #include "simulation/vessel_simulator.h"
+#include "simulation/wind_gusts.h"
 
 namespace usvid {
 namespace {
@@ -44,6 +46,7 @@ struct SimulateOptions {
   double rate_hz = 20.0;
   std::string integrator = "rk4";
   std::string wind;
+  std::string gusts;
   std::string waves;
   std::vector<std::string> dropouts;
   std::string out;
@@ -121,13 +124,18 @@ void RunSimulate(const SimulateOptions& o) {
     auto maneuver = MakeManeuver(o.maneuver, act, o.duration, o.seed);
     if (!o.wind.empty())
       maneuver = UnderTrueWind(std::move(maneuver), act, ParseWind(o.wind, o.seed), o.seed);
+    if (!o.gusts.empty()) {
+      const WindGusts gusts = MakeWindGusts(info, o.gusts, o.seed, "--gusts '" + o.gusts + "'");
+      run.disturbance = GustDisturbance(gusts, o.seed);
+      truth["gusts"] = WindGustsToJson(gusts);
+    }
     std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "
               << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
     result = sim.RunManeuver(*maneuver, params, values, run);
   } else {
-    if (!o.wind.empty())
+    if (!o.wind.empty() || !o.gusts.empty())
       throw InputError(
-          "simulate: --wind makes a maneuver's wind; with --inputs the file's "
+          "simulate: --wind and --gusts make a maneuver's wind; with --inputs the file's "
           "wind_speed and wind_direction columns are the wind");
     const Dataset in = ReadDataFile(o.inputs, "usvid simulate");
     result = sim.RunInputs(in, params, values, run);
@@ -217,6 +225,10 @@ void AddSimulateCommand(CLI::App& app) {
                   "Multi-rate sensors, e.g. imu=50,gps=5,jet=10 (groups or channel names, Hz); "
                   "other rows are written as empty cells")
       ->delimiter(',');
+  cmd->add_option("--gusts", o->gusts,
+                  "An unmeasured gusty wind on a vessel that logs none (odin3dof, odin-hs): mean "
+                  "speed [m/s], where from [deg] (default: drawn from the seed)")
+      ->type_name("SPEED[:FROM_DEG]");
   cmd->add_option("--waves", o->waves,
                   "First-order wave motion on the logged motion: significant height [m], peak "
                   "period [s] (default 5 sqrt(Hs)), where from [deg] (default: drawn from the "

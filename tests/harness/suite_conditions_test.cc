@@ -1,7 +1,7 @@
 // A suite's conditions (harness/suite.h, SuiteConditions): effects hidden in every simulated
-// record, sensors sampled slower than the output rate, waves on the logged motion and sensor
-// dropouts, the same for training and test records, checked on every vessel before any fit,
-// echoed so that a resumed run sees them.
+// record, an unmeasured gusty wind, sensors sampled slower than the output rate, waves on the
+// logged motion and sensor dropouts, the same for training and test records, checked on every
+// vessel before any fit, echoed so that a resumed run sees them.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -54,6 +54,8 @@ TEST(SuiteConditionsTest, AreReadCheckedOnEveryVesselAndEchoed) {
       {{{"waves", "0"}}, "s.json: waves: the significant wave height"},
       {{{"waves", {"1"}}}, "s.json: 'waves' must be a string"},
       {{{"dropouts", {"gps=2"}}}, "s.json: --dropouts 'gps=2'"},
+      {{{"gusts", "60"}}, "s.json: gusts: the mean wind speed"},
+      {{{"gusts", 8}}, "s.json: 'gusts' must be a string"},
       {{{"dropouts", {"sonar=0.1"}}}, "s.json: sensors: odin3dof: --dropouts 'sonar'"},
       {{{"vessels", {"msd"}}, {"test_maneuvers", {"random-steps"}}, {"waves", "1"}},
        "s.json: sensors: msd: --waves: the record has no"},
@@ -118,7 +120,7 @@ TEST(SuiteConditionsTest, WavesAndDropoutsReachTheRecords) {
 
 // The embedded realistic suite (docs/compare.md#realistic) hides the sea and the sensors of a
 // trial in every record of both vessels, trains under the autopilot and on random steps, and
-// keeps eight paired cells per vessel and training maneuver for the verdict's tests.
+// keeps twelve paired cells per vessel and training maneuver for the verdict's tests.
 TEST(SuiteConditionsTest, TheRealisticSuiteHasTheSeaAndTheSensorsOfATrial) {
   const Suite s = RealisticSuite();
   EXPECT_EQ(s.name, "realistic");
@@ -129,7 +131,8 @@ TEST(SuiteConditionsTest, TheRealisticSuiteHasTheSeaAndTheSensorsOfATrial) {
   EXPECT_EQ(s.conditions.sensors, (std::vector<std::string>{"imu=50", "gps=5"}));
   EXPECT_EQ(s.conditions.dropouts, std::vector<std::string>{"gps=0.05"});
   EXPECT_EQ(s.conditions.waves, "0.3");
-  EXPECT_EQ(s.noise.size() * s.seeds.size(), 8u);
+  EXPECT_EQ(s.conditions.gusts, "8");
+  EXPECT_EQ(s.noise.size() * s.seeds.size(), 12u);
 }
 
 }  // namespace
