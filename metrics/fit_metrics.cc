@@ -1,5 +1,6 @@
 #include "metrics/fit_metrics.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace usvid {
@@ -26,8 +27,11 @@ ChannelScore ScoreChannel(const Eigen::VectorXd& measured, const Eigen::VectorXd
     }
   const double n = static_cast<double>(s.samples);
   s.rmse = std::sqrt(err2 / n);
-  s.nrmse = var2 > 0 ? s.rmse / std::sqrt(var2 / n) : 0.0;
-  s.fit_percent = var2 > 0 ? 100.0 * (1.0 - std::sqrt(err2 / var2)) : 0.0;
+  // A spread at rounding level is no variance: a throttle's rpm held through a zig-zag varies by
+  // 1e-12 of itself, and a model a little off its level would score -1e13 %.
+  const bool varies = std::sqrt(var2 / n) > kNoVarianceRelative * std::max(1.0, std::abs(mean));
+  s.nrmse = varies ? s.rmse / std::sqrt(var2 / n) : 0.0;
+  s.fit_percent = varies ? 100.0 * (1.0 - std::sqrt(err2 / var2)) : 0.0;
   return s;
 }
 

@@ -51,6 +51,14 @@ TEST_F(EvaluationTest, FitPercentFollowsTheDefinition) {
   // ||e|| = 1, ||y - mean|| = sqrt(5): fit = 100 (1 - 1 / sqrt 5).
   EXPECT_NEAR(ScoreChannel(y, off).fit_percent, 100.0 * (1.0 - 1.0 / std::sqrt(5.0)), 1e-12);
   EXPECT_NEAR(ScoreChannel(y, off).rmse, 0.5, 1e-12);
+  // A channel held constant, but for rounding (an rpm of 1500 through a zig-zag), has no
+  // variance: a model off its level scores 0, not -1e13 %.
+  Eigen::VectorXd held = Eigen::VectorXd::Constant(4, 1500.0);
+  held(2) += 1e-10;
+  const ChannelScore flat = ScoreChannel(held, held.array() + 2.0);
+  EXPECT_EQ(flat.fit_percent, 0.0);
+  EXPECT_EQ(flat.nrmse, 0.0);
+  EXPECT_NEAR(flat.rmse, 2.0, 1e-9);
 }
 
 // A suite's rows need no k-step NRMSE and a plot only the free run: the narrower scopes leave
