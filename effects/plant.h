@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <initializer_list>
 #include <string_view>
 
 #include "effects/effect_values.h"
@@ -24,31 +25,24 @@
 
 namespace usvid {
 
+// The index of the first of `names` among V's states; -1: none of them.
+template <Vessel V>
+constexpr int FindState(std::initializer_list<std::string_view> names) {
+  for (std::string_view name : names)
+    for (int i = 0; i < V::kStates; ++i)
+      if (V::kStateNames[i] == name) return i;
+  return -1;
+}
+
 template <Vessel V>
 struct Plant {
   static constexpr int kStates = V::kStates + V::kInputs;
   static constexpr int kCommanded = CommandedInputs<V>();
   // The state a surge force accelerates: u, else U, else v (the msd's velocity); -1: none.
-  static constexpr int kSurgeState = [] {
-    for (std::string_view name : {"u", "U", "v"})
-      for (int i = 0; i < V::kStates; ++i)
-        if (V::kStateNames[i] == name) return i;
-    return -1;
-  }();
+  static constexpr int kSurgeState = FindState<V>({"u", "U", "v"});
   // The states a disturbance's sway and yaw accelerations act on: v beside a surge u, and r.
-  static constexpr int kSwayState = [] {
-    int u = -1, v = -1;
-    for (int i = 0; i < V::kStates; ++i) {
-      if (V::kStateNames[i] == std::string_view("u")) u = i;
-      if (V::kStateNames[i] == std::string_view("v")) v = i;
-    }
-    return u >= 0 ? v : -1;
-  }();
-  static constexpr int kYawRateState = [] {
-    for (int i = 0; i < V::kStates; ++i)
-      if (V::kStateNames[i] == std::string_view("r")) return i;
-    return -1;
-  }();
+  static constexpr int kSwayState = FindState<V>({"u"}) >= 0 ? FindState<V>({"v"}) : -1;
+  static constexpr int kYawRateState = FindState<V>({"r"});
 
   template <typename T>
   static void ScaleParams(const T* p, const EffectValues<T>& e, T* p_eff) {

@@ -20,10 +20,8 @@
 #include "metrics/structure.h"
 #include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
-#include "sensors/dropouts.h"
-#include "sensors/noise.h"
 #include "sensors/sample_rates.h"
-#include "sensors/wave_motion.h"
+#include "sensors/sensor_chain.h"
 #include "simulation/vessel_simulator.h"
 #include "simulation/wind_gusts.h"
 #include "simulators/vessel.h"
@@ -74,13 +72,8 @@ Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver,
   Dataset d = sim.RunManeuver(*m, info.default_params, effects, run).data;
   std::vector<std::string> measured = info.states;
   measured.insert(measured.end(), info.derived.begin(), info.derived.end());
-  // What the sensors log: the waves' motion on top, noise, each sensor's rate, its gaps.
-  if (!conditions.waves.empty())
-    AddWaveMotion(d, ParseWaveSea(conditions.waves, seed, "waves"), WaveHullLength(info.length_m),
-                  seed);
-  AddGaussianNoise(d, measured, noise, seed);
-  if (!conditions.sensors.empty()) ApplySampleRates(d, ParseSampleRates(conditions.sensors, d));
-  ApplyDropouts(d, ParseDropouts(conditions.dropouts), seed);
+  LogAsSensors(d, measured, {conditions.waves, noise, conditions.sensors, conditions.dropouts},
+               WaveHullLength(info.length_m), seed);
   return d;
 }
 

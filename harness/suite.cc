@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <type_traits>
@@ -203,8 +204,8 @@ std::string FitJob::Id() const {
 
 namespace {
 
-// "effects", "sensors", "waves" and "dropouts" (SuiteConditions), checked on every vessel of
-// the suite before any fit: an effect the vessel cannot take (wind without a wind model, an
+// "effects", "sensors", "gusts", "waves" and "dropouts" (SuiteConditions), checked on every vessel
+// of the suite before any fit: an effect the vessel cannot take (wind without a wind model, an
 // input or state it lacks), waves on a vessel without positions and body velocities, or a
 // sensor naming no group or channel of its records is an error naming the field.
 void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s) {
@@ -232,6 +233,7 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
   }
   std::vector<Effect> effects;
   std::vector<Dropout> dropouts;
+  std::optional<WaveSea> sea;
   try {
     effects = ParseEffects(s.conditions.effects, 1);
   } catch (const InputError& e) {
@@ -239,7 +241,7 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
   }
   try {
     dropouts = ParseDropouts(s.conditions.dropouts);
-    if (!s.conditions.waves.empty()) ParseWaveSea(s.conditions.waves, 1, "waves");
+    if (!s.conditions.waves.empty()) sea = ParseWaveSea(s.conditions.waves, 1, "waves");
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.what());
   }
@@ -261,8 +263,7 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
     try {
       ParseSampleRates(s.conditions.sensors, record);
       ApplyDropouts(record, dropouts, 1);
-      if (!s.conditions.waves.empty())
-        AddWaveMotion(record, ParseWaveSea(s.conditions.waves, 1, "waves"), 0.0, 1);
+      if (sea) AddWaveMotion(record, *sea, 0.0, 1);
     } catch (const InputError& e) {
       throw InputError(file + ": sensors: " + info.name + ": " + e.what());
     }

@@ -31,36 +31,21 @@ Autopilot::Autopilot(const Actuation& act, double hold_s, double duration_s, uin
   std::mt19937_64 rng(seq);
   std::uniform_real_distribution<double> span(0.5 * hold_s, 1.5 * hold_s);
   std::uniform_real_distribution<double> course(-kCourseSpanDeg * kDeg, kCourseSpanDeg * kDeg);
-  course_times_ = {0.0};
-  course_offsets_ = {0.0};
+  course_ = {{0.0}, {0.0}};  // the initial heading first
   for (double t = span(rng); t < duration_s; t += span(rng)) {
-    course_times_.push_back(t);
-    course_offsets_.push_back(course(rng));
+    course_.times.push_back(t);
+    course_.levels.push_back(course(rng));
   }
   if (act.thrust_input >= 0) {
     const auto [lo, hi] = ExcitationRange(act, act.thrust_input);
-    std::uniform_real_distribution<double> level(lo, hi), thrust_span(2 * hold_s, 6 * hold_s);
-    for (double t = 0; t < duration_s || t == 0; t += thrust_span(rng)) {
-      thrust_times_.push_back(t);
-      thrust_levels_.push_back(level(rng));
-    }
+    thrust_ = Steps::Random(lo, hi, 2 * hold_s, 6 * hold_s, duration_s, rng);
   }
   for (int i = 0; i < act.inputs(); ++i)
     if (act.roles[i] == InputRole::kSide) side_input_ = i;
   if (side_input_ >= 0) {
     const auto [lo, hi] = ExcitationRange(act, side_input_);
-    std::uniform_real_distribution<double> level(lo, hi), side_span(hold_s / 6, hold_s / 2);
-    for (double t = 0; t < duration_s || t == 0; t += side_span(rng)) {
-      side_times_.push_back(t);
-      side_levels_.push_back(level(rng));
-    }
+    side_ = Steps::Random(lo, hi, hold_s / 6, hold_s / 2, duration_s, rng);
   }
-}
-
-double Autopilot::At(const std::vector<double>& times, const std::vector<double>& values,
-                     double t) {
-  const auto it = std::upper_bound(times.begin(), times.end(), t);
-  return values[std::max<ptrdiff_t>(0, (it - times.begin()) - 1)];
 }
 
 std::string Autopilot::Spec() const {
@@ -71,23 +56,23 @@ std::string Autopilot::Spec() const {
 
 std::vector<double> Autopilot::InitialCommand() const {
   std::vector<double> u = CruiseCommand(act_);
-  if (act_.thrust_input >= 0) u[act_.thrust_input] = thrust_levels_.front();
-  if (side_input_ >= 0) u[side_input_] = side_levels_.front();
+  if (act_.thrust_input >= 0) u[act_.thrust_input] = thrust_.levels.front();
+  if (side_input_ >= 0) u[side_input_] = side_.levels.front();
   return u;
 }
 
 void Autopilot::Command(double t, std::span<const double> state, std::span<double> u) {
   const std::vector<double> cruise = CruiseCommand(act_);
   std::copy(cruise.begin(), cruise.end(), u.begin());
-  if (act_.thrust_input >= 0) u[act_.thrust_input] = At(thrust_times_, thrust_levels_, t);
-  if (side_input_ >= 0) u[side_input_] = At(side_times_, side_levels_, t);
+  if (act_.thrust_input >= 0) u[act_.thrust_input] = thrust_.At(t);
+  if (side_input_ >= 0) u[side_input_] = side_.At(t);
   const double psi = state[act_.heading_state];
   if (!started_) {
     psi0_ = psi;
     last_t_ = t;
     started_ = true;
   }
-  const double error_deg = Wrap(psi0_ + At(course_times_, course_offsets_, t) - psi) / kDeg;
+  const double error_deg = Wrap(psi0_ + course_.At(t) - psi) / kDeg;
   const double rate_deg = state[act_.rate_state] / kDeg;
   const double kp = act_.yaw_full_deg / kFullErrorDeg;
   const double ki = kp / kIntegralTimeS, kd = kp * kDerivativeTimeS;
@@ -106,11 +91,11 @@ void Autopilot::Command(double t, std::span<const double> state, std::span<doubl
 nlohmann::json Autopilot::Report() const {
   const double n = std::max<double>(1.0, static_cast<double>(periods_));
   std::vector<double> courses_deg;
-  for (double c : course_offsets_) courses_deg.push_back(c / kDeg);
+  for (double c : course_.levels) courses_deg.push_back(c / kDeg);
   return {{"hold_s", hold_s_},
-          {"course_times_s", course_times_},
+          {"course_times_s", course_.times},
           {"courses_deg", courses_deg},
-          {"course_changes", course_times_.size() - 1},
+          {"course_changes", course_.times.size() - 1},
           {"rms_heading_error_deg", std::sqrt(error_sq_sum_ / n)},
           {"clipped_share", static_cast<double>(clipped_) / n}};
 }

@@ -26,6 +26,7 @@
 
 #include "maneuvers/maneuver.h"
 #include "maneuvers/slewed_yaw.h"
+#include "maneuvers/steps.h"
 
 namespace usvid {
 
@@ -46,14 +47,10 @@ class Autopilot : public Maneuver {
   nlohmann::json Report() const override;
 
  private:
-  // The step schedule's value at time t (times ascending, times[0] = 0).
-  static double At(const std::vector<double>& times, const std::vector<double>& values, double t);
-
   Actuation act_;
   double hold_s_, duration_s_;
-  std::vector<double> course_times_, course_offsets_;  // setpoint offsets from psi0 [rad]
-  std::vector<double> thrust_times_, thrust_levels_;
-  std::vector<double> side_times_, side_levels_;
+  Steps course_;  // setpoint offsets from psi0 [rad]
+  Steps thrust_, side_;
   int side_input_ = -1;
   bool started_ = false;
   double psi0_ = 0.0, integral_ = 0.0, last_t_ = 0.0;

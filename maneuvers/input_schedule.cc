@@ -6,6 +6,7 @@
 #include <random>
 
 #include "maneuvers/excitation.h"
+#include "maneuvers/steps.h"
 
 namespace usvid {
 namespace {
@@ -20,15 +21,6 @@ std::mt19937_64 StreamFor(uint64_t seed, uint64_t salt, int input) {
                     static_cast<uint32_t>(salt), static_cast<uint32_t>(input)};
   return std::mt19937_64(seq);
 }
-
-struct Steps {
-  std::vector<double> times;   // switch times, ascending, times[0] = 0
-  std::vector<double> levels;  // level from times[k]
-  double At(double t) const {
-    const auto it = std::upper_bound(times.begin(), times.end(), t);
-    return levels[std::max<ptrdiff_t>(0, (it - times.begin()) - 1)];
-  }
-};
 
 // The schedule holding each excited input at its steps, the others at cruise.
 std::unique_ptr<Maneuver> StepSchedule(const std::string& spec, const Actuation& act,
@@ -50,11 +42,7 @@ std::unique_ptr<Maneuver> MakeRandomSteps(const Actuation& act, double hold_s, d
     auto rng = StreamFor(seed, 0x5EED, i);
     const auto [lo, hi] = ExcitationRange(act, i);
     const double hold = act.roles[i] == InputRole::kThrust ? 4 * hold_s : hold_s;
-    std::uniform_real_distribution<double> level(lo, hi), span(0.5 * hold, 1.5 * hold);
-    for (double t = 0; t < duration_s; t += span(rng)) {
-      steps[i].times.push_back(t);
-      steps[i].levels.push_back(level(rng));
-    }
+    steps[i] = Steps::Random(lo, hi, 0.5 * hold, 1.5 * hold, duration_s, rng);
   }
   return StepSchedule("random-steps", act, duration_s, std::move(steps));
 }

@@ -21,10 +21,8 @@
 #include "effects/effect_values.h"
 #include "maneuvers/maneuver_factory.h"
 #include "maneuvers/true_wind.h"
-#include "sensors/dropouts.h"
-#include "sensors/noise.h"
 #include "sensors/sample_rates.h"
-#include "sensors/wave_motion.h"
+#include "sensors/sensor_chain.h"
 #include "simulation/vessel_simulator.h"
 #include "simulation/wind_gusts.h"
 
@@ -147,27 +145,19 @@ void RunSimulate(const SimulateOptions& o) {
 
   // What the sensors log: the waves' motion on top, noise, each sensor's rate, its gaps.
   Dataset& data = result.data;
-  if (!o.waves.empty()) {
-    const WaveSea sea = ParseWaveSea(o.waves, o.seed, "--waves '" + o.waves + "'");
-    const double hull = WaveHullLength(info.length_m);
-    AddWaveMotion(data, sea, hull, o.seed);
-    truth["waves"] = WaveSeaToJson(sea, hull);
-  }
   std::vector<std::string> measured = info.states;
   measured.insert(measured.end(), info.derived.begin(), info.derived.end());
-  const std::vector<double> sds = AddGaussianNoise(data, measured, o.noise, o.seed);
-  const auto rates = ParseSampleRates(o.rates, data);
-  ApplySampleRates(data, rates);
-  const std::vector<Dropout> dropouts = ParseDropouts(o.dropouts);
-  ApplyDropouts(data, dropouts, o.seed);
-  if (!dropouts.empty()) truth["dropouts"] = DropoutsToJson(dropouts);
+  const SensorLog logged = LogAsSensors(data, measured, {o.waves, o.noise, o.rates, o.dropouts},
+                                        WaveHullLength(info.length_m), o.seed);
+  if (logged.sea) truth["waves"] = WaveSeaToJson(*logged.sea, logged.hull_length_m);
+  if (!logged.dropouts.empty()) truth["dropouts"] = DropoutsToJson(logged.dropouts);
 
   nlohmann::json p = nlohmann::json::object();
   for (size_t i = 0; i < params.size(); ++i) p[info.params[i]] = params[i];
   nlohmann::json e = nlohmann::json::array();
   for (const Effect& effect : effects) e.push_back(EffectToJson(effect));
   nlohmann::json noise_sd = nlohmann::json::object();
-  for (size_t i = 0; i < measured.size(); ++i) noise_sd[measured[i]] = sds[i];
+  for (size_t i = 0; i < measured.size(); ++i) noise_sd[measured[i]] = logged.noise_sd[i];
   truth.update({{"vessel", info.name},
                 {"parameters", p},
                 {"effects", e},
@@ -180,7 +170,7 @@ void RunSimulate(const SimulateOptions& o) {
                 {"rate_hz", run.rate_hz},
                 {"integrator", o.integrator},
                 {"transport_delay_s", info.transport_delay_s},
-                {"sensor_rates_hz", rates},
+                {"sensor_rates_hz", logged.rates},
                 {"duration_s", data.duration()},
                 {"run_in_s", result.run_in_s}});
   if (!result.maneuver.is_null()) truth["maneuver"] = result.maneuver;
