@@ -93,7 +93,8 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
 }  // namespace
 
 const std::vector<std::string>& EmbeddedSuiteNames() {
-  static const std::vector<std::string> names = {"default", "quick", "realistic", "real"};
+  static const std::vector<std::string> names = {"default", "quick", "realistic", "real",
+                                                 "realistic-measured"};
   return names;
 }
 

@@ -22,6 +22,7 @@
 #include "preprocessing/waterjet_forces.h"
 #include "sensors/sample_rates.h"
 #include "sensors/sensor_chain.h"
+#include "simulation/logged_disturbances.h"
 #include "simulation/vessel_simulator.h"
 #include "simulation/wind_gusts.h"
 #include "simulators/vessel.h"
@@ -65,13 +66,20 @@ Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver,
   RunOptions run;
   for (const auto& [_, hz] : ParseRateItems(conditions.sensors))
     run.rate_hz = std::max(run.rate_hz, hz);
-  if (!conditions.gusts.empty())
-    run.disturbance = GustDisturbance(MakeWindGusts(info, conditions.gusts, seed, "gusts"), seed);
+  std::optional<WindGusts> gusts;
+  if (!conditions.gusts.empty()) {
+    gusts = MakeWindGusts(info, conditions.gusts, seed, "gusts");
+    run.disturbance = GustDisturbance(*gusts, seed);
+  }
   const EffectValues<double> effects =
       ValuesOf(ParseEffects(conditions.effects, seed), info.inputs, info.states);
   Dataset d = sim.RunManeuver(*m, info.default_params, effects, run).data;
   std::vector<std::string> measured = info.states;
   measured.insert(measured.end(), info.derived.begin(), info.derived.end());
+  // The logged disturbances, from the true motion, then through the same sensors.
+  for (std::string& c :
+       LogDisturbances(d, conditions.logged, gusts ? &*gusts : nullptr, seed, effects))
+    measured.push_back(std::move(c));
   LogAsSensors(d, measured, {conditions.waves, noise, conditions.sensors, conditions.dropouts},
                WaveHullLength(info.length_m), seed);
   return d;
@@ -143,10 +151,18 @@ std::string InputsOf(const nlohmann::json& model) {
   return text;
 }
 
-IdentifyRequest RequestFor(const FitJob& job) {
+// A job's request. Where the records log disturbances, a method whose equations take any input
+// reads them beside its default inputs (the commands, or the force map's forces), unless the
+// suite names its inputs.
+IdentifyRequest RequestFor(const Suite& suite, const FitJob& job) {
   IdentifyRequest r = MethodRequest(job.method, job.vessel, job.seed);
   r.threads = 1;  // the suite runs jobs in parallel
   r.data_name = job.vessel + "/" + job.train_maneuver;
+  if (!suite.conditions.logged.empty() && !job.vessel.empty() &&
+      FindSuiteMethod(job.method.method).any_inputs && !job.method.options.contains("inputs")) {
+    r.inputs = DefaultChannels(r).inputs;
+    for (std::string& c : LoggedInputChannels(suite.conditions.logged)) r.inputs.push_back(c);
+  }
   return r;
 }
 
@@ -198,7 +214,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
         suite.Measured() ? train_sets.at(job.train_maneuver)
                          : SimulateForSuite(job.vessel, job.train_maneuver, suite.train_seconds,
                                             job.noise, job.seed, suite.conditions);
-    model = Identify(FindSuiteMethod(job.method.method), train, RequestFor(job));
+    model = Identify(FindSuiteMethod(job.method.method), train, RequestFor(suite, job));
   } catch (const std::exception& e) {
     failure = std::string("failed: ") + e.what();
   }

@@ -20,6 +20,7 @@
 #include "sensors/dropouts.h"
 #include "sensors/sample_rates.h"
 #include "sensors/wave_motion.h"
+#include "simulation/logged_disturbances.h"
 #include "simulation/vessel_simulator.h"
 #include "simulation/wind_gusts.h"
 
@@ -204,23 +205,26 @@ std::string FitJob::Id() const {
 
 namespace {
 
-// "effects", "sensors", "gusts", "waves" and "dropouts" (SuiteConditions), checked on every vessel
-// of the suite before any fit: an effect the vessel cannot take (wind without a wind model, an
-// input or state it lacks), waves on a vessel without positions and body velocities, or a
-// sensor naming no group or channel of its records is an error naming the field.
+// "effects", "sensors", "gusts", "waves", "dropouts" and "logged" (SuiteConditions), checked on
+// every vessel of the suite before any fit: an effect the vessel cannot take (wind without a wind
+// model, an input or state it lacks), waves on a vessel without positions and body velocities, a
+// sensor naming no group or channel of its records, or a logged disturbance that the conditions
+// do not make is an error naming the field.
 void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s) {
   if (!v.contains("effects") && !v.contains("sensors") && !v.contains("gusts") &&
-      !v.contains("waves") && !v.contains("dropouts"))
+      !v.contains("waves") && !v.contains("dropouts") && !v.contains("logged"))
     return;
   if (s.Measured())
-    throw InputError(file + ": 'effects', 'sensors', 'gusts', 'waves' and 'dropouts' make " +
-                     "simulated records; measured data have their own");
+    throw InputError(file + ": 'effects', 'sensors', 'gusts', 'waves', 'dropouts' and 'logged' " +
+                     "make simulated records; measured data have their own");
   if (v.contains("effects"))
     s.conditions.effects = ListOf<std::string>(v["effects"], file + ": effects");
   if (v.contains("sensors"))
     s.conditions.sensors = ListOf<std::string>(v["sensors"], file + ": sensors");
   if (v.contains("dropouts"))
     s.conditions.dropouts = ListOf<std::string>(v["dropouts"], file + ": dropouts");
+  if (v.contains("logged"))
+    s.conditions.logged = ListOf<std::string>(v["logged"], file + ": logged");
   if (v.contains("waves")) {
     if (!v["waves"].is_string())
       throw InputError(file + ": 'waves' must be a string, HS[:TP[:FROM_DEG]]");
@@ -239,6 +243,10 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
   } catch (const InputError& e) {
     throw InputError(file + ": effects: " + e.what());
   }
+  const bool current =
+      std::ranges::any_of(effects, [](const Effect& e) { return e.kind == EffectKind::kCurrent; });
+  CheckLoggedDisturbances(s.conditions.logged, !s.conditions.gusts.empty(), current,
+                          file + ": logged");
   try {
     dropouts = ParseDropouts(s.conditions.dropouts);
     if (!s.conditions.waves.empty()) sea = ParseWaveSea(s.conditions.waves, 1, "waves");
@@ -275,9 +283,9 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
 Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
   if (!v.is_object()) throw InputError(file + ": a suite is a JSON object");
   static const std::set<std::string> kFields = {
-      "name",    "vessels", "train_maneuvers", "test_maneuvers", "methods",
-      "noise",   "seeds",   "train_seconds",   "test_seconds",   "data",
-      "effects", "sensors", "gusts",           "waves",          "dropouts"};
+      "name",  "vessels",       "train_maneuvers", "test_maneuvers", "methods", "noise",
+      "seeds", "train_seconds", "test_seconds",    "data",           "effects", "sensors",
+      "gusts", "waves",         "dropouts",        "logged"};
   for (const auto& [key, _] : v.items())
     if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
   const bool measured = v.contains("data");
@@ -346,10 +354,11 @@ Suite DefaultSuite(bool quick) {
                     "default suite");
 }
 
-Suite RealisticSuite() {
-  return ParseSuite(nlohmann::json::parse(kRealisticSuiteJson, nullptr, true,
-                                          /*ignore_comments=*/true),
-                    "realistic suite");
+Suite RealisticSuite(bool measured) {
+  return ParseSuite(
+      nlohmann::json::parse(measured ? kRealisticMeasuredSuiteJson : kRealisticSuiteJson, nullptr,
+                            true, /*ignore_comments=*/true),
+      measured ? "realistic-measured suite" : "realistic suite");
 }
 
 nlohmann::json SuiteToJson(const Suite& s) {
@@ -382,6 +391,7 @@ nlohmann::json SuiteToJson(const Suite& s) {
   if (!s.conditions.gusts.empty()) out["gusts"] = s.conditions.gusts;
   if (!s.conditions.waves.empty()) out["waves"] = s.conditions.waves;
   if (!s.conditions.dropouts.empty()) out["dropouts"] = s.conditions.dropouts;
+  if (!s.conditions.logged.empty()) out["logged"] = s.conditions.logged;
   return out;
 }
 

@@ -56,8 +56,12 @@ struct SuiteConditions {
   std::string gusts;                  // `simulate --gusts` (simulation/wind_gusts.h); "": none
   std::string waves;                  // `simulate --waves` (sensors/wave_motion.h); "": calm
   std::vector<std::string> dropouts;  // `simulate --dropouts` items (sensors/dropouts.h)
+  // `simulate --logged` items (simulation/logged_disturbances.h): the disturbances the records
+  // log, and the equation methods read as inputs; the others stay hidden.
+  std::vector<std::string> logged;
   bool empty() const {
-    return effects.empty() && sensors.empty() && gusts.empty() && waves.empty() && dropouts.empty();
+    return effects.empty() && sensors.empty() && gusts.empty() && waves.empty() &&
+           dropouts.empty() && logged.empty();
   }
 };
 
@@ -109,7 +113,9 @@ Suite DefaultSuite(bool quick);
 // The embedded realistic suite (harness/suites/realistic.json, docs/compare.md#realistic): the
 // default suite's vessels under an unmeasured current and gusty wind, waves, a gyro bias, saturated
 // actuators, an IMU at 50 Hz and a GPS at 5 Hz with dropouts, trained under a heading autopilot.
-Suite RealisticSuite();
+// `measured`: its measured track (harness/suites/realistic-measured.json), the same records with
+// the wind and the current logged, and the equation methods reading them.
+Suite RealisticSuite(bool measured = false);
 nlohmann::json SuiteToJson(const Suite& suite);
 
 // The fits a suite needs: every method on every training maneuver of every vessel that can run

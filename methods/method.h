@@ -38,6 +38,9 @@ struct Method {
   // Takes its inputs as channels, so that a waterjet log's jet forces may stand in for the
   // commands (the suite's default input map). Vessel models take the vessel's own inputs.
   bool channel_inputs = false;
+  // Its equations may take any channel as one more input: a suite whose records log their
+  // disturbances (the wind, the current) hands it those channels beside its own inputs.
+  bool any_inputs = false;
   // Reads the request's channels (states, inputs) and preprocessing (rate, derivative, forces):
   // a suite entry or Python call may give those keys only to a method that reads them.
   bool named_channels = true;

@@ -144,13 +144,14 @@ ClosedLoopReplay ReplayVesselModel(const nlohmann::json& model, Maneuver& maneuv
 }
 
 // Each input's source: a command, an actuator state, or a jet force from the actuator states.
-enum class SourceKind { kCommand, kActuator, kForce };
+enum class SourceKind { kCommand, kActuator, kForce, kRecorded };
 
 // Where each of an equation model's inputs comes from (the index of its command, actuator
-// state or jet force), and the actuator states the inputs need.
+// state, jet force or recorded disturbance), and the actuator states the inputs need.
 struct InputSources {
   std::vector<std::pair<SourceKind, int>> sources;
   std::vector<ActuatorState> actuators;
+  std::vector<InputTrack> recorded;       // per recorded disturbance, its samples (one value each)
   std::array<int, 3> jet = {-1, -1, -1};  // the jet states among the actuators (-1: none)
   bool any_force = false;
 };
@@ -214,7 +215,7 @@ int ActuatorIndex(const std::string& state, const Actuation& act, const Dataset&
 }
 
 // The source of each of the model's inputs. Throws InputError for an input that is neither a
-// command of the vessel nor derived from one.
+// command of the vessel, nor derived from one, nor a disturbance the record logs.
 InputSources ResolveInputs(const EquationModel& system, const VesselInfo& info, bool jet_forces,
                            const Dataset& recorded) {
   const Actuation& act = info.actuation;
@@ -231,9 +232,19 @@ InputSources ResolveInputs(const EquationModel& system, const VesselInfo& info, 
         ActuatorIndex(s, act, recorded, in.actuators);
       in.sources.push_back(
           {SourceKind::kForce, static_cast<int>(f - kWaterjetForceChannels.begin())});
+    } else if (info.StateIndex(name) < 0 && recorded.Has(name) &&
+               recorded.Get(name).SampleCount() > 0) {
+      // A disturbance the record logs (the wind, the current: a measured track's inputs)
+      // follows the record in time, zero-order hold, as a vessel's measured inputs do
+      // (RecordedApproach).
+      InputTrack track(1);
+      recorded.Get(name).ForEachSample(
+          [&](Eigen::Index k, double v) { track.Append(recorded.t()(k), std::span(&v, 1)); });
+      in.recorded.push_back(std::move(track));
+      in.sources.push_back({SourceKind::kRecorded, static_cast<int>(in.recorded.size() - 1)});
     } else {
       throw InputError("input '" + name + "' is neither a command of " + info.name +
-                       " nor derived from one");
+                       ", nor derived from one, nor a disturbance the record logs");
     }
   }
   // Where the jet states sit among the actuators, for the forces (-1: no force input).
@@ -296,10 +307,11 @@ void AdvanceTick(const EquationModel& system, const InputSources& in, const Comm
                      : std::array<double, 4>{};
     for (size_t i = 0; i < in.sources.size(); ++i) {
       const auto [kind, index] = in.sources[i];
-      u(static_cast<Eigen::Index>(i)) = kind == SourceKind::kCommand
-                                            ? history.At(ts - system.DelayS(), index)
-                                        : kind == SourceKind::kActuator ? y[index]
-                                                                        : forces[index];
+      u(static_cast<Eigen::Index>(i)) =
+          kind == SourceKind::kCommand    ? history.At(ts - system.DelayS(), index)
+          : kind == SourceKind::kActuator ? y[index]
+          : kind == SourceKind::kForce    ? forces[index]
+                                          : in.recorded[index].At(ts + 1e-12)[0];
     }
     system.Step(u, clock.h, state.x);
   }

@@ -129,8 +129,8 @@ void RunCompare(const CompareOptions& o) {
   Suite suite;
   if (o.suite.empty() || o.suite == "default" || o.suite == "quick") {
     suite = DefaultSuite(o.quick || o.suite == "quick");
-  } else if (o.suite == "realistic") {
-    suite = RealisticSuite();
+  } else if (o.suite == "realistic" || o.suite == "realistic-measured") {
+    suite = RealisticSuite(o.suite == "realistic-measured");
   } else if (IsSuiteName(o.suite)) {
     std::string names;
     for (const std::string& n : EmbeddedSuiteNames()) names += (names.empty() ? "" : ", ") + n;

@@ -1,7 +1,7 @@
 // usvid simulate --vessel V --maneuver M [--effect NAME=VALUE[@INPUT] ...] [--noise S] [--seed N]
 //                [--rates imu=50,gps=5,jet=10] [--wind SPEED[:FROM_DEG]]
 //                [--gusts SPEED[:FROM_DEG]] [--waves HS[:TP[:FROM_DEG]]] [--dropouts gps=0.05,...]
-//                --out F.csv
+//                [--logged wind,current] --out F.csv
 //                                                                   (writes F.truth.json too)
 // usvid simulate --vessel V --inputs IN.csv [--dt H] --out F.csv
 
@@ -23,6 +23,7 @@
 #include "maneuvers/true_wind.h"
 #include "sensors/sample_rates.h"
 #include "sensors/sensor_chain.h"
+#include "simulation/logged_disturbances.h"
 #include "simulation/vessel_simulator.h"
 #include "simulation/wind_gusts.h"
 
@@ -47,6 +48,7 @@ struct SimulateOptions {
   std::string gusts;
   std::string waves;
   std::vector<std::string> dropouts;
+  std::vector<std::string> logged;
   std::string out;
 };
 
@@ -97,6 +99,10 @@ void RunSimulate(const SimulateOptions& o) {
       throw InputError("--effect wind: vessel " + info.name +
                        " has no wind model (a vessel file with a wind section has)");
   const EffectValues<double> values = ValuesOf(effects, info.inputs, info.states);
+  CheckLoggedDisturbances(
+      o.logged, !o.gusts.empty(),
+      std::ranges::any_of(effects, [](const Effect& e) { return e.kind == EffectKind::kCurrent; }),
+      "--logged");
   std::vector<double> params = info.default_params;
   if (!o.params.empty()) params = info.ParamsFromFile(o.params);
   RunOptions run;
@@ -106,6 +112,7 @@ void RunSimulate(const SimulateOptions& o) {
 
   SimulationResult result;
   nlohmann::json truth;
+  std::optional<WindGusts> gusts;
   if (!o.maneuver.empty()) {
     // Multi-rate sensors need an output grid at least as fast as the fastest sensor.
     for (const auto& [_, hz] : ParseRateItems(o.rates)) run.rate_hz = std::max(run.rate_hz, hz);
@@ -123,9 +130,10 @@ void RunSimulate(const SimulateOptions& o) {
     if (!o.wind.empty())
       maneuver = UnderTrueWind(std::move(maneuver), act, ParseWind(o.wind, o.seed), o.seed);
     if (!o.gusts.empty()) {
-      const WindGusts gusts = MakeWindGusts(info, o.gusts, o.seed, "--gusts '" + o.gusts + "'");
-      run.disturbance = GustDisturbance(gusts, o.seed);
-      truth["gusts"] = WindGustsToJson(gusts);
+      gusts = MakeWindGusts(info, o.gusts, o.seed, "--gusts '" + o.gusts + "'");
+      run.disturbance = GustDisturbance(*gusts, o.seed);
+      truth["gusts"] = WindGustsToJson(*gusts);
+      truth["gusts"]["measured"] = std::ranges::find(o.logged, "wind") != o.logged.end();
     }
     std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "
               << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
@@ -147,6 +155,9 @@ void RunSimulate(const SimulateOptions& o) {
   Dataset& data = result.data;
   std::vector<std::string> measured = info.states;
   measured.insert(measured.end(), info.derived.begin(), info.derived.end());
+  for (std::string& c : LogDisturbances(data, o.logged, gusts ? &*gusts : nullptr, o.seed, values))
+    measured.push_back(std::move(c));
+  if (!o.logged.empty()) truth["logged"] = o.logged;
   const SensorLog logged = LogAsSensors(data, measured, {o.waves, o.noise, o.rates, o.dropouts},
                                         WaveHullLength(info.length_m), o.seed);
   if (logged.sea) truth["waves"] = WaveSeaToJson(*logged.sea, logged.hull_length_m);
@@ -227,6 +238,11 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--dropouts", o->dropouts,
                   "Sensor dropouts: NAME=FRACTION of the time lost in gaps of 2 s mean, e.g. "
                   "gps=0.05 (groups imu, gps, jet, or a channel)")
+      ->delimiter(',');
+  cmd->add_option("--logged", o->logged,
+                  "Disturbances the record logs for the methods to read: wind (wind_speed, "
+                  "wind_direction aboard, from --gusts), current (current_u, current_v in body "
+                  "axes, from --effect current)")
       ->delimiter(',');
   cmd->add_option("--params", o->params,
                   "JSON of parameter overrides (name: value), or a truth/model file's "

@@ -201,6 +201,7 @@ Method GpMethod() {
   m.options = GpOptionSpecs();
   m.identify = IdentifyGpModel;
   m.channel_inputs = true;
+  m.any_inputs = true;
   m.seeded = true;
   m.label_option = "operators";
   m.relative_cost = 30.0;  // the search, the selection's simulations and the weights' refit

@@ -37,6 +37,7 @@ Method LtiMethod() {
   };
   m.identify = IdentifyLtiModel;
   m.channel_inputs = true;
+  m.any_inputs = true;
   return m;
 }
 

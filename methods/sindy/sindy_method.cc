@@ -172,6 +172,7 @@ Method SindyMethod() {
   m.options = SindyOptionSpecs();
   m.identify = IdentifySindyModel;
   m.channel_inputs = true;
+  m.any_inputs = true;
   return m;
 }
 

@@ -165,6 +165,42 @@ TEST_F(CompareCliTest, RowsCarryClosedLoopCriteriaAndHorizons) {
   EXPECT_EQ(std::system(check.c_str()), 0) << "results.csv: rows differ in width from the header";
 }
 
+// A suite whose records log the wind and the current (the measured track,
+// docs/compare.md#realistic-measured): a method whose equations take any input reads them beside
+// the vessel's commands; a vessel model keeps its own inputs.
+TEST_F(CompareCliTest, LoggedDisturbancesAreTheEquationMethodsInputs) {
+  const auto suite = (dir_ / "logged.json").string();
+  WriteText(suite, nlohmann::json{{"name", "logged"},
+                                  {"vessels", {"odin3dof"}},
+                                  {"train_maneuvers", {"random-steps"}},
+                                  {"test_maneuvers", {"random-steps"}},
+                                  {"methods", {"lti", "nominal"}},
+                                  {"effects", {"current=0.3"}},
+                                  {"gusts", "8"},
+                                  {"logged", {"wind", "current"}},
+                                  {"noise", {0.005}},
+                                  {"seeds", {1}},
+                                  {"train_seconds", 60},
+                                  {"test_seconds", 30}}
+                       .dump());
+  const auto out = dir_ / "logged";
+  const auto r = RunUsvid("compare --suite " + suite + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json results = ReadJsonFile((out / "results.json").string());
+  int seen = 0;
+  for (const auto& row : results.at("rows")) {
+    ASSERT_EQ(row.at("status"), "ok") << row.dump();
+    const std::string inputs = row.at("inputs");
+    if (row.at("method") == "lti") {
+      EXPECT_EQ(inputs, "tau_x,tau_y,tau_n,wind_speed,wind_u,wind_v,current_u,current_v");
+      ++seen;
+    } else {
+      EXPECT_EQ(inputs.find("wind"), std::string::npos) << inputs;
+    }
+  }
+  EXPECT_EQ(seen, 1);
+  EXPECT_EQ(results.at("suite").at("logged"), nlohmann::json({"wind", "current"}));
+}
 // A suite naming an unknown maneuver is refused before any fit (exit 2), and writes nothing.
 TEST_F(CompareCliTest, AnUnknownManeuverIsRefusedBeforeAnyFit) {
   const std::string suite = (dir_ / "typo.json").string();

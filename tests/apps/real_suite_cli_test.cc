@@ -20,8 +20,10 @@ TEST(RealSuiteCliTest, AnUnknownSuiteNameIsRefusedNamingTheEmbeddedOnes) {
   const fs::path dir = FreshTempDir();
   const auto r = RunUsvid("compare --suite realistc --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_THAT(r.err,
-              HasSubstr("'realistc' is no embedded suite (default, quick, realistic, real)"));
+  EXPECT_THAT(
+      r.err,
+      HasSubstr(
+          "'realistc' is no embedded suite (default, quick, realistic, real, realistic-measured)"));
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 

@@ -51,6 +51,30 @@ TEST_F(SimulateCliTest, ZigZagWritesDataAndTruth) {
   EXPECT_EQ(ReadTextFile(out), ReadTextFile(out2));
 }
 
+// --logged: the record carries the wind aboard and the current in body axes, the truth file says
+// which and marks the gusts measured; a disturbance the run does not make is exit 2, no file.
+TEST_F(SimulateCliTest, LoggedDisturbancesAreChannels) {
+  const auto dir = FreshTempDir();
+  const auto out = (dir / "lg.csv").string();
+  const auto r = RunUsvid(
+      "simulate --vessel odin-hs --maneuver random-steps --duration 30 --effect current=0.3 "
+      "--gusts 8 --logged wind,current --out " +
+      out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Dataset d = ReadDatasetCsv(out);
+  for (const char* c : {"wind_speed", "wind_direction", "current_u", "current_v"})
+    EXPECT_TRUE(d.Has(c)) << c;
+  const nlohmann::json truth = ReadJsonFile((dir / "lg.truth.json").string());
+  EXPECT_EQ(truth.at("logged"), nlohmann::json({"wind", "current"}));
+  EXPECT_EQ(truth.at("gusts").at("measured"), true);
+  const auto bad = (dir / "bad.csv").string();
+  const auto refused =
+      RunUsvid("simulate --vessel odin-hs --maneuver random-steps --logged current --out " + bad);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_THAT(refused.err, HasSubstr("--logged: 'current' logs the current, and no current"));
+  EXPECT_FALSE(fs::exists(bad));
+}
+
 // Multi-rate sensors: GPS channels at 5 Hz are empty on the rows between their samples.
 TEST_F(SimulateCliTest, MultiRateSensorsLeaveEmptyCells) {
   const auto dir = FreshTempDir();

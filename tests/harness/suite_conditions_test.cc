@@ -42,6 +42,9 @@ TEST(SuiteConditionsTest, AreReadCheckedOnEveryVesselAndEchoed) {
   const nlohmann::json sea = SuiteToJson(ParseSuite(j, "s.json"));
   EXPECT_EQ(sea["waves"], "0.5:4");
   EXPECT_EQ(sea["dropouts"], j["dropouts"]);
+  j["gusts"] = "8";
+  j["logged"] = {"current", "wind"};
+  EXPECT_EQ(SuiteToJson(ParseSuite(j, "s.json"))["logged"], j["logged"]);
   // Without them the echo is what it was before they existed (resumed runs match).
   EXPECT_FALSE(SuiteToJson(ParseSuite(Base(), "s.json")).contains("effects"));
 
@@ -59,6 +62,9 @@ TEST(SuiteConditionsTest, AreReadCheckedOnEveryVesselAndEchoed) {
       {{{"dropouts", {"sonar=0.1"}}}, "s.json: sensors: odin3dof: --dropouts 'sonar'"},
       {{{"vessels", {"msd"}}, {"test_maneuvers", {"random-steps"}}, {"waves", "1"}},
        "s.json: sensors: msd: --waves: the record has no"},
+      {{{"logged", {"wind"}}}, "s.json: logged: 'wind' logs the gusty wind, and no gusts"},
+      {{{"logged", {"current"}}, {"gusts", "8"}}, "s.json: logged: 'current' logs the current"},
+      {{{"logged", {"tide"}}}, "s.json: logged: 'tide' is no disturbance"},
   };
   for (const auto& [extra, message] : bad) {
     nlohmann::json b = Base();
@@ -133,6 +139,44 @@ TEST(SuiteConditionsTest, TheRealisticSuiteHasTheSeaAndTheSensorsOfATrial) {
   EXPECT_EQ(s.conditions.waves, "0.3");
   EXPECT_EQ(s.conditions.gusts, "8");
   EXPECT_EQ(s.noise.size() * s.seeds.size(), 12u);
+}
+
+// The measured track (docs/compare.md#realistic-measured) is the realistic suite with the wind and
+// the current logged, and nothing else changed: its records are the same runs with more
+// channels, so the two tracks' cells pair.
+TEST(SuiteConditionsTest, TheMeasuredTrackIsTheRealisticSuiteWithTheWindAndTheCurrentLogged) {
+  nlohmann::json measured = SuiteToJson(RealisticSuite(true));
+  nlohmann::json unmeasured = SuiteToJson(RealisticSuite());
+  EXPECT_EQ(measured["name"], "realistic-measured");
+  EXPECT_EQ(measured["logged"], nlohmann::json({"wind", "current"}));
+  for (nlohmann::json* j : {&measured, &unmeasured}) {
+    j->erase("name");
+    j->erase("logged");
+  }
+  EXPECT_EQ(measured, unmeasured);
+}
+
+TEST(SuiteConditionsTest, LoggingTheDisturbancesAddsChannelsAndChangesNoMotion) {
+  SuiteConditions hidden;
+  hidden.effects = {"current=0.4:30"};
+  hidden.gusts = "10";
+  SuiteConditions logged = hidden;
+  logged.logged = {"wind", "current"};
+  const Dataset a = SimulateForSuite("odin-hs", "random-steps", 60, 0.0, 4, hidden);
+  const Dataset b = SimulateForSuite("odin-hs", "random-steps", 60, 0.0, 4, logged);
+  EXPECT_FALSE(a.Has("wind_speed"));
+  for (const char* c : {"wind_speed", "wind_direction", "current_u", "current_v"})
+    EXPECT_TRUE(b.Has(c)) << c;
+  EXPECT_EQ(a["u"], b["u"]);
+  EXPECT_EQ(a["psi"], b["psi"]);
+  // A 0.4 m/s current, seen in body axes, keeps its speed.
+  const Eigen::ArrayXd speed =
+      (b["current_u"].array().square() + b["current_v"].array().square()).sqrt();
+  EXPECT_NEAR(speed.minCoeff(), 0.4, 1e-9);
+  EXPECT_NEAR(speed.maxCoeff(), 0.4, 1e-9);
+  // The anemometer reads the 10 m/s wind with the hull's own motion: moving at several m/s,
+  // its reading departs from 10 m/s by metres per second somewhere in the run.
+  EXPECT_GT((b["wind_speed"].array() - 10.0).abs().maxCoeff(), 1.0);
 }
 
 }  // namespace

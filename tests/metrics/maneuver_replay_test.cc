@@ -62,6 +62,32 @@ TEST(ManeuverReplayTest, TheModelReversesOnItsOwnHeading) {
   EXPECT_GT(score.at("second_execute_error_s").get<double>(), 0.5) << score.dump();
 }
 
+// A measured track's model reads a disturbance the record logs (the wind, the current): the
+// replay feeds it as recorded, in time. A yaw disturbance logged from 30 s on turns the replayed
+// hull from then on, and not before.
+TEST(ManeuverReplayTest, ALoggedDisturbanceFollowsTheRecordInTime) {
+  Dataset calm = Record("odin3dof", "zigzag:20/20", 60.0);
+  Dataset pushed = calm;
+  const Eigen::VectorXd t = calm.t();
+  calm.Set("current_v", Eigen::VectorXd::Zero(t.size()));
+  pushed.Set("current_v", (t.array() >= 30.0).cast<double>().matrix() * 0.02);
+  const nlohmann::json model = {
+      {"equations", {{"u", "0 * u"}, {"v", "-v"}, {"r", "0.000005 * tau_n - r + current_v"}}},
+      {"inputs", {"tau_x", "tau_y", "tau_n", "current_v"}}};
+  const ClosedLoopReplay a = ReplayManeuver(model, "odin3dof", "zigzag:20/20", calm);
+  const ClosedLoopReplay b = ReplayManeuver(model, "odin3dof", "zigzag:20/20", pushed);
+  ASSERT_FALSE(a.diverged);
+  ASSERT_FALSE(b.diverged);
+  const Eigen::Index n = std::min(a.run.rows(), b.run.rows());
+  double before = 0.0, after = 0.0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const double d = std::abs(b.run["r"](k) - a.run["r"](k));
+    (a.run.t()(k) < 29.9 ? before : after) = std::max(a.run.t()(k) < 29.9 ? before : after, d);
+  }
+  EXPECT_EQ(before, 0.0);
+  EXPECT_GT(after, 0.005);
+}
+
 // Waterjet models read the jets' states: the replay drives them through actuator dynamics
 // identified on the record (its nozzle moves; its throttle is held, so the rpm is held too).
 TEST(ManeuverReplayTest, AJetStateModelRunsThroughIdentifiedActuators) {
@@ -86,10 +112,9 @@ TEST(ManeuverReplayTest, WhatCannotBeReplayedSaysSo) {
                   .at("status")
                   .get<std::string>()
                   .starts_with("not replayable: recorded inputs only"));
+  // An input that is no command and that the test record does not log.
   const nlohmann::json foreign = {{"equations", {{"u", "-u"}, {"v", "-v"}, {"r", "wind - r"}}}};
-  Dataset with_wind = record;
-  with_wind.Set("wind", Eigen::VectorXd::Zero(record.rows()));
-  const nlohmann::json score = ClosedLoopScore(foreign, "odin3dof", "zigzag:20/20", with_wind);
+  const nlohmann::json score = ClosedLoopScore(foreign, "odin3dof", "zigzag:20/20", record);
   EXPECT_NE(score.at("status").get<std::string>().find("input 'wind' is neither a command"),
             std::string::npos)
       << score.dump();
