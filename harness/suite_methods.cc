@@ -18,6 +18,7 @@ nlohmann::json DiagnosedModel(const Dataset& train, const IdentifyRequest& reque
   if (request.vessel.empty()) throw InputError("diagnose: needs a vessel");
   diagnosis::DiagnoseOptions options;
   options.split.segment_s = o.Number("segment_s");
+  options.split.max_fit_rows = o.Integer("fit_rows");
   options.max_causes = static_cast<int>(o.Integer("causes"));
   options.discover = false;  // proposals are for a person to read, not part of the model
   const diagnosis::Diagnosis d = diagnosis::Diagnose(
@@ -36,6 +37,9 @@ Method DiagnoseSuiteMethod() {
       IntegerOption("causes", d.max_causes, 0, 100, "most causes added to the nominal vessel"),
       NumberOption("segment_s", d.split.segment_s, 0, kUnbounded,
                    "shooting segment length [s]; 0: 1.5 hull lengths of travel, at least 10 s"),
+      IntegerOption("fit_rows", d.split.max_fit_rows, 0, kUnbounded,
+                    "most rows each candidate effect is fitted on (the training part's last) and "
+                    "scored on (the held-out part's first); 0: every row"),
   };
   m.identify = DiagnosedModel;
   m.named_channels = false;  // the vessel's channels, the record as it is
