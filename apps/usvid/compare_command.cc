@@ -156,8 +156,9 @@ void AddCompareCommand(CLI::App& app) {
       "compare", "The benchmark: methods x maneuvers x vessels x noise x seeds, held-out scores");
   cmd->add_option("--suite", o->suite,
                   "A suite JSON file, or an embedded suite: default (the default), quick, "
-                  "realistic (the sea and sensors of a real trial), or real (the measured data "
-                  "of --data-dir)");
+                  "realistic (the sea and sensors of a real trial), realistic-measured (the same "
+                  "with the wind and the current logged), or real (the measured data of "
+                  "--data-dir)");
   cmd->add_option("--data-dir", o->data_dir,
                   "The measured data of --suite real (default ../shared/data); absent, the suite "
                   "is skipped");
