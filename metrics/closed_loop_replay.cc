@@ -232,7 +232,8 @@ InputSources ResolveInputs(const EquationModel& system, const VesselInfo& info, 
         ActuatorIndex(s, act, recorded, in.actuators);
       in.sources.push_back(
           {SourceKind::kForce, static_cast<int>(f - kWaterjetForceChannels.begin())});
-    } else if (info.StateIndex(name) < 0 && recorded.Has(name) &&
+    } else if (info.StateIndex(name) < 0 &&
+               std::ranges::find(info.derived, name) == info.derived.end() && recorded.Has(name) &&
                recorded.Get(name).SampleCount() > 0) {
       // A disturbance the record logs (the wind, the current: a measured track's inputs)
       // follows the record in time, zero-order hold, as a vessel's measured inputs do
