@@ -72,6 +72,12 @@ int main(int argc, char** argv) {
   // threshold after the first large block is freed, and a long log's freed columns and Jacobians
   // then stay in the heap: diagnose on a 2-hour log peaked at 272 MB of RSS, 220 MB with this.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  // And up to 16 MiB of free memory at the heap's top stays with the process. Fixing the mmap
+  // threshold also fixes this at 128 KiB, and a Ceres fit whose residual blocks allocate and free
+  // Jets by the megabyte then gave pages back and faulted them in anew at every evaluation:
+  // fossen-ceres on odin-hs (Jets of 66) spent 1.1 of its 7.1 s in the kernel, 0.06 s with this
+  // (docs/performance.md).
+  mallopt(M_TRIM_THRESHOLD, 16 << 20);
   // Ceres logs a solve that cannot start (a candidate model whose first evaluation is not
   // finite, which GP's refits meet and discard) at glog's ERROR level, whatever the solver's
   // logging_type. usvid reports a failed fit itself, on one line: glog prints only fatal errors.
