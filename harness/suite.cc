@@ -243,9 +243,7 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
   } catch (const InputError& e) {
     throw InputError(file + ": effects: " + e.what());
   }
-  const bool current =
-      std::ranges::any_of(effects, [](const Effect& e) { return e.kind == EffectKind::kCurrent; });
-  CheckLoggedDisturbances(s.conditions.logged, !s.conditions.gusts.empty(), current,
+  CheckLoggedDisturbances(s.conditions.logged, !s.conditions.gusts.empty(), effects,
                           file + ": logged");
   try {
     dropouts = ParseDropouts(s.conditions.dropouts);

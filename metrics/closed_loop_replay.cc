@@ -37,6 +37,14 @@ double SampledMedian(const Eigen::VectorXd& v) {
   return x.empty() ? 0.0 : Median(std::move(x));
 }
 
+// A recorded channel's samples as a zero-order-hold track in the record's time.
+InputTrack RecordedTrack(const Dataset& recorded, const std::string& name) {
+  InputTrack track(1);
+  recorded.Get(name).ForEachSample(
+      [&](Eigen::Index k, double v) { track.Append(recorded.t()(k), std::span(&v, 1)); });
+  return track;
+}
+
 // The maneuver, with every command but the yaw held at the record's first value: the record's
 // approach (its thrust, its bucket), which a vessel's default cruise need not be. A measured
 // disturbance (the wind) follows the record in time instead, zero-order hold.
@@ -46,14 +54,11 @@ class RecordedApproach : public Maneuver {
       : inner_(std::move(inner)), held_(act.inputs(), NAN), followed_(act.inputs(), InputTrack(1)) {
     for (int i = 0; i < act.inputs(); ++i) {
       if (i == act.yaw_input || !recorded.Has(act.input_names[i])) continue;
-      const Channel& c = recorded.Get(act.input_names[i]);
       if (act.roles[i] != InputRole::kMeasured) {
         held_[i] = recorded[act.input_names[i]](0);
         continue;
       }
-      c.ForEachSample([&](Eigen::Index k, double v) {
-        followed_[i].Append(recorded.t()(k), std::span(&v, 1));
-      });
+      followed_[i] = RecordedTrack(recorded, act.input_names[i]);
     }
   }
   std::string Spec() const override { return inner_->Spec(); }
@@ -238,10 +243,7 @@ InputSources ResolveInputs(const EquationModel& system, const VesselInfo& info, 
       // A disturbance the record logs (the wind, the current: a measured track's inputs)
       // follows the record in time, zero-order hold, as a vessel's measured inputs do
       // (RecordedApproach).
-      InputTrack track(1);
-      recorded.Get(name).ForEachSample(
-          [&](Eigen::Index k, double v) { track.Append(recorded.t()(k), std::span(&v, 1)); });
-      in.recorded.push_back(std::move(track));
+      in.recorded.push_back(RecordedTrack(recorded, name));
       in.sources.push_back({SourceKind::kRecorded, static_cast<int>(in.recorded.size() - 1)});
     } else {
       throw InputError("input '" + name + "' is neither a command of " + info.name +

@@ -23,7 +23,9 @@ std::vector<std::string> LoggedInputChannels(const std::vector<std::string>& dis
 }
 
 void CheckLoggedDisturbances(const std::vector<std::string>& disturbances, bool has_gusts,
-                             bool has_current, const std::string& where) {
+                             const std::vector<Effect>& effects, const std::string& where) {
+  const bool has_current =
+      std::ranges::any_of(effects, [](const Effect& e) { return e.kind == EffectKind::kCurrent; });
   const std::vector<std::string>& known = LoggableDisturbances();
   for (const std::string& d : disturbances) {
     if (std::ranges::find(known, d) == known.end())

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/dataset.h"
+#include "effects/effect.h"
 #include "effects/effect_values.h"
 #include "simulation/wind_gusts.h"
 
@@ -33,9 +34,9 @@ const std::vector<std::string>& LoggableDisturbances();
 std::vector<std::string> LoggedInputChannels(const std::vector<std::string>& disturbances);
 
 // Checks `disturbances` against the conditions that make them: "wind" needs gusts, "current" a
-// current effect. InputError naming `where` and the item.
+// current among `effects`. InputError naming `where` and the item.
 void CheckLoggedDisturbances(const std::vector<std::string>& disturbances, bool has_gusts,
-                             bool has_current, const std::string& where);
+                             const std::vector<Effect>& effects, const std::string& where);
 
 // Adds the logged disturbances' channels to `data`, a vessel's true record (psi, u, v) made under
 // `gusts` (null: none) seeded with `seed`, and `effects`, and returns their names. InputError if

@@ -99,10 +99,7 @@ void RunSimulate(const SimulateOptions& o) {
       throw InputError("--effect wind: vessel " + info.name +
                        " has no wind model (a vessel file with a wind section has)");
   const EffectValues<double> values = ValuesOf(effects, info.inputs, info.states);
-  CheckLoggedDisturbances(
-      o.logged, !o.gusts.empty(),
-      std::ranges::any_of(effects, [](const Effect& e) { return e.kind == EffectKind::kCurrent; }),
-      "--logged");
+  CheckLoggedDisturbances(o.logged, !o.gusts.empty(), effects, "--logged");
   std::vector<double> params = info.default_params;
   if (!o.params.empty()) params = info.ParamsFromFile(o.params);
   RunOptions run;

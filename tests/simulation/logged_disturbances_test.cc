@@ -79,20 +79,21 @@ TEST(LoggedDisturbancesTest, TheLoggedWindCarriesTheGusts) {
 }
 
 TEST(LoggedDisturbancesTest, OnlyWhatTheConditionsMakeCanBeLogged) {
-  EXPECT_NO_THROW(CheckLoggedDisturbances({"wind", "current"}, true, true, "s.json: logged"));
+  const std::vector<Effect> current = ParseEffects({"current=0.3"}, 1);
+  EXPECT_NO_THROW(CheckLoggedDisturbances({"wind", "current"}, true, current, "s.json: logged"));
   const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
       {{"waves"}, "s.json: logged: 'waves' is no disturbance a record can log (wind, current)"},
       {{"wind"}, "'wind' logs the gusty wind, and no gusts are set"},
       {{"current", "current"}, "'current' is named twice"}};
   for (const auto& [items, message] : bad) {
     try {
-      CheckLoggedDisturbances(items, false, true, "s.json: logged");
+      CheckLoggedDisturbances(items, false, current, "s.json: logged");
       ADD_FAILURE() << message;
     } catch (const InputError& e) {
       EXPECT_THAT(e.what(), HasSubstr(message));
     }
   }
-  EXPECT_THROW(CheckLoggedDisturbances({"current"}, true, false, "x"), InputError);
+  EXPECT_THROW(CheckLoggedDisturbances({"current"}, true, {}, "x"), InputError);
   Dataset no_heading(Eigen::Vector3d(0.0, 1.0, 2.0));
   no_heading.Set("u", Eigen::Vector3d::Zero());
   EXPECT_THROW(LogDisturbances(no_heading, {"current"}, nullptr, 1, {}), InputError);
