@@ -6,6 +6,7 @@
 #include "maneuvers/maneuver_factory.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/gp/variation.h"
+#include "preprocessing/waterjet_forces.h"
 #include "sensors/noise.h"
 #include "simulation/open_loop.h"
 #include "simulation/vessel_simulator.h"
@@ -44,6 +45,21 @@ const PreparedData& OdinPrepared(long rows) {
 const PreparedData& OdinHsPrepared() {
   static const PreparedData prepared =
       Preprocess(Simulate("odin-hs", 900.0), {"u", "v", "r"}, {"throttle", "nozzle", "bucket"}, {});
+  return prepared;
+}
+
+const PreparedData& JetForcesPrepared() {
+  static const PreparedData prepared = [] {
+    Dataset d = Simulate("odin-hs", 300.0);
+    AddForces(d, "waterjet");
+    PreprocessOptions pre;
+    pre.rate_hz = 10.0;
+    pre.step_breaks = false;  // as identify does on forces
+    return Preprocess(
+        d, {"u", "v", "r"},
+        std::vector<std::string>(kWaterjetForceChannels.begin(), kWaterjetForceChannels.end()),
+        pre);
+  }();
   return prepared;
 }
 

@@ -16,6 +16,9 @@ namespace usvid::bench {
 const PreparedData& OdinPrepared(long rows = 18000);
 // odin-hs random steps at 20 Hz (18k rows), preprocessed for u, v, r with its waterjet inputs.
 const PreparedData& OdinHsPrepared();
+// odin-hs random steps, 300 s, on the jets' forces (`--forces waterjet`) at 10 Hz: what the
+// default compare's fossen-ceres fits on odin-hs (JetForceModel's 60 parameters).
+const PreparedData& JetForcesPrepared();
 // The same waterjet commands driving fossen-ceres' own waterjet model (its 13 parameters at
 // `WaterjetTruth()`), 0.5 % noise, preprocessed: data a 12-parameter fit can match.
 const PreparedData& WaterjetModelPrepared();

@@ -5,7 +5,10 @@
 //    segment) from the equation-error start;
 //  - the 12-parameter multiple-shooting fit (the waterjet model's 13 with m11 held) on 18k
 //    samples (goal: under 1 s): on data of that model (its error then is the noise), and on
-//    odin-hs, which it cannot match (Ceres runs to its 100-iteration cap: the cost of a misfit).
+//    odin-hs, which it cannot match (Ceres runs to its 100-iteration cap: the cost of a misfit);
+//  - the shooting fit the default compare runs on odin-hs: JetForceModel's 60 parameters on the
+//    jets' forces, 300 s of random steps at 10 Hz (its derivatives taken over a window of its
+//    resistance knots, methods/fossen_ceres/knot_window_cost.h).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -14,6 +17,7 @@
 #include "bench/fixtures.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
+#include "methods/fossen_ceres/jet_force_model.h"
 
 namespace usvid {
 namespace {
@@ -65,6 +69,16 @@ BENCHMARK_CAPTURE(BM_Fossen12ParameterShooting, own_model, &bench::WaterjetModel
 BENCHMARK_CAPTURE(BM_Fossen12ParameterShooting, odin_hs_misfit, &OdinHsPrepared)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
+
+void BM_FossenJetForceShooting(benchmark::State& state) {
+  const PreparedData& data = bench::JetForcesPrepared();
+  const auto start = fossen::FitEquationErrorFor<fossen::JetForceModel>(data, {}).params;
+  fossen::BasicFossenFit<fossen::JetForceModel::kParams> fit;
+  for (auto _ : state) fit = fossen::FitSimulationErrorFor<fossen::JetForceModel>(data, start, {});
+  state.counters["samples"] = static_cast<double>(data.data.rows());
+  state.counters["iterations"] = fit.iterations;
+}
+BENCHMARK(BM_FossenJetForceShooting)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace usvid

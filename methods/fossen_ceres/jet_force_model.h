@@ -100,11 +100,21 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
   // knot's value above it. Only the two hats around U are non-zero, so only they are evaluated.
   template <typename T>
   static T Resistance(const T* p, const T& speed) {
-    const double x = ValueOf(speed) / kKnotSpacing;
-    if (!(x < kKnots - 1)) return p[kFirstKnot + kKnots - 1];
-    const int j = std::clamp(static_cast<int>(std::floor(x)), 0, kKnots - 2);
+    const int j = KnotAt(ValueOf(speed));
+    if (j == kKnots - 1) return p[kFirstKnot + j];
     const T w = speed / kKnotSpacing - double(j);
     return p[kFirstKnot + j] * (1.0 - w) + p[kFirstKnot + j + 1] * w;
+  }
+
+  // The first of the two knots c(U) reads at a speed (the last knot, alone, at and above it).
+  static int KnotAt(double speed) {
+    const double x = speed / kKnotSpacing;
+    if (!(x < kKnots - 1)) return kKnots - 1;
+    return std::clamp(static_cast<int>(std::floor(x)), 0, kKnots - 2);
+  }
+  // ... at the hull's velocity (u, v), as Hull computes its speed.
+  static int KnotAt(double u, double v) {
+    return KnotAt(std::sqrt(u * u + v * v + kSpeedEps * kSpeedEps));
   }
 
   // The forces are measured: tau_i = in[i].

@@ -16,6 +16,7 @@
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/fossen_ceres/fossen_models.h"
 #include "methods/fossen_ceres/jet_force_model.h"
+#include "methods/fossen_ceres/knot_window_cost.h"
 #include "methods/parameter_sd.h"
 #include "simulation/input_track.h"
 #include "simulation/open_loop.h"
@@ -126,11 +127,12 @@ struct SegmentResidual {
 
   int Residuals() const { return static_cast<int>((times.size() - 1) * 3 + 3); }
 
+  // The segment simulated from x0 (u, v, r) with parameters theta: the plant's states at each
+  // row into `out` (times.size() rows of Plant<Model>::kStates), and the rows simulated.
   template <typename T>
-  bool operator()(const T* theta, const T* x0, const T* next, T* res) const {
+  size_t Rollout(const T* theta, const T* x0, std::vector<T>& out) const {
     constexpr int N = Plant<Model>::kStates;
     const std::array<T, Model::kParams> pa = Unscale<Model::kParams>(theta, param_scale);
-    const T* p = pa.data();
     std::array<T, N> start;
     start.fill(T(0));
     start[3] = x0[0];
@@ -142,11 +144,18 @@ struct SegmentResidual {
     setup.inputs = track;
     setup.times = times;
     setup.max_step = times.size() > 1 ? (times[1] - times[0]) * 1.0000001 : 1.0;
-    std::vector<T> out(times.size() * N);
+    out.assign(times.size() * N, T(0));
     std::array<double, Model::kInputs> limits;
     limits.fill(INFINITY);
-    const size_t rows =
-        RolloutOpenLoop<Model, T, Steppers::kRk4Only>(setup, start.data(), p, EffectValues<T>{}, limits, out.data());
+    return RolloutOpenLoop<Model, T, Steppers::kRk4Only>(setup, start.data(), pa.data(),
+                                                         EffectValues<T>{}, limits, out.data());
+  }
+
+  template <typename T>
+  bool operator()(const T* theta, const T* x0, const T* next, T* res) const {
+    constexpr int N = Plant<Model>::kStates;
+    std::vector<T> out;
+    const size_t rows = Rollout(theta, x0, out);
     int k = 0;
     for (size_t row = 1; row < times.size(); ++row)
       for (int c = 0; c < 3; ++c) {
@@ -382,9 +391,15 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
     seg->param_scale = param_scale;
     rows += static_cast<long>(seg->times.size()) - 1;
     const int residuals = seg->Residuals();
-    auto* cost =
-        new ceres::AutoDiffCostFunction<SegmentResidual<Model>, ceres::DYNAMIC, kParams, 3, 3>(
-            seg, residuals);
+    // A model with resistance knots: derivatives over the knots the segment reads (a third of
+    // the fit's time on odin-hs, the same Jacobian).
+    ceres::CostFunction* cost;
+    if constexpr (requires { Model::KnotAt(0.0, 0.0); })
+      cost = new KnotWindowCost<Model, SegmentResidual<Model>>(
+          std::unique_ptr<const SegmentResidual<Model>>(seg), residuals);
+    else
+      cost = new ceres::AutoDiffCostFunction<SegmentResidual<Model>, ceres::DYNAMIC, kParams, 3, 3>(
+          seg, residuals);
     problem.AddResidualBlock(cost, loss, p.data(), x0[j].data(), x0[j + 1].data());
     // The end of the record, or a start that is not fitted: no residual of its own.
     if (!fitted[j + 1]) problem.SetParameterBlockConstant(x0[j + 1].data());
