@@ -112,9 +112,23 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
     if (!(x < kKnots - 1)) return kKnots - 1;
     return std::clamp(static_cast<int>(std::floor(x)), 0, kKnots - 2);
   }
-  // ... at the hull's velocity (u, v), as Hull computes its speed.
+  // ... at the hull's velocity through the water (u, v), as Hull computes its speed.
   static int KnotAt(double u, double v) {
     return KnotAt(std::sqrt(u * u + v * v + kSpeedEps * kSpeedEps));
+  }
+  // ... in the state x, as Derivative computes the hull's velocity.
+  static int KnotAt(const double* x, const Environment<double>& env) {
+    const double c = std::cos(x[2]), s = std::sin(x[2]);
+    const auto [ur, vr] = Relative(x, c, s, env);
+    return KnotAt(ur, vr);
+  }
+
+  // The velocity the hull sees in a constant current (Fossen 2011, section 10.3); c, s the
+  // cosine and sine of the heading.
+  template <typename T>
+  static std::array<T, 2> Relative(const T* x, const T& c, const T& s, const Environment<T>& env) {
+    return {x[3] - (c * env.current_north + s * env.current_east),
+            x[4] - (-s * env.current_north + c * env.current_east)};
   }
 
   // The forces are measured: tau_i = in[i].
@@ -141,9 +155,7 @@ struct JetForceModel : FossenModelBase<JetForceModel> {
     using std::cos;
     using std::sin;
     const T c = cos(x[2]), s = sin(x[2]);
-    // A constant current: the hull sees the relative velocity (Fossen 2011, section 10.3).
-    const T ur = x[3] - (c * env.current_north + s * env.current_east);
-    const T vr = x[4] - (-s * env.current_north + c * env.current_east);
+    const auto [ur, vr] = Relative(x, c, s, env);
     T tau[3], h[3];
     Forces(p, in, tau);
     Hull(p, ur, vr, x[5], in, h);

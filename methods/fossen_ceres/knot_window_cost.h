@@ -5,7 +5,7 @@
 // 66 for this model (60 parameters and the segment's 6 states), although all but the knots
 // around the segment's speeds have a derivative of exactly 0.
 //
-// This cost simulates the segment once in doubles to find the knots it reads, then
+// This cost simulates the segment once in doubles, recording the knots each RK4 stage reads, then
 // differentiates with Jets over the other parameters, the states and a window of kWindow knots
 // (35 derivatives): once for a segment whose speeds span at most kWindow knots, again for each
 // further window when they span more. The knots outside the windows are constants of the Jet
@@ -14,7 +14,7 @@
 // component by component, whatever the Jet's width (KnotWindowCostTest).
 //
 // The Model declares kFirstKnot and kKnots (the knots last: kParams == kFirstKnot + kKnots) and
-// KnotAt(u, v), the first of the two knots it reads at a velocity.
+// KnotAt(x, env), the first of the two knots its Derivative reads in the state x.
 #pragma once
 
 #include <ceres/ceres.h>
@@ -23,9 +23,31 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
+#include "simulators/vessel.h"
+
 namespace usvid::fossen {
+
+// The Model, recording the knots each call of its Derivative reads (on this thread).
+template <typename Model>
+struct KnotRecording : Model {
+  static std::pair<int, int>& Read() {
+    thread_local std::pair<int, int> read;  // the first and the last knot read
+    return read;
+  }
+  template <typename T>
+  requires std::is_same_v<T, double>
+  static void Derivative(const T* x, const T* in, const T* p, const Environment<T>& env, T* dx) {
+    const int k = Model::KnotAt(x, env);
+    std::pair<int, int>& read = Read();
+    read.first = std::min(read.first, k);
+    read.second = std::max(read.second, std::min(k + 1, Model::kKnots - 1));
+    Model::Derivative(x, in, p, env, dx);
+  }
+};
 
 template <typename Model, typename Segment, int kWindow = 10>
 class KnotWindowCost final : public ceres::CostFunction {
@@ -91,20 +113,14 @@ class KnotWindowCost final : public ceres::CostFunction {
   }
 
  private:
-  // The knots the segment reads at theta: those at the speeds of its rows, and a knot either side
-  // for the speeds between rows (RK4's stages) and for rounding.
+  // The knots the segment reads at theta: from its simulation in doubles, every RK4 stage's
+  // (the same trajectory as the Jets' values, operation for operation).
   std::pair<int, int> KnotsRead(const double* theta, const double* x0) const {
+    std::pair<int, int>& read = KnotRecording<Model>::Read();
+    read = {Model::kKnots - 1, 0};
     std::vector<double> out;
-    const size_t rows = segment_->Rollout(theta, x0, out);
-    const size_t n = out.size() / std::max<size_t>(1, segment_->times.size());
-    int lo = Model::kKnots - 1, hi = 0;
-    for (size_t row = 0; row < rows; ++row) {
-      const double u = out[row * n + 3], v = out[row * n + 4];
-      const int k = Model::KnotAt(u, v);
-      lo = std::min(lo, k);
-      hi = std::max(hi, k + 1);
-    }
-    return {std::max(0, lo - 1), std::min(Model::kKnots - 1, std::max(lo, hi) + 1)};
+    segment_->template Rollout<double, KnotRecording<Model>>(theta, x0, out);
+    return {std::min(read.first, read.second), read.second};
   }
 
   std::unique_ptr<const Segment> segment_;

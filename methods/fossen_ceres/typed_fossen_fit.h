@@ -129,7 +129,8 @@ struct SegmentResidual {
 
   // The segment simulated from x0 (u, v, r) with parameters theta: the plant's states at each
   // row into `out` (times.size() rows of Plant<Model>::kStates), and the rows simulated.
-  template <typename T>
+  // Dynamics: Model, or a type that adds to its Derivative (knot_window_cost.h).
+  template <typename T, typename Dynamics = Model>
   size_t Rollout(const T* theta, const T* x0, std::vector<T>& out) const {
     constexpr int N = Plant<Model>::kStates;
     const std::array<T, Model::kParams> pa = Unscale<Model::kParams>(theta, param_scale);
@@ -147,8 +148,8 @@ struct SegmentResidual {
     out.assign(times.size() * N, T(0));
     std::array<double, Model::kInputs> limits;
     limits.fill(INFINITY);
-    return RolloutOpenLoop<Model, T, Steppers::kRk4Only>(setup, start.data(), pa.data(),
-                                                         EffectValues<T>{}, limits, out.data());
+    return RolloutOpenLoop<Dynamics, T, Steppers::kRk4Only>(setup, start.data(), pa.data(),
+                                                            EffectValues<T>{}, limits, out.data());
   }
 
   template <typename T>
@@ -394,7 +395,7 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
     // A model with resistance knots: derivatives over the knots the segment reads (a third of
     // the fit's time on odin-hs, the same Jacobian).
     ceres::CostFunction* cost;
-    if constexpr (requires { Model::KnotAt(0.0, 0.0); })
+    if constexpr (requires(const double* x, const Environment<double>& e) { Model::KnotAt(x, e); })
       cost = new KnotWindowCost<Model, SegmentResidual<Model>>(
           std::unique_ptr<const SegmentResidual<Model>>(seg), residuals);
     else
