@@ -85,9 +85,14 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
   ForwardOrder(g, total.xty, sst, order, err);
   if (order.empty()) return fit;
 
-  std::vector<Eigen::MatrixXd> block_gram;
-  for (const NormalEquations& b : blocks)
+  // Each block's own Gram matrix, and the others' (the rows that fit what the block scores).
+  std::vector<Eigen::MatrixXd> block_gram, rest_gram;
+  std::vector<Eigen::VectorXd> rest_xty;
+  for (const NormalEquations& b : blocks) {
     block_gram.push_back(b.gram.selfadjointView<Eigen::Lower>());
+    rest_gram.push_back(g - block_gram.back());
+    rest_xty.push_back(total.xty - b.xty);
+  }
   // Held-out SSE of each prefix of the forward order, per block.
   std::vector<std::vector<double>> sse(order.size() + 1);
   std::vector<int> cols = {0};
@@ -103,7 +108,7 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
       Eigen::VectorXd w;
       if (blocks[b].rows == 0) {
         sse[m].push_back(0.0);
-      } else if (SolveColumns(g - block_gram[b], total.xty - blocks[b].xty, cols, w)) {
+      } else if (SolveColumns(rest_gram[b], rest_xty[b], cols, w)) {
         sse[m].push_back(BlockSse(blocks[b], block_gram[b], cols, w));
       } else {
         sse[m].push_back(INFINITY);
