@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
+#include <mutex>
 #include <numeric>
 #include <set>
+#include <tuple>
 
 #include "core/error.h"
 #include "effects/effect.h"
@@ -194,10 +197,46 @@ nlohmann::json NotReplayed(const Suite& suite, const std::string& test, const st
   return {{"maneuver", TestManeuverSpec(suite, test)}, {"status", "not replayed: " + why}};
 }
 
+// The records a run simulates, each simulated once: every method of a vessel, training maneuver,
+// noise and seed trains on the same record, and every cell of a vessel, noise and seed tests on
+// the same records (the default suite simulated each 8 times). A record is a pure function of
+// its key within a run (one suite, one set of conditions), so a kept record is the record.
+// Thread-safe; two cells that ask for a record at once may both simulate it (the same data).
+class SimulatedRecords {
+ public:
+  explicit SimulatedRecords(const Suite& suite) : suite_(suite) {}
+
+  std::shared_ptr<const Dataset> Get(const std::string& vessel, const std::string& maneuver,
+                                     double seconds, double noise, uint64_t seed) {
+    const Key key{vessel, maneuver, seconds, noise, seed};
+    {
+      std::lock_guard lock(mutex_);
+      if (auto it = kept_.find(key); it != kept_.end()) return it->second;
+    }
+    auto record = std::make_shared<const Dataset>(
+        SimulateForSuite(vessel, maneuver, seconds, noise, seed, suite_.conditions));
+    std::size_t bytes = static_cast<std::size_t>(record->rows()) * sizeof(double);
+    for (const Channel& c : record->channels()) bytes += c.StorageBytes();
+    std::lock_guard lock(mutex_);
+    // Kept up to kMaxBytes in all; beyond, simulated on every use as before.
+    if (bytes_ + bytes <= kMaxBytes && kept_.emplace(key, record).second) bytes_ += bytes;
+    return record;
+  }
+
+ private:
+  static constexpr std::size_t kMaxBytes = std::size_t{512} << 20;
+  using Key = std::tuple<std::string, std::string, double, double, uint64_t>;
+  const Suite& suite_;
+  std::mutex mutex_;
+  std::map<Key, std::shared_ptr<const Dataset>> kept_;
+  std::size_t bytes_ = 0;
+};
+
 // One cell: the job's fit, scored on every test maneuver. Never throws: a failure is a row.
 std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                                const std::map<std::string, Dataset>& train_sets,
-                               const std::map<std::string, Dataset>& test_sets) {
+                               const std::map<std::string, Dataset>& test_sets,
+                               SimulatedRecords& simulated) {
   std::vector<ResultRow> rows;
   ResultRow base;
   base.vessel = job.vessel.empty() ? suite.name : job.vessel;  // vessel-less data: the suite
@@ -210,11 +249,12 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
   std::string failure;
   const auto start = std::chrono::steady_clock::now();
   try {
-    const Dataset train =
-        suite.Measured() ? train_sets.at(job.train_maneuver)
-                         : SimulateForSuite(job.vessel, job.train_maneuver, suite.train_seconds,
-                                            job.noise, job.seed, suite.conditions);
-    model = Identify(FindSuiteMethod(job.method.method), train, RequestFor(suite, job));
+    const std::shared_ptr<const Dataset> train =
+        suite.Measured() ? nullptr
+                         : simulated.Get(job.vessel, job.train_maneuver, suite.train_seconds,
+                                         job.noise, job.seed);
+    model = Identify(FindSuiteMethod(job.method.method),
+                     train ? *train : train_sets.at(job.train_maneuver), RequestFor(suite, job));
   } catch (const std::exception& e) {
     failure = std::string("failed: ") + e.what();
   }
@@ -232,10 +272,11 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       continue;
     }
     try {
-      const Dataset held = suite.Measured()
-                               ? test_sets.at(test)
-                               : SimulateForSuite(job.vessel, test, suite.test_seconds, job.noise,
-                                                  row.test_seed, suite.conditions);
+      const std::shared_ptr<const Dataset> simulated_held =
+          suite.Measured()
+              ? nullptr
+              : simulated.Get(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
+      const Dataset& held = simulated_held ? *simulated_held : test_sets.at(test);
       const Scores e = EvaluateModel(model, held, EvaluationScope::kRowScores).scores;
       for (const auto& [channel, score] : e.channels)
         row.channel_fit_percent[channel] = score.fit_percent;
@@ -287,6 +328,7 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
   for (const SuiteData& d : suite.train_data) train_sets[d.name] = LoadSuiteData(d);
   for (const SuiteData& d : suite.test_data) test_sets[d.name] = LoadSuiteData(d);
   std::map<size_t, std::vector<ResultRow>> cells;
+  SimulatedRecords simulated(suite);
   if (threads > 0) omp_set_num_threads(threads);
   std::string save_failure;
 #pragma omp parallel
@@ -295,7 +337,7 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
 #pragma omp critical(usvid_next_cell)
     j = save_failure.empty() ? next() : std::nullopt;
     if (!j) break;
-    std::vector<ResultRow> rows = RunCell(suite, jobs.at(*j), train_sets, test_sets);
+    std::vector<ResultRow> rows = RunCell(suite, jobs.at(*j), train_sets, test_sets, simulated);
     // The callback saves the cell; a failure to save ends the run once the running cells are
     // done (no exception may leave the parallel region).
 #pragma omp critical(usvid_next_cell)
