@@ -8,6 +8,7 @@
 
 #include "core/check.h"
 #include "core/error.h"
+#include "core/nan.h"
 
 namespace usvid {
 
@@ -15,7 +16,6 @@ namespace {
 
 // A channel sampled on at most this share of its rows is stored sparse.
 constexpr Eigen::Index kSparseShareDenominator = 4;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/expression_terms.h"
+#include "core/nan.h"
 #include "core/parse_number.h"
 
 namespace usvid {
@@ -19,7 +20,6 @@ namespace {
 
 constexpr int kMaxNesting = 256;
 constexpr Eigen::Index kBlockRows = 256;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct NamedFunction {
   std::string_view name;

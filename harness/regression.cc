@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "core/nan.h"
 #include "metrics/rank_tests.h"
 
 namespace usvid {
@@ -20,10 +21,9 @@ constexpr double kAlpha = 0.05;          // family-wise, by Holm
 constexpr int kMinNonzeroPairs = 6;      // below, no two-sided signed-rank p reaches kAlpha
 constexpr double kSlowerRatio = 1.5;     // median fit time grew by more than 50 %
 constexpr double kWorst = -std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // vessel, train_maneuver, test_maneuver, method, noise, seed.
-using CellKey = std::tuple<std::string, std::string, std::string, std::string, double, uint64_t>;
+using PairKey = std::tuple<std::string, std::string, std::string, std::string, double, uint64_t>;
 using GroupKey = std::pair<std::string, std::string>;      // vessel, method
 using FitKey = std::tuple<std::string, double, uint64_t>;  // train_maneuver, noise, seed
 
@@ -44,7 +44,7 @@ struct Group {
 double FitOrWorst(double fit) { return std::isnan(fit) ? kWorst : fit; }
 
 // A number for the JSON, null when it is not finite (nlohmann writes those as null anyway).
-nlohmann::json Number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nullptr; }
+nlohmann::json JsonNumber(double x) { return std::isfinite(x) ? nlohmann::json(x) : nullptr; }
 
 // Row `index` of the baseline, its fields checked by name.
 class BaselineRow {
@@ -76,7 +76,7 @@ class BaselineRow {
   std::string where_;
 };
 
-void AddPair(const CellKey& key, const Cell& now, const Cell& before, Group* g) {
+void AddPair(const PairKey& key, const Cell& now, const Cell& before, Group* g) {
   const auto& [vessel, train, test, method, noise, seed] = key;
   const bool ok_now = now.status == "ok", ok_before = before.status == "ok";
   if (ok_now && ok_before) {
@@ -231,7 +231,7 @@ RegressionReport CompareWithBaseline(const std::vector<ResultRow>& rows,
                                      const nlohmann::json& baseline, const std::string& file) {
   if (!baseline.is_object() || !baseline.contains("rows") || !baseline["rows"].is_array())
     throw InputError(file + ": not a results.json (no \"rows\" array)");
-  std::map<CellKey, std::vector<Cell>> now, before;
+  std::map<PairKey, std::vector<Cell>> now, before;
   for (const ResultRow& r : rows)
     now[{r.vessel, r.train_maneuver, r.test_maneuver, r.method, r.noise, r.seed}].push_back(
         {r.status, FitOrWorst(r.mean_fit_percent), r.fit_seconds});
@@ -292,30 +292,31 @@ RegressionReport CompareWithBaseline(const std::vector<ResultRow>& rows,
     const std::string verdict = Verdict(g, fit, fit_p_adjusted, time, time_p_adjusted);
     if (verdict == "worse fit" || verdict == "slower") ++report.worse;
     const bool tested = fit.pairs > 0;
-    report.groups.push_back({{"vessel", key.first},
-                             {"method", key.second},
-                             {"pairs", fit.pairs},
-                             {"nonzero_pairs", fit.test.n},
-                             {"median_fit_percent", Number(fit.median_now)},
-                             {"baseline_median_fit_percent", Number(fit.median_before)},
-                             {"median_difference", Number(fit.difference.median)},
-                             {"difference_q1", Number(fit.difference.q1)},
-                             {"difference_q3", Number(fit.difference.q3)},
-                             {"p_value", tested ? Number(fit.test.p_value) : nullptr},
-                             {"p_adjusted", Number(fit_p_adjusted)},
-                             {"newly_failing", g.newly_failing.size()},
-                             {"newly_failing_cells", g.newly_failing},
-                             {"newly_ok", g.newly_ok},
-                             {"failing_both", g.failing_both},
-                             {"only_now", g.only_now},
-                             {"only_baseline", g.only_baseline},
-                             {"fit_seconds",
-                              {{"pairs", time.pairs},
-                               {"median", Number(time.median_now)},
-                               {"baseline_median", Number(time.median_before)},
-                               {"p_value", time.pairs > 0 ? Number(time.test.p_value) : nullptr},
-                               {"p_adjusted", Number(time_p_adjusted)}}},
-                             {"verdict", verdict}});
+    report.groups.push_back(
+        {{"vessel", key.first},
+         {"method", key.second},
+         {"pairs", fit.pairs},
+         {"nonzero_pairs", fit.test.n},
+         {"median_fit_percent", JsonNumber(fit.median_now)},
+         {"baseline_median_fit_percent", JsonNumber(fit.median_before)},
+         {"median_difference", JsonNumber(fit.difference.median)},
+         {"difference_q1", JsonNumber(fit.difference.q1)},
+         {"difference_q3", JsonNumber(fit.difference.q3)},
+         {"p_value", tested ? JsonNumber(fit.test.p_value) : nullptr},
+         {"p_adjusted", JsonNumber(fit_p_adjusted)},
+         {"newly_failing", g.newly_failing.size()},
+         {"newly_failing_cells", g.newly_failing},
+         {"newly_ok", g.newly_ok},
+         {"failing_both", g.failing_both},
+         {"only_now", g.only_now},
+         {"only_baseline", g.only_baseline},
+         {"fit_seconds",
+          {{"pairs", time.pairs},
+           {"median", JsonNumber(time.median_now)},
+           {"baseline_median", JsonNumber(time.median_before)},
+           {"p_value", time.pairs > 0 ? JsonNumber(time.test.p_value) : nullptr},
+           {"p_adjusted", JsonNumber(time_p_adjusted)}}},
+         {"verdict", verdict}});
   }
   return report;
 }

@@ -8,11 +8,11 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/nan.h"
 
 namespace usvid {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kMaxExactN = 25;
 constexpr double kGammaTolerance = 1e-15;  // relative, for the series and continued fraction
 

@@ -9,13 +9,13 @@
 
 #include "core/angles.h"
 #include "core/error.h"
+#include "core/nan.h"
 #include "metrics/maneuver_execute.h"
 
 namespace usvid {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A channel's sampled (finite) values in time order.
 struct Samples {
