@@ -1,4 +1,4 @@
-// A shooting segment's cost (typed_fossen_fit.h's SegmentResidual) for a model whose last
+// A shooting segment's cost (shooting_segment.h's SegmentResidual) for a model whose last
 // parameters are the knots of a curve that the model reads two at a time: JetForceModel's
 // resistance coefficient c(U), 41 knots of which a 10 s segment visits a few. Ceres' automatic
 // differentiation carries one derivative per parameter through every step of the simulation,

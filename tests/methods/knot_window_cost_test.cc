@@ -10,12 +10,13 @@
 
 #include <memory>
 
-#include "methods/fossen_ceres/typed_fossen_fit.h"
+#include "methods/fossen_ceres/jet_force_model.h"
+#include "methods/fossen_ceres/shooting_segment.h"
 
 namespace usvid::fossen {
 namespace {
 
-using Segment = detail::SegmentResidual<JetForceModel>;
+using Segment = SegmentResidual<JetForceModel>;
 constexpr int kParams = JetForceModel::kParams;
 
 struct Case {
