@@ -199,7 +199,7 @@ nlohmann::json NotReplayed(const Suite& suite, const std::string& test, const st
 
 // The records a run simulates, each simulated once: every method of a vessel, training maneuver,
 // noise and seed trains on the same record, and every cell of a vessel, noise and seed tests on
-// the same records (the default suite simulated each 8 times). A record is a pure function of
+// the same records (the default suite simulated each 5 or 10 times). A record is a pure function of
 // its key within a run (one suite, one set of conditions), so a kept record is the record.
 // Thread-safe; two cells that ask for a record at once may both simulate it (the same data).
 class SimulatedRecords {
