@@ -1,9 +1,9 @@
 // The shooting segment's cost with derivatives over a window of resistance knots
 // (methods/fossen_ceres/knot_window_cost.h) is ceres::AutoDiffCostFunction over all 66
 // derivatives, bit for bit: the residuals and every Jacobian entry, on a segment that stays
-// within one window of knots and on one that accelerates across most of them (several windows),
-// one whose simulation reads knots between its rows (a trial step that diverges), and with a
-// parameter block held constant (no Jacobian asked for it).
+// within one window of knots, on one that accelerates across most of them (several windows),
+// on one whose RK4 stages read knots far from its rows' speeds (a trial step with a tiny surge
+// mass), and with a parameter block held constant (no Jacobian asked for it).
 #include "methods/fossen_ceres/knot_window_cost.h"
 
 #include <gtest/gtest.h>
