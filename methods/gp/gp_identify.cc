@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/parse_number.h"
 #include "core/stretches.h"
+#include "methods/gp/astern_symmetry.h"
 #include "methods/gp/model_selection.h"
 #include "methods/gp/ols.h"
 #include "methods/gp/simulation_refit.h"
@@ -172,15 +173,41 @@ bool AllAmong(const std::vector<std::string>& states, const std::vector<std::str
 }
 
 // The chosen terms of each state refitted on every row by equation error.
+// The index of the variable `name` among `all`'s, or -1.
+int Index(const GpProblem& all, const std::string& name) {
+  const auto it = std::ranges::find(all.names, name);
+  return it == all.names.end() ? -1 : static_cast<int>(it - all.names.begin());
+}
+
 std::vector<Model> FitChosen(const PreparedData& prepared, const std::vector<std::string>& states,
                              const std::vector<StateCandidates>& candidates,
-                             const Selection& selection, const GpOptions& search, GpProblem* all) {
+                             const Selection& selection, const GpOptions& search, int surge,
+                             GpProblem* all, std::vector<std::string>* symmetric) {
   std::vector<Model> bests;
   for (size_t i = 0; i < states.size(); ++i) {
     all->target = prepared.data[states[i] + "_dot"];
-    bests.push_back(FitTree(candidates[i].models[selection.chosen[i]].tree, *all, search));
+    Tree tree = candidates[i].models[selection.chosen[i]].tree;
+    if (surge >= 0) {
+      const size_t size = tree.size();
+      tree = AsternSymmetric(tree, surge, Index(*all, states[i]));
+      if (tree.size() != size) symmetric->push_back(states[i]);
+    }
+    bests.push_back(FitTree(tree, *all, search));
   }
   return bests;
+}
+
+// The variable index of the surge speed u when the chosen equations' damping is to be written
+// with |u| (astern_symmetry.h): u is a state, it goes below 0 on some row, and abs is among the
+// search's functions; otherwise -1.
+int AsternSurge(const std::vector<std::string>& states, const GpProblem& all,
+                const GpOptions& search) {
+  if (std::ranges::find(states, "u") == states.end() ||
+      std::ranges::find(search.functions, Op::kAbs) == search.functions.end())
+    return -1;
+  const int u = Index(all, "u");
+  if (u < 0 || !(all.variables[static_cast<size_t>(u)].array() < 0).any()) return -1;
+  return u;
 }
 
 // The simulations' view of the variables, which it holds until the simulations are done and
@@ -209,9 +236,7 @@ SimulationRefit RefineBySimulation(const PreparedData& prepared,
                                    const std::vector<DerivedColumn>& derived, long train_rows,
                                    double horizon_s, std::vector<Model>* bests) {
   std::vector<int> state_vars;
-  for (const std::string& s : states)
-    state_vars.push_back(
-        static_cast<int>(std::find(all->names.begin(), all->names.end(), s) - all->names.begin()));
+  for (const std::string& s : states) state_vars.push_back(Index(*all, s));
   const LentVariables lent(prepared, all, 0, horizon_s, derived);
   return RefitBySimulation(lent.data(), state_vars, *bests, {horizon_s, 30, train_rows});
 }
@@ -261,8 +286,7 @@ SimulationRefit RefineWithDamping(const PreparedData& prepared,
   std::vector<Model> offered = *bests;
   std::vector<std::string> names;
   for (size_t i = 0; i < states.size(); ++i) {
-    const int var = static_cast<int>(std::find(all->names.begin(), all->names.end(), states[i]) -
-                                     all->names.begin());
+    const int var = Index(*all, states[i]);
     if (rule == DampingOffer::kNone ||
         Damps(offered[i], var, all->variables, prepared.data.t(), rule))
       continue;
@@ -401,8 +425,10 @@ GpIdentification IdentifyWithGp(
   }
 
   // The chosen terms refitted on every row by equation error, then (when asked) by simulation.
+  const int surge = AsternSurge(states, all, options.search);
+  std::vector<std::string> symmetric;  // the states whose damping was written with |u|
   std::vector<Model> bests =
-      FitChosen(prepared, states, candidates, selection, options.search, &all);
+      FitChosen(prepared, states, candidates, selection, options.search, surge, &all, &symmetric);
   SimulationRefit refit;
   const bool refine = select && options.weight_fit == WeightFit::kSimulation;
   std::vector<std::string> damped;
@@ -424,6 +450,8 @@ GpIdentification IdentifyWithGp(
     chosen["weights"] = WeightsJson(refit, refine, options.horizon_s);
     // Whether the equation was offered its own state as a damping term, which the refit kept.
     chosen["weights"]["damping_term_added"] = std::ranges::find(damped, state) != damped.end();
+    // Whether the chosen equation's damping was written with |u| for astern (astern_symmetry.h).
+    chosen["astern_symmetric"] = std::ranges::find(symmetric, state) != symmetric.end();
     out.details[state] = {{"r2_train", best.r2},          {"r2_heldout", best.r2_heldout},
                           {"size", best.Size()},          {"generations", r.log.size()},
                           {"restarts", r.restarts},       {"stop_reason", r.stop_reason},

@@ -2,10 +2,10 @@
 // outdoor pond, GPS-derived u and v) through the binary, as docs/real-data.md reports them: the
 // data-driven methods trained on eight runs at once and free-run on eight others
 // (docs/studies/esso-osaka.json). Issue 38: every equation of every method keeps terms (SINDy
-// through its weak form: from the derivatives it keeps none), and SINDy's free runs, which do
-// not depend on the seed, hold on every held-out run, with the logged wind among their inputs
-// better than without it on the zig-zags and turns. Issue 39: the model built from the
-// vessel's main particulars alone (docs/vessels/files/esso-osaka.yaml) replays each shared
+// through its weak form: from the derivatives it keeps none), every method's free runs hold on
+// every held-out run, and SINDy's, which do not depend on the seed, fit r better with the logged
+// wind among their inputs than without it on the zig-zags and turns. Issue 39: the model built from
+// the vessel's main particulars alone (docs/vessels/files/esso-osaka.yaml) replays each shared
 // zig-zag closed-loop from its execute, after the operator's hand steering from rest, within
 // 5 deg of its first overshoot.
 #include <gmock/gmock.h>
@@ -32,7 +32,7 @@ using testing::RunUsvid;
 
 const std::string kData = std::string(USVID_SHARED_DATA_DIR) + "/esso-osaka";
 
-TEST(EssoOsakaTest, EveryMethodKeepsTermsAndSindyHoldsOnTheHeldOutRuns) {
+TEST(EssoOsakaTest, EveryMethodKeepsTermsAndHoldsOnTheHeldOutRuns) {
   if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
   const fs::path dir = FreshTempDir();
   const auto r = RunUsvid("compare --suite " + std::string(USVID_SOURCE_DIR) +
@@ -44,9 +44,13 @@ TEST(EssoOsakaTest, EveryMethodKeepsTermsAndSindyHoldsOnTheHeldOutRuns) {
   for (const auto& row : results.at("rows")) {
     // A method whose equation kept no term fails its cell (methods/sindy/sindy_method.cc).
     ASSERT_EQ(row.at("status"), "ok") << row.dump();
+    // No free run leaves the bounds. GP's seed 2 did on the random run of 31 Jul 12:48, which
+    // goes further astern than any training run, until its yaw damping u*r was written with |u|
+    // (methods/gp/astern_symmetry.h).
+    EXPECT_FALSE(row.value("diverged", false))
+        << row.at("method") << " seed " << row.at("seed") << " on " << row.at("test_maneuver");
     if (row.at("method") != "sindy") continue;
     ++sindy_rows;
-    EXPECT_FALSE(row.value("diverged", false)) << row.at("test_maneuver");
     const std::string test = row.at("test_maneuver").get<std::string>();
     const double r_fit = row.at("channel_fit_percent").at("r").get<double>();
     if (test.starts_with("zigzag")) sindy_zigzag_r.push_back(r_fit);
@@ -65,7 +69,6 @@ TEST(EssoOsakaTest, EveryMethodKeepsTermsAndSindyHoldsOnTheHeldOutRuns) {
   // on both without it.
   for (const double r_fit : sindy_turning_r) EXPECT_GT(r_fit, 60.0);
 }
-
 
 // The shared zig-zags and their test angles (A = B), with the time of the execute the rudder and
 // heading show: the first full-angle order held until the heading has turned by B.
