@@ -60,6 +60,14 @@ Dataset JoinRecords(std::vector<Dataset> records, std::vector<std::string>* drop
   return out;
 }
 
+std::vector<long> RecordStarts(const Eigen::Ref<const Eigen::VectorXd>& t) {
+  std::vector<long> starts;
+  if (t.size() > 0) starts.push_back(0);
+  for (Eigen::Index i = 1; i < t.size(); ++i)
+    if (t(i) - t(i - 1) >= 0.5 * kRecordGapS) starts.push_back(static_cast<long>(i));
+  return starts;
+}
+
 std::vector<std::string> RecordList(const std::string& text, const std::string& what) {
   std::vector<std::string> names;
   size_t from = 0;

@@ -21,6 +21,11 @@ inline constexpr double kRecordGapS = 1000.0;
 // is. Throws InputError for an empty list.
 Dataset JoinRecords(std::vector<Dataset> records, std::vector<std::string>* dropped = nullptr);
 
+// The first row of each record in `t`, a joined record's times: row 0, then every row that
+// follows a jump of at least half kRecordGapS (a log's own gaps, GPS dropouts of seconds, are
+// not records). One record: {0}; no rows: {}.
+std::vector<long> RecordStarts(const Eigen::Ref<const Eigen::VectorXd>& t);
+
 // Splits "a.csv,b.csv" at the commas; InputError "`what`: ..." for an empty list or name.
 std::vector<std::string> RecordList(const std::string& text, const std::string& what);
 

@@ -38,6 +38,9 @@ struct RefitOptions {
   // Most rows the segments hold (0: all): on a longer record, segments spread evenly over it
   // (Ceres holds the Jacobian of every residual).
   long max_rows = 0;
+  // Each record of a joint fit (core/records.h) weighs the same, whatever its length
+  // (record_weights.h); false: each segment does, so a record weighs by its rows.
+  bool equal_records = false;
   int max_iterations = 100;
   int threads = 1;
   std::vector<Effect> terms;  // missing_term effects, their coefficients fitted

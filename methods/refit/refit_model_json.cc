@@ -47,6 +47,9 @@ std::vector<OptionSpec> RefitOptionSpecs() {
                    /*min_exclusive=*/true),
       IntegerOption("fit_rows", kCeresFitRows, 0, kUnbounded,
                     "the most rows the Ceres fit uses, spread over a longer record (0: all)"),
+      ChoiceOption("record_weights", "rows", {"rows", "equal"},
+                   "how the records of a joint fit (--data a.csv,b.csv) weigh: by their rows "
+                   "(rows), or each the same (equal)"),
   };
 }
 
@@ -56,6 +59,7 @@ RefitOptions RefitOptionsFor(const MethodOptions& o) {
   ro.segment_s = o.Number("segment_s");
   ro.prior_sd = o.Number("prior_sd");
   ro.max_rows = o.Integer("fit_rows");
+  ro.equal_records = o.Text("record_weights") == "equal";
   ro.threads = 1;  // deterministic, as for fossen-ceres
   return ro;
 }

@@ -13,8 +13,10 @@
 #include "core/correlation_time.h"
 #include "core/error.h"
 #include "core/evenly_spread.h"
+#include "core/records.h"
 #include "core/stretches.h"
 #include "methods/refit/free_information.h"
+#include "methods/refit/record_weights.h"
 #include "methods/refit/refit.h"
 #include "methods/refit/refit_instances.h"
 #include "preprocessing/smoothing_spline.h"
@@ -363,6 +365,9 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   const double dt = data.rows() > 1 ? data.duration() / static_cast<double>(data.rows() - 1) : 1.0;
   const auto bounds = detail::SpreadSegments(detail::SegmentBounds(data, segment_s), o.max_rows);
   std::vector<std::array<double, C>> x0(bounds.size());
+  // Each segment weighs alike, or each record of a joint fit does (record_weights.h).
+  const std::vector<double> weight = o.equal_records ? RecordWeights(bounds, RecordStarts(data.t()))
+                                                     : std::vector<double>(bounds.size(), 1.0);
   ceres::Problem problem;
   for (size_t j = 0; j < bounds.size(); ++j) {
     const auto [a, b] = bounds[j];
@@ -373,7 +378,9 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     problem.AddResidualBlock(
         new ceres::AutoDiffCostFunction<RefitSegment<V>, ceres::DYNAMIC, V::kParams, C,
                                         kMaxRefitTerms>(seg, residuals),
-        nullptr, theta.data(), x0[j].data(), missing.kappa.data());
+        weight[j] == 1.0 ? nullptr
+                         : new ceres::ScaledLoss(nullptr, weight[j], ceres::TAKE_OWNERSHIP),
+        theta.data(), x0[j].data(), missing.kappa.data());
   }
   problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RefitPrior<V>, V::kParams, V::kParams>(
                                new RefitPrior<V>{free, theta, o.prior_sd}),
