@@ -198,13 +198,9 @@ std::vector<Model> FitChosen(const PreparedData& prepared, const std::vector<std
 }
 
 // The variable index of the surge speed u when the chosen equations' damping is to be written
-// with |u| (astern_symmetry.h): u is a state, it goes below 0 on some row, and abs is among the
-// search's functions; otherwise -1.
-int AsternSurge(const std::vector<std::string>& states, const GpProblem& all,
-                const GpOptions& search) {
-  if (std::ranges::find(states, "u") == states.end() ||
-      std::ranges::find(search.functions, Op::kAbs) == search.functions.end())
-    return -1;
+// with |u| (astern_symmetry.h): u is a state and goes below 0 on some row; otherwise -1.
+int AsternSurge(const std::vector<std::string>& states, const GpProblem& all) {
+  if (std::ranges::find(states, "u") == states.end()) return -1;
   const int u = Index(all, "u");
   if (u < 0 || !(all.variables[static_cast<size_t>(u)].array() < 0).any()) return -1;
   return u;
@@ -425,7 +421,7 @@ GpIdentification IdentifyWithGp(
   }
 
   // The chosen terms refitted on every row by equation error, then (when asked) by simulation.
-  const int surge = AsternSurge(states, all, options.search);
+  const int surge = AsternSurge(states, all);
   std::vector<std::string> symmetric;  // the states whose damping was written with |u|
   std::vector<Model> bests =
       FitChosen(prepared, states, candidates, selection, options.search, surge, &all, &symmetric);
