@@ -172,13 +172,15 @@ bool AllAmong(const std::vector<std::string>& states, const std::vector<std::str
   });
 }
 
-// The chosen terms of each state refitted on every row by equation error.
 // The index of the variable `name` among `all`'s, or -1.
 int Index(const GpProblem& all, const std::string& name) {
   const auto it = std::ranges::find(all.names, name);
   return it == all.names.end() ? -1 : static_cast<int>(it - all.names.begin());
 }
 
+// The chosen terms of each state refitted on every row by equation error; with `surge` >= 0
+// their damping first written with |u| (astern_symmetry.h), the states so changed appended to
+// `symmetric`.
 std::vector<Model> FitChosen(const PreparedData& prepared, const std::vector<std::string>& states,
                              const std::vector<StateCandidates>& candidates,
                              const Selection& selection, const GpOptions& search, int surge,
