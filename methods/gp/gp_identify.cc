@@ -75,22 +75,28 @@ GpProblem MeasuredVariables(const PreparedData& prepared, const std::vector<std:
   return all;
 }
 
+// The index of the variable `name` among `all`'s, or -1.
+int Index(const GpProblem& all, const std::string& name) {
+  const auto it = std::ranges::find(all.names, name);
+  return it == all.names.end() ? -1 : static_cast<int>(it - all.names.begin());
+}
+
 // Appends each feature not yet among the variables, and its column of `derived`.
 // A feature is named by its expression in parentheses, so that every equation written is in
 // channel names, and is computed from the variables it names (which must be among them).
 void AddFeatures(const std::vector<DerivedVariable>& features, const PreparedData& prepared,
                  GpProblem* all, std::vector<DerivedColumn>* derived) {
   for (const DerivedVariable& f : features) {
-    if (std::find(all->names.begin(), all->names.end(), f.Column()) != all->names.end()) continue;
+    if (Index(*all, f.Column()) >= 0) continue;
     DerivedColumn d{static_cast<int>(all->names.size()),
                     Expression::Parse(f.expression, "feature " + f.name),
                     {}};
     for (const std::string& arg : d.expression.Variables()) {
-      const auto it = std::find(all->names.begin(), all->names.end(), arg);
-      if (it == all->names.end())
+      const int index = Index(*all, arg);
+      if (index < 0)
         throw InputError("gp: feature " + f.name + " = " + f.expression + " needs variable '" +
                          arg + "'");
-      d.arguments.push_back(static_cast<int>(it - all->names.begin()));
+      d.arguments.push_back(index);
     }
     all->names.push_back(f.Column());
     all->variables.push_back(d.expression.Evaluate(prepared.data));
@@ -143,10 +149,8 @@ void CompleteCandidates(const PreparedData& prepared, const std::vector<std::str
                         long train_rows, const GpOptions& search,
                         std::vector<StateCandidates>* candidates) {
   std::vector<int> state_vars, feature_vars;
-  for (const std::string& s : states) {
-    const auto it = std::find(all.names.begin(), all.names.end(), s);
-    if (it != all.names.end()) state_vars.push_back(static_cast<int>(it - all.names.begin()));
-  }
+  for (const std::string& s : states)
+    if (const int index = Index(all, s); index >= 0) state_vars.push_back(index);
   for (const DerivedColumn& d : derived) feature_vars.push_back(d.index);
   const std::vector<Tree> library = CompletionLibrary(state_vars, feature_vars, search.functions);
   const GpProblem head = Head(all, train_rows);
@@ -170,12 +174,6 @@ bool AllAmong(const std::vector<std::string>& states, const std::vector<std::str
   return std::all_of(states.begin(), states.end(), [&](const std::string& s) {
     return std::find(names.begin(), names.end(), s) != names.end();
   });
-}
-
-// The index of the variable `name` among `all`'s, or -1.
-int Index(const GpProblem& all, const std::string& name) {
-  const auto it = std::ranges::find(all.names, name);
-  return it == all.names.end() ? -1 : static_cast<int>(it - all.names.begin());
 }
 
 // The chosen terms of each state refitted on every row by equation error; with `surge` >= 0
