@@ -65,6 +65,10 @@ struct EffectValues {
   uint32_t saturation_inputs = ~0u;
   int bias_input = -1;  // the input input_bias is added to; -1: the vessel's yaw input
   std::vector<ExtraTerm<T>> extra_terms;  // missing_term effects
+  // The measured wind inputs hold the air's velocity over the ground [north, east] instead of
+  // the relative wind aboard: the plant makes the relative wind from its own heading and
+  // velocities (a free run of a log, simulation/recorded_inputs.h). Not an effect.
+  bool wind_over_ground = false;
 };
 
 // The values of a list of effects (each kind at most once per set of inputs). `input_names`
@@ -103,6 +107,7 @@ EffectValues<T> CastValues(const EffectValues<double>& e) {
   out.lag_inputs = e.lag_inputs;
   out.saturation_inputs = e.saturation_inputs;
   out.bias_input = e.bias_input;
+  out.wind_over_ground = e.wind_over_ground;
   for (const ExtraTerm<double>& t : e.extra_terms)
     out.extra_terms.push_back({t.resolved, T(t.coefficient)});
   return out;

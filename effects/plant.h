@@ -13,6 +13,8 @@
 // surge_force adds its acceleration to the surge state's derivative (u, else U, else the msd's v),
 // and each missing term coefficient * term(x, u_a) to its state's derivative. An unmeasured
 // disturbance (gusts) adds its accelerations to the surge, sway (v) and yaw rate (r) states.
+// A measured wind given over the ground (EffectValues::wind_over_ground) becomes the relative
+// wind of the plant's own heading and velocities before V sees it (maneuvers/true_wind.h).
 #pragma once
 
 #include <array>
@@ -24,6 +26,16 @@
 #include "simulators/vessel.h"
 
 namespace usvid {
+
+// The index of input `name` among V's inputs; -1: none.
+template <Vessel V>
+constexpr int FindInput(std::string_view name) {
+  if constexpr (requires { V::kInputNames; }) {
+    for (int i = 0; i < V::kInputs; ++i)
+      if (V::kInputNames[i] == name) return i;
+  }
+  return -1;
+}
 
 // The index of the first of `names` among V's states; -1: none of them.
 template <Vessel V>
@@ -43,6 +55,12 @@ struct Plant {
   // The states a disturbance's sway and yaw accelerations act on: v beside a surge u, and r.
   static constexpr int kSwayState = FindState<V>({"u"}) >= 0 ? FindState<V>({"v"}) : -1;
   static constexpr int kYawRateState = FindState<V>({"r"});
+  // A wind over the ground needs the measured wind pair, a heading and surge-sway states.
+  static constexpr int kWindSpeedInput = FindInput<V>("wind_speed");
+  static constexpr int kWindDirectionInput = FindInput<V>("wind_direction");
+  static constexpr int kHeadingState = FindState<V>({"psi"});
+  static constexpr bool kWindOverGround =
+      kWindSpeedInput >= 0 && kWindDirectionInput >= 0 && kHeadingState >= 0 && kSwayState >= 0;
 
   template <typename T>
   static void ScaleParams(const T* p, const EffectValues<T>& e, T* p_eff) {
@@ -90,6 +108,8 @@ struct Plant {
     }
     u_applied[e.bias_input >= 0 && e.bias_input < V::kInputs ? e.bias_input : V::kYawInput] +=
         e.input_bias;
+    if constexpr (kWindOverGround)
+      if (e.wind_over_ground) RelativeWindAboard(x, u_applied);
     const Environment<T> env{e.current_north, e.current_east, e.wind_scale};
     V::template Derivative<T>(x, u_applied.data(), p_eff, env, dx);
     if constexpr (kSurgeState >= 0) dx[kSurgeState] += e.surge_acceleration;
@@ -105,6 +125,28 @@ struct Plant {
         values[i] = t.slots[i] < V::kStates ? x[t.slots[i]] : u_applied[t.slots[i] - V::kStates];
       dx[t.state] += extra.coefficient * t.term.template EvaluateT<T>(values.data());
     }
+  }
+
+  // The air's velocity over the ground [north, east] in the wind inputs turned into the wind
+  // aboard: its speed, and where it blows from, clockwise from the bow (RelativeWindOf in
+  // maneuvers/true_wind.h, in scalar T).
+  template <typename T>
+  static void RelativeWindAboard(const T* x, std::array<T, V::kInputs>& u) {
+    using std::atan2;
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
+    const T c = cos(x[kHeadingState]), s = sin(x[kHeadingState]);
+    const T air_n = u[kWindSpeedInput], air_e = u[kWindDirectionInput];
+    const T a_u = c * air_n + s * air_e - x[kSurgeState];
+    const T a_v = -s * air_n + c * air_e - x[kSwayState];
+    if (ValueOf(a_u) == 0.0 && ValueOf(a_v) == 0.0) {  // calm aboard: no derivative to take
+      u[kWindSpeedInput] = T(0);
+      u[kWindDirectionInput] = T(0);
+      return;
+    }
+    u[kWindSpeedInput] = sqrt(a_u * a_u + a_v * a_v);
+    u[kWindDirectionInput] = atan2(-a_v, -a_u);
   }
 
   // The state a plant starts in: the vessel state, and the lag memory at the first command.

@@ -80,13 +80,25 @@ double GustySpeed::operator()(double t) const {
 std::array<double, 2> RelativeWind(double true_speed, double true_from_rad, double psi, double u,
                                    double v) {
   // The air moves towards from + pi: w = -W [cos from, sin from] (north, east).
-  const double w_n = -true_speed * std::cos(true_from_rad);
-  const double w_e = -true_speed * std::sin(true_from_rad);
-  const double a_u = std::cos(psi) * w_n + std::sin(psi) * w_e - u;
-  const double a_v = -std::sin(psi) * w_n + std::cos(psi) * w_e - v;
+  return RelativeWindOf(
+      {-true_speed * std::cos(true_from_rad), -true_speed * std::sin(true_from_rad)}, psi, u, v);
+}
+
+std::array<double, 2> RelativeWindOf(const std::array<double, 2>& air, double psi, double u,
+                                     double v) {
+  const double a_u = std::cos(psi) * air[0] + std::sin(psi) * air[1] - u;
+  const double a_v = -std::sin(psi) * air[0] + std::cos(psi) * air[1] - v;
   double from = std::atan2(-a_v, -a_u);
   if (from < 0.0) from += 2.0 * std::numbers::pi;
   return {std::hypot(a_u, a_v), from};
+}
+
+std::array<double, 2> AirOverGround(double relative_speed, double relative_from_rad, double psi,
+                                    double u, double v) {
+  // The air over the hull blows towards from + pi; add the hull's own velocity, turn to north-east.
+  const double w_u = -relative_speed * std::cos(relative_from_rad) + u;
+  const double w_v = -relative_speed * std::sin(relative_from_rad) + v;
+  return {std::cos(psi) * w_u - std::sin(psi) * w_v, std::sin(psi) * w_u + std::cos(psi) * w_v};
 }
 
 std::unique_ptr<Maneuver> UnderTrueWind(std::unique_ptr<Maneuver> inner, const Actuation& act,

@@ -40,6 +40,16 @@ class GustySpeed {
 std::array<double, 2> RelativeWind(double true_speed, double true_from_rad, double psi, double u,
                                    double v);
 
+// The same from the air's velocity over the ground [north, east] (m/s; where it blows to).
+std::array<double, 2> RelativeWindOf(const std::array<double, 2>& air, double psi, double u,
+                                     double v);
+
+// The inverse: the air's velocity over the ground [north, east] from the relative wind an
+// anemometer aboard reads (speed, where it blows from, clockwise from the bow) on a hull heading
+// psi with body velocities u, v. What a log's relative wind says of the true wind.
+std::array<double, 2> AirOverGround(double relative_speed, double relative_from_rad, double psi,
+                                    double u, double v);
+
 // `inner` with its measured wind inputs from `wind`. InputError for a vessel without wind inputs
 // or without a heading and surge-sway states.
 std::unique_ptr<Maneuver> UnderTrueWind(std::unique_ptr<Maneuver> inner, const Actuation& act,

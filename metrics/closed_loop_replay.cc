@@ -8,6 +8,7 @@
 #include "core/derived_channels.h"
 #include "core/error.h"
 #include "maneuvers/maneuver_factory.h"
+#include "maneuvers/true_wind.h"
 #include "metrics/equation_model.h"
 #include "metrics/free_run.h"
 #include "metrics/rank_tests.h"
@@ -16,6 +17,7 @@
 #include "preprocessing/actuator_dynamics.h"
 #include "preprocessing/waterjet_forces.h"
 #include "simulation/input_track.h"
+#include "simulation/recorded_inputs.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -47,11 +49,19 @@ InputTrack RecordedTrack(const Dataset& recorded, const std::string& name) {
 
 // The maneuver, with every command but the yaw held at the record's first value: the record's
 // approach (its thrust, its bucket), which a vessel's default cruise need not be. A measured
-// disturbance (the wind) follows the record in time instead, zero-order hold.
+// disturbance (the wind) follows the record in time instead, zero-order hold. The relative wind
+// of a record that logs the heading and velocities is the true wind seen from the record's hull:
+// the replay takes the true wind from it (the air's velocity over the ground, turned by the
+// difference between the replay's first heading and the record's) and gives the model the
+// relative wind its own heading and velocities make of it. Read as recorded, the wind would turn
+// with the record's heading, not the model's: over a turning circle the two part by up to a radian.
 class RecordedApproach : public Maneuver {
  public:
   RecordedApproach(std::unique_ptr<Maneuver> inner, const Actuation& act, const Dataset& recorded)
-      : inner_(std::move(inner)), held_(act.inputs(), NAN), followed_(act.inputs(), InputTrack(1)) {
+      : inner_(std::move(inner)),
+        act_(act),
+        held_(act.inputs(), NAN),
+        followed_(act.inputs(), InputTrack(1)) {
     for (int i = 0; i < act.inputs(); ++i) {
       if (i == act.yaw_input || !recorded.Has(act.input_names[i])) continue;
       if (act.roles[i] != InputRole::kMeasured) {
@@ -60,6 +70,7 @@ class RecordedApproach : public Maneuver {
       }
       followed_[i] = RecordedTrack(recorded, act.input_names[i]);
     }
+    FollowTrueWind(recorded);
   }
   std::string Spec() const override { return inner_->Spec(); }
   double Duration() const override { return inner_->Duration(); }
@@ -71,6 +82,14 @@ class RecordedApproach : public Maneuver {
   void Command(double t, std::span<const double> state, std::span<double> u) override {
     inner_->Command(t, state, u);
     Hold(t, u);
+    if (air_.size() == 0) return;
+    if (!std::isfinite(turn_)) turn_ = state[act_.heading_state] - recorded_psi0_;
+    const double* air = air_.At(t + 1e-12);
+    const std::array<double, 2> rel =
+        RelativeWindOf({air[0], air[1]}, state[act_.heading_state] - turn_, state[act_.speed_state],
+                       state[act_.speed_state + 1]);
+    u[wind_speed_] = rel[0];
+    u[wind_direction_] = rel[1];
   }
   bool Done() const override { return inner_->Done(); }
   nlohmann::json Report() const override { return inner_->Report(); }
@@ -83,9 +102,36 @@ class RecordedApproach : public Maneuver {
       if (followed_[i].size() > 0) u[i] = followed_[i].At(t + 1e-12)[0];
     }
   }
+  // The air over the ground on the record's rows (RecordedAirOverGround), when the vessel reads
+  // the wind and has a heading and surge-sway states.
+  void FollowTrueWind(const Dataset& recorded) {
+    wind_speed_ = CommandIndexOf("wind_speed");
+    wind_direction_ = CommandIndexOf("wind_direction");
+    if (wind_speed_ < 0 || wind_direction_ < 0 || act_.heading_state < 0 || act_.speed_state < 0 ||
+        !act_.speed_is_surge)
+      return;
+    const std::optional<std::array<Eigen::VectorXd, 2>> air = RecordedAirOverGround(recorded);
+    if (!air) return;
+    const Eigen::VectorXd& psi = recorded["psi"];
+    for (Eigen::Index k = 0; k < psi.size() && !std::isfinite(recorded_psi0_); ++k)
+      recorded_psi0_ = psi(k);
+    for (Eigen::Index k = 0; k < recorded.rows(); ++k)
+      air_.Append(recorded.t()(k), std::array<double, 2>{(*air)[0](k), (*air)[1](k)});
+  }
+  int CommandIndexOf(const std::string& name) const {
+    const auto it = std::ranges::find(act_.input_names, name);
+    if (it == act_.input_names.end()) return -1;
+    const auto i = static_cast<int>(it - act_.input_names.begin());
+    return act_.roles[i] == InputRole::kMeasured ? i : -1;
+  }
   std::unique_ptr<Maneuver> inner_;
+  Actuation act_;
   std::vector<double> held_;
   std::vector<InputTrack> followed_;  // per measured input, its record (one value each); else empty
+  InputTrack air_{2};  // the true wind over the ground [north, east], in the record's frame
+  double recorded_psi0_ = NAN;  // the record's first heading
+  double turn_ = NAN;           // the replay's first heading less the record's
+  int wind_speed_ = -1, wind_direction_ = -1;
 };
 
 double SampleRate(const Dataset& d) {

@@ -9,6 +9,7 @@
 #include "effects/effect.h"
 #include "effects/effect_values.h"
 #include "metrics/equation_model.h"
+#include "metrics/wind_aboard.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -136,6 +137,21 @@ double HeldInputIn(const Dataset& d, const Eigen::VectorXd& u, Eigen::Index firs
   return u(first + std::max<Eigen::Index>(0, (it - ts) - 1));
 }
 
+// The wind inputs at time t (the record's rows [first, first + count), zero-order hold) from
+// the air over the ground and a free run's own heading and velocities `state(channel)`
+// (WindAboard; the record's u, v where the model does not integrate them).
+template <typename State>
+std::vector<std::pair<int, double>> WindInputsAt(const WindAboard& wind, const Dataset& d,
+                                                 Eigen::Index first, Eigen::Index count, double t,
+                                                 State state) {
+  const auto own = [&](int channel, const char* recorded) {
+    return channel >= 0 ? state(channel) : HeldInputIn(d, d[recorded], first, count, t);
+  };
+  return wind.Inputs(HeldInputIn(d, wind.air_north(), first, count, t),
+                     HeldInputIn(d, wind.air_east(), first, count, t), state(wind.psi_channel()),
+                     own(wind.u_channel(), "u"), own(wind.v_channel(), "v"));
+}
+
 }  // namespace
 
 FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double max_step) {
@@ -143,6 +159,7 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
   const EquationModel system(model, [&](const std::string& c) { return data.Has(c); });
   const std::vector<std::string>& channels = system.Channels();
   const std::vector<const Eigen::VectorXd*> inputs = InputChannels(system, data);
+  const WindAboard wind(data, system.Inputs(), channels);
   const auto n = static_cast<Eigen::Index>(channels.size());
   Eigen::VectorXd x(n);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -166,6 +183,10 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
         const double t = t0 + s * h;
         for (size_t i = 0; i < inputs.size(); ++i)
           u(static_cast<Eigen::Index>(i)) = HeldInput(data, *inputs[i], t - system.DelayS());
+        if (wind.engaged())
+          for (const auto& [i, value] :
+               WindInputsAt(wind, data, 0, rows, t - system.DelayS(), [&](int c) { return x(c); }))
+            u(i) = value;
         system.Step(u, h, x);
       }
       if (const int bad = bounds.Exceeded(x); bad >= 0) {
@@ -209,6 +230,7 @@ FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
   const EquationModel system(model, [&](const std::string& c) { return data.Has(c); });
   const std::vector<std::string>& channels = system.Channels();
   const std::vector<const Eigen::VectorXd*> inputs = InputChannels(system, data);
+  const WindAboard wind(data, system.Inputs(), channels);
   const auto n = static_cast<Eigen::Index>(channels.size());
   const auto m = static_cast<Eigen::Index>(inputs.size());
   // Each window's start, bounds and length, as FreeRunModel sees its window.
@@ -258,6 +280,11 @@ FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
         for (Eigen::Index i = 0; i < m; ++i)
           u(j, i) = HeldInputIn(data, *inputs[static_cast<size_t>(i)], starts[j],
                                 end(j) - starts[j], at - system.DelayS());
+        if (wind.engaged())
+          for (const auto& [i, value] :
+               WindInputsAt(wind, data, starts[j], end(j) - starts[j], at - system.DelayS(),
+                            [&](int c) { return x(j, c); }))
+            u(j, i) = value;
       }
       system.Steps(u, h, advance, x);
     }

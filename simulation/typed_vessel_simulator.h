@@ -60,14 +60,21 @@ class TypedVesselSimulator : public VesselSimulator {
       limits = SaturationLimits<V::kInputs>(effects.saturation_fraction,
                                             ToArray<V::kInputs>(track.PeakAbs()),
                                             effects.saturation_inputs);
+    // A logged relative wind is the logged hull's: the free run makes its own from the air.
+    std::optional<InputTrack> air;
+    EffectValues<double> env = effects;
+    if constexpr (Plant<V>::kWindOverGround) {
+      air = WindOverGround(data, info_, track);
+      env.wind_over_ground = air.has_value();
+    }
     OpenLoopSetup setup;
-    setup.inputs = &track;
+    setup.inputs = air ? &*air : &track;
     setup.times.assign(data.t().data(), data.t().data() + data.rows());
     setup.max_step = options.dt;
     setup.integrator = options.integrator;
     std::vector<double> out(setup.times.size() * Plant<V>::kStates);
     const size_t rows = RolloutOpenLoop<V, double>(
-        setup, x0.data(), ToArray<V::kParams>(params).data(), effects, limits, out.data());
+        setup, x0.data(), ToArray<V::kParams>(params).data(), env, limits, out.data());
     SimulationResult result;
     result.diverged = rows < setup.times.size();
     result.diverged_at_s = result.diverged ? setup.times[rows] : 0.0;

@@ -101,5 +101,26 @@ TEST(WindTest, TheRelativeWindIsTheTrueWindLessTheShipsVelocity) {
   EXPECT_NEAR(rel[1], 45.0 * kDeg, 1e-12);
 }
 
+// What a log's relative wind says of the true wind: the air over the ground, from which any
+// hull's own relative wind follows again (maneuvers/true_wind.h, AirOverGround).
+TEST(WindTest, TheAirOverTheGroundIsTheRelativeWindPlusTheShipsVelocity) {
+  // A wind from the east (it blows west) over a ship heading north at 1 m/s: 1.41 m/s from
+  // 45 deg aboard.
+  std::array<double, 2> air = AirOverGround(std::sqrt(2.0), 45.0 * kDeg, 0.0, 1.0, 0.0);
+  EXPECT_NEAR(air[0], 0.0, 1e-12);
+  EXPECT_NEAR(air[1], -1.0, 1e-12);
+  // Any true wind, heading and velocity: the relative wind read aboard gives the true wind back.
+  for (const double from : {10.0, 100.0, 200.0, 330.0})
+    for (const double psi : {-2.0, 0.4, 3.0}) {
+      const std::array<double, 2> rel = RelativeWind(1.7, from * kDeg, psi, 0.3, -0.1);
+      air = AirOverGround(rel[0], rel[1], psi, 0.3, -0.1);
+      EXPECT_NEAR(std::hypot(air[0], air[1]), 1.7, 1e-12);
+      const std::array<double, 2> again = RelativeWindOf(air, psi + 0.5, 0.2, 0.05);
+      const std::array<double, 2> expected = RelativeWind(1.7, from * kDeg, psi + 0.5, 0.2, 0.05);
+      EXPECT_NEAR(again[0], expected[0], 1e-12);
+      EXPECT_NEAR(again[1], expected[1], 1e-12);
+    }
+}
+
 }  // namespace
 }  // namespace usvid
