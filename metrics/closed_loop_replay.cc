@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <optional>
+#include <sstream>
 
 #include "core/derived_channels.h"
 #include "core/error.h"
@@ -448,6 +450,45 @@ ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
   return AnalyseZigzag(data, b, heading, rudder, replay ? -1.0 : a);
 }
 
+// Throws InputError when the record's test turned the other way from `spec` (its first rudder
+// order: A of zigzag:A/B or turning:A, starboard positive), saying which spec replays it: the
+// replay of the mirror image would meet the wind, and the hull's and propeller's asymmetries,
+// from the other side.
+void CheckFirstTurn(const std::string& spec, const Dataset& recorded, const std::string& heading,
+                    const std::string& rudder) {
+  const size_t colon = spec.find(':');
+  const size_t end = spec.find('/', colon == std::string::npos ? 0 : colon);
+  const double angle = colon == std::string::npos ? 1.0 : std::stod(spec.substr(colon + 1));
+  const int turns = angle >= 0 ? 1 : -1;
+  double execute_s = 0.0;
+  int recorded_turn = 0;
+  if (spec.starts_with("zigzag")) {
+    const ZigzagResponse z = AnalyseZigzag(spec, recorded, heading, rudder);
+    recorded_turn = z.first_turn;
+    execute_s = z.execute_s;
+  } else {
+    const TurningResponse r = AnalyseTurning(recorded, heading, rudder);
+    recorded_turn = r.direction;
+    execute_s = r.execute_s;
+  }
+  if (recorded_turn == 0 || recorded_turn == turns) return;
+  const std::string number =
+      colon == std::string::npos
+          ? ""
+          : spec.substr(colon + 1, end == std::string::npos ? std::string::npos : end - colon - 1);
+  const std::string mirrored =
+      colon == std::string::npos ? spec + ":-" + (spec.starts_with("zigzag") ? "20/20" : "35")
+                                 : spec.substr(0, colon + 1) +
+                                       (number.starts_with('-') ? number.substr(1) : "-" + number) +
+                                       (end == std::string::npos ? "" : spec.substr(end));
+  std::ostringstream at;
+  at << std::fixed << std::setprecision(1) << execute_s;
+  throw InputError(recorded.SourcePrefix() + spec + " turns to " +
+                   (turns > 0 ? "starboard" : "port") + " first, the record to " +
+                   (turns > 0 ? "port" : "starboard") + " (its execute at " + at.str() +
+                   " s): give " + mirrored);
+}
+
 // A criterion's value for JSON: null when not finite.
 nlohmann::json Value(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
@@ -531,6 +572,7 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& v
   const std::string rudder = act.input_names.at(act.yaw_input);
   // A real log's test starts after its approach: replay from the lead-in before the execute.
   const Dataset recorded = FromLeadIn(spec, full, full.Has("psi") ? "psi" : "chi", rudder);
+  CheckFirstTurn(spec, full, full.Has("psi") ? "psi" : "chi", rudder);
   const bool cut = recorded.rows() < full.rows();
   if (cut) out["replayed_from_s"] = full.t()(full.rows() - recorded.rows());
   ClosedLoopReplay replay;

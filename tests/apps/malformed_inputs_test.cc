@@ -135,6 +135,12 @@ const Malformed kCatalogue[] = {
      "evaluate --model {D}/model.json --data {D}/good.csv,{D}/good.csv --maneuver zigzag:20/20 "
      "--out {OUT}",
      "--maneuver names the maneuver of one record"},
+    // A replay that would turn the other way from the record's test: the mirror image meets the
+    // wind and the asymmetries from the other side (good.csv turns to starboard first).
+    {"evaluate_maneuver_turning_the_other_way",
+     "evaluate --model {D}/model.json --data {D}/good.csv --maneuver zigzag:-20/20 --out {OUT}",
+     "zigzag:-20/20 turns to port first, the record to starboard (its execute at 5.0 s): give "
+     "zigzag:20/20"},
     // Suite JSON.
     {"suite_unknown_field", "compare --suite {D}/suite_unknown.json --out {OUT}", "colour"},
     {"suite_wrong_type", "compare --suite {D}/suite_types.json --out {OUT}", "vessels"},
