@@ -15,6 +15,7 @@
 #include "metrics/free_run.h"
 #include "metrics/rank_tests.h"
 #include "metrics/turning_response.h"
+#include "metrics/wind_aboard.h"
 #include "metrics/zigzag_response.h"
 #include "preprocessing/actuator_dynamics.h"
 #include "preprocessing/waterjet_forces.h"
@@ -207,6 +208,10 @@ struct InputSources {
   std::vector<InputTrack> recorded;       // per recorded disturbance, its samples (one value each)
   std::array<int, 3> jet = {-1, -1, -1};  // the jet states among the actuators (-1: none)
   bool any_force = false;
+  // A logged wind the model reads, met on its own heading (metrics/wind_aboard.h): the air over
+  // the ground, zero-order hold; engaged only for a model that integrates psi, u and v.
+  std::optional<WindAboard> wind;
+  InputTrack air{2};
 };
 
 // The model's states (x, in its channels' order) and the actuator states (y).
@@ -304,6 +309,13 @@ InputSources ResolveInputs(const EquationModel& system, const VesselInfo& info, 
       if (in.actuators[a].channel == kWaterjetStateChannels[j]) in.jet[j] = static_cast<int>(a);
   in.any_force =
       std::ranges::any_of(in.sources, [](const auto& s) { return s.first == SourceKind::kForce; });
+  WindAboard wind(recorded, system.Inputs(), system.Channels());
+  if (wind.engaged() && wind.u_channel() >= 0 && wind.v_channel() >= 0) {
+    for (Eigen::Index k = 0; k < recorded.rows(); ++k)
+      in.air.Append(recorded.t()(k),
+                    std::array<double, 2>{wind.air_north()(k), wind.air_east()(k)});
+    in.wind = std::move(wind);
+  }
   return in;
 }
 
@@ -363,6 +375,13 @@ void AdvanceTick(const EquationModel& system, const InputSources& in, const Comm
           : kind == SourceKind::kActuator ? y[index]
           : kind == SourceKind::kForce    ? forces[index]
                                           : in.recorded[index].At(ts + 1e-12)[0];
+    }
+    if (in.wind) {
+      const double* air = in.air.At(ts - system.DelayS() + 1e-12);
+      for (const auto& [i, value] :
+           in.wind->Inputs(air[0], air[1], state.x(in.wind->psi_channel()),
+                           state.x(in.wind->u_channel()), state.x(in.wind->v_channel())))
+        u(i) = value;
     }
     system.Step(u, clock.h, state.x);
   }
