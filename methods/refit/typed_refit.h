@@ -8,6 +8,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string_view>
 
 #include "core/correlation_time.h"
@@ -60,6 +61,7 @@ struct RefitSegment {
   std::vector<std::shared_ptr<const ResolvedTerm>> terms;  // at most kMaxRefitTerms
   std::array<double, kMaxRefitTerms> term_scale;
   double max_step;
+  bool wind_over_ground = false;  // the track's wind is the air over the ground
 
   int Residuals() const { return static_cast<int>((times.size() - 1) * C); }
 
@@ -82,6 +84,7 @@ struct RefitSegment {
     limits.fill(INFINITY);
     std::vector<T> out(times.size() * N);
     EffectValues<T> effects;
+    effects.wind_over_ground = wind_over_ground;
     for (size_t j = 0; j < terms.size(); ++j)
       effects.extra_terms.push_back({terms[j], kappa[j] * term_scale[j]});
     const size_t rows =
@@ -350,7 +353,12 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   for (int i = 0; i < V::kParams; ++i)
     if (free[i]) result.free.push_back(info.params[i]);
   // Data: inputs, dynamic states, their measurement noise.
-  const InputTrack track = RecordedInputs(data, info);
+  // A logged wind is met on each segment's own heading, as the free runs meet it
+  // (docs/model.md#wind-on-its-own-heading).
+  const InputTrack logged = RecordedInputs(data, info);
+  std::optional<InputTrack> air;
+  if constexpr (Plant<V>::kWindOverGround) air = WindOverGround(data, info, logged);
+  const InputTrack& track = air ? *air : logged;
   const detail::MeasuredStates<V> states = detail::MeasureStates<V>(info, data, o, &result);
   if (!(o.segment_s >= 0)) throw InputError("refit: --segment must be positive (0: automatic)");
   const double segment_s = o.segment_s > 0 ? o.segment_s : AutomaticSegmentSeconds(data, info);
@@ -372,6 +380,7 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   for (size_t j = 0; j < bounds.size(); ++j) {
     const auto [a, b] = bounds[j];
     RefitSegment<V>* seg = detail::NewSegment<V>(data, track, a, b, dt, states, scale, missing);
+    seg->wind_over_ground = air.has_value();
     for (int c = 0; c < C; ++c) x0[j][c] = seg->first[dyn[c]];
     const int residuals = seg->Residuals();
     result.residuals += residuals;
