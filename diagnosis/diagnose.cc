@@ -303,7 +303,9 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   const VesselSimulator& sim = FindVessel(vessel);
   const EffectFitter& fitter = FindEffectFitter(sim.Info().type);
   MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
+  const bool wind_over_ground = d.base.wind_over_ground;  // PrepareMeasuredData's, kept
   d.base = ValuesOf(options.base_effects, sim.Info().inputs, sim.Info().states);
+  d.base.wind_over_ground = wind_over_ground;
   const Context cx{sim, fitter, params, options, log};
 
   Diagnosis out = Describe(data, vessel, cx, d);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "core/error.h"
 #include "preprocessing/smoothing_spline.h"
@@ -198,6 +199,12 @@ MeasuredData PrepareMeasuredData(const Dataset& data, const VesselSimulator& sim
   }
   d.peak_command = d.inputs.PeakAbs();
   d.wind = info.wind_body && data.Has("wind_speed") && data.Get("wind_speed").SampleCount() > 0;
+  // A logged wind is met on each segment's own heading (docs/model.md#wind-on-its-own-heading).
+  if (d.wind)
+    if (std::optional<InputTrack> air = WindOverGround(data, info, d.inputs)) {
+      d.inputs = std::move(*air);
+      d.base.wind_over_ground = true;
+    }
 
   ChooseChannels(data, info, d);
   CopyMeasurements(data, d);

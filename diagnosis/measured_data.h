@@ -32,6 +32,8 @@ inline std::pair<Eigen::Index, Eigen::Index> SegmentRows(const Part& part, size_
 struct MeasuredData {
   std::string vessel;
   std::vector<double> times;
+  // The commands; a logged wind as the air over the ground where the record logs psi, u and v
+  // (base.wind_over_ground: each segment meets it on its own heading).
   InputTrack inputs{0};
   std::vector<double> peak_command;  // max |command| per input over the whole data
   std::vector<bool> measured_input;  // per input: a measured disturbance (wind), not a command

@@ -53,6 +53,12 @@ std::optional<std::array<Eigen::VectorXd, 2>> RecordedAirOverGround(const Datase
   const Eigen::Index rows = data.rows();
   std::array<Eigen::VectorXd, 2> air = {Eigen::VectorXd::Constant(rows, NAN),
                                         Eigen::VectorXd::Constant(rows, NAN)};
+  // A record whose wind reads 0 throughout logs none (a simulation without wind writes 0, which
+  // the wind model takes for calm): there is no true wind to take from it.
+  bool any_wind = false;
+  for (Eigen::Index k = 0; k < rows && !any_wind; ++k)
+    any_wind = speed.IsSampled(k) && speed.Value(k) != 0.0;
+  if (!any_wind) return std::nullopt;
   Eigen::Index first = -1;
   for (Eigen::Index k = 0; k < rows; ++k) {
     if (speed.IsSampled(k) && from.IsSampled(k) && psi.IsSampled(k) && u.IsSampled(k) &&

@@ -20,7 +20,8 @@ InputTrack RecordedInputs(const Dataset& data, const VesselInfo& info);
 // (maneuvers/true_wind.h, AirOverGround): the relative wind aboard is the true wind seen from the
 // logged hull, whose heading and velocities a free run or a replay does not share
 // (docs/model.md#wind-on-its-own-heading). A row that lacks one of the five holds the last row's
-// air (the first rows, the first air). Empty when the data lack one of them altogether.
+// air (the first rows, the first air). Empty when the data lack one of them altogether, or their
+// wind reads 0 throughout (no wind logged: a simulation without wind writes 0).
 std::optional<std::array<Eigen::VectorXd, 2>> RecordedAirOverGround(const Dataset& data);
 
 // `track`, RecordedInputs of `data`, with its measured wind turned into the air over the ground

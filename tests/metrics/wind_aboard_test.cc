@@ -73,12 +73,16 @@ TEST(WindAboardTest, AFreeRunTurnsUnderTheWindItsOwnHeadingMeets) {
   EXPECT_LT(windows.simulated["psi"].maxCoeff(), std::numbers::pi + 0.5);
 }
 
-TEST(WindAboardTest, WithoutTheLoggedHeadingTheWindIsReadAsLogged) {
+TEST(WindAboardTest, WithoutTheLoggedHeadingOrAnyWindTheWindIsReadAsLogged) {
   Dataset data = SwingingAboutNorthUnderAnEastWind();
   const std::vector<std::string> inputs = {"wind_v"}, channels = {"u", "v", "r", "psi"};
   EXPECT_TRUE(WindAboard(data, inputs, channels).engaged());
   EXPECT_FALSE(WindAboard(data, {"delta"}, channels).engaged());  // the model reads no wind
   EXPECT_FALSE(WindAboard(data, inputs, {"r"}).engaged());        // nor integrates a heading
+  // A wind that reads 0 throughout is none logged (a simulation without wind writes 0).
+  Dataset calm = data;
+  calm.Set("wind_speed", Eigen::VectorXd::Zero(calm.rows()));
+  EXPECT_FALSE(WindAboard(calm, inputs, channels).engaged());
   data.Remove("psi");
   EXPECT_FALSE(WindAboard(data, inputs, channels).engaged());
 }
