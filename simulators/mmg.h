@@ -54,14 +54,11 @@ struct Mmg : MmgCoefficients {
   static constexpr std::array<double, kInputs> kInputMax = {0.6109, 2.5, 100.0, 6.2832};
   static constexpr int kYawInput = 0, kThrustInput = 1, kRateState = 5, kHeadingState = 2;
   // What refit frees by default (docs/model.md#what-refit-frees): the resistance and the linear
-  // hull terms, the two cubic yaw terms that decide a tight turn, the rudder's flow
-  // straightening on either side (how far drift and yaw turn the rudder's inflow: a file
-  // without it takes KVLCC2's), and the wind's three leading coefficients (a head wind's drag,
-  // the beam wind's force and the moment that turns the bow into the wind; held by the prior
-  // where the record has no wind).
-  static constexpr std::array<std::string_view, 12> kRefitParams = {
-      "R_0",   "Y_v",         "Y_r",         "N_v",  "N_r",  "N_vvr",
-      "N_rrr", "gamma_R_pos", "gamma_R_neg", "C_X1", "C_Y1", "C_N2"};
+  // hull terms, the two cubic yaw terms that decide a tight turn, and the wind's three leading
+  // coefficients (a head wind's drag, the beam wind's force and the moment that turns the bow
+  // into the wind; held by the prior where the record has no wind).
+  static constexpr std::array<std::string_view, 10> kRefitParams = {
+      "R_0", "Y_v", "Y_r", "N_v", "N_r", "N_vvr", "N_rrr", "C_X1", "C_Y1", "C_N2"};
   static constexpr bool kSpeedScaledForces = true;  // MMG: forces 1/2 rho L d U^2 X'(v', r')
   static constexpr double kRunInS = 7200.0;         // [s] at most, from rest to steady speed
   // Parameters from this index on are the particulars: fixed.

@@ -39,8 +39,8 @@ struct RefitOptions {
   // (Ceres holds the Jacobian of every residual).
   long max_rows = 0;
   // Each record of a joint fit (core/records.h) weighs the same, whatever its length
-  // (record_weights.h; the default); false: each segment does, so a record weighs by its rows.
-  bool equal_records = true;
+  // (record_weights.h); false: each segment does, so a record weighs by its rows.
+  bool equal_records = false;
   int max_iterations = 100;
   int threads = 1;
   std::vector<Effect> terms;  // missing_term effects, their coefficients fitted

@@ -47,9 +47,9 @@ std::vector<OptionSpec> RefitOptionSpecs() {
                    /*min_exclusive=*/true),
       IntegerOption("fit_rows", kCeresFitRows, 0, kUnbounded,
                     "the most rows the Ceres fit uses, spread over a longer record (0: all)"),
-      ChoiceOption("record_weights", "equal", {"rows", "equal"},
-                   "how the records of a joint fit (--data a.csv,b.csv) weigh: each the same "
-                   "(equal), or by their rows (rows)"),
+      ChoiceOption("record_weights", "rows", {"rows", "equal"},
+                   "how the records of a joint fit (--data a.csv,b.csv) weigh: by their rows "
+                   "(rows), or each the same (equal)"),
   };
 }
 
