@@ -50,6 +50,22 @@ InputTrack RecordedTrack(const Dataset& recorded, const std::string& name) {
   return track;
 }
 
+// The input index of the command `name`, or -1.
+int CommandIndex(const Actuation& act, const std::string& name) {
+  const auto it = std::ranges::find(act.input_names, name);
+  return it == act.input_names.end() ? -1 : static_cast<int>(it - act.input_names.begin());
+}
+
+// The air over the ground on the record's rows [north, east] as a zero-order-hold track in the
+// record's time.
+InputTrack AirTrack(const Dataset& recorded, const Eigen::VectorXd& north,
+                    const Eigen::VectorXd& east) {
+  InputTrack track(2);
+  for (Eigen::Index k = 0; k < recorded.rows(); ++k)
+    track.Append(recorded.t()(k), std::array<double, 2>{north(k), east(k)});
+  return track;
+}
+
 // The maneuver, with every command but the yaw held at the record's first value: the record's
 // approach (its thrust, its bucket), which a vessel's default cruise need not be. A measured
 // disturbance (the wind) follows the record in time instead, zero-order hold. The relative wind
@@ -108,24 +124,18 @@ class RecordedApproach : public Maneuver {
   // The air over the ground on the record's rows (RecordedAirOverGround), when the vessel reads
   // the wind and has a heading and surge-sway states.
   void FollowTrueWind(const Dataset& recorded) {
-    wind_speed_ = CommandIndexOf("wind_speed");
-    wind_direction_ = CommandIndexOf("wind_direction");
-    if (wind_speed_ < 0 || wind_direction_ < 0 || act_.heading_state < 0 || act_.speed_state < 0 ||
-        !act_.speed_is_surge)
+    wind_speed_ = CommandIndex(act_, "wind_speed");
+    wind_direction_ = CommandIndex(act_, "wind_direction");
+    if (wind_speed_ < 0 || wind_direction_ < 0 || act_.roles[wind_speed_] != InputRole::kMeasured ||
+        act_.roles[wind_direction_] != InputRole::kMeasured || act_.heading_state < 0 ||
+        act_.speed_state < 0 || !act_.speed_is_surge)
       return;
     const std::optional<std::array<Eigen::VectorXd, 2>> air = RecordedAirOverGround(recorded);
     if (!air) return;
     const Eigen::VectorXd& psi = recorded["psi"];
     for (Eigen::Index k = 0; k < psi.size() && !std::isfinite(recorded_psi0_); ++k)
       recorded_psi0_ = psi(k);
-    for (Eigen::Index k = 0; k < recorded.rows(); ++k)
-      air_.Append(recorded.t()(k), std::array<double, 2>{(*air)[0](k), (*air)[1](k)});
-  }
-  int CommandIndexOf(const std::string& name) const {
-    const auto it = std::ranges::find(act_.input_names, name);
-    if (it == act_.input_names.end()) return -1;
-    const auto i = static_cast<int>(it - act_.input_names.begin());
-    return act_.roles[i] == InputRole::kMeasured ? i : -1;
+    air_ = AirTrack(recorded, (*air)[0], (*air)[1]);
   }
   std::unique_ptr<Maneuver> inner_;
   Actuation act_;
@@ -244,12 +254,6 @@ bool JetForces(const nlohmann::json& model) {
          model["preprocessing"].value("forces", nlohmann::json()) == "waterjet";
 }
 
-// The input index of the command `name`, or -1.
-int CommandIndex(const Actuation& act, const std::string& name) {
-  const auto it = std::ranges::find(act.input_names, name);
-  return it == act.input_names.end() ? -1 : static_cast<int>(it - act.input_names.begin());
-}
-
 // The index of actuator state `state` among `actuators`, added when new: simulated from its
 // command when the record's command varies, else held at the record's median. Throws
 // InputError when the record lacks the state or its command.
@@ -311,9 +315,7 @@ InputSources ResolveInputs(const EquationModel& system, const VesselInfo& info, 
       std::ranges::any_of(in.sources, [](const auto& s) { return s.first == SourceKind::kForce; });
   WindAboard wind(recorded, system.Inputs(), system.Channels());
   if (wind.engaged() && wind.u_channel() >= 0 && wind.v_channel() >= 0) {
-    for (Eigen::Index k = 0; k < recorded.rows(); ++k)
-      in.air.Append(recorded.t()(k),
-                    std::array<double, 2>{wind.air_north()(k), wind.air_east()(k)});
+    in.air = AirTrack(recorded, wind.air_north(), wind.air_east());
     in.wind = std::move(wind);
   }
   return in;
@@ -378,10 +380,8 @@ void AdvanceTick(const EquationModel& system, const InputSources& in, const Comm
     }
     if (in.wind) {
       const double* air = in.air.At(ts - system.DelayS() + 1e-12);
-      for (const auto& [i, value] :
-           in.wind->Inputs(air[0], air[1], state.x(in.wind->psi_channel()),
-                           state.x(in.wind->u_channel()), state.x(in.wind->v_channel())))
-        u(i) = value;
+      in.wind->Set(air[0], air[1], state.x(in.wind->psi_channel()), state.x(in.wind->u_channel()),
+                   state.x(in.wind->v_channel()), [&](int i, double value) { u(i) = value; });
     }
     system.Step(u, clock.h, state.x);
   }

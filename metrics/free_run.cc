@@ -137,19 +137,19 @@ double HeldInputIn(const Dataset& d, const Eigen::VectorXd& u, Eigen::Index firs
   return u(first + std::max<Eigen::Index>(0, (it - ts) - 1));
 }
 
-// The wind inputs at time t (the record's rows [first, first + count), zero-order hold) from
-// the air over the ground and a free run's own heading and velocities `state(channel)`
-// (WindAboard; the record's u, v where the model does not integrate them).
-template <typename State>
-std::vector<std::pair<int, double>> WindInputsAt(const WindAboard& wind, const Dataset& d,
-                                                 Eigen::Index first, Eigen::Index count, double t,
-                                                 State state) {
+// Sets the wind inputs among `u` at time t (the record's rows [first, first + count), zero-order
+// hold) from the air over the ground and a free run's own heading and velocities
+// `state(channel)` (WindAboard; the record's u, v where the model does not integrate them).
+template <typename State, typename Inputs>
+void SetWindInputs(const WindAboard& wind, const Dataset& d, Eigen::Index first, Eigen::Index count,
+                   double t, State state, Inputs&& u) {
   const auto own = [&](int channel, const char* recorded) {
     return channel >= 0 ? state(channel) : HeldInputIn(d, d[recorded], first, count, t);
   };
-  return wind.Inputs(HeldInputIn(d, wind.air_north(), first, count, t),
-                     HeldInputIn(d, wind.air_east(), first, count, t), state(wind.psi_channel()),
-                     own(wind.u_channel(), "u"), own(wind.v_channel(), "v"));
+  wind.Set(HeldInputIn(d, wind.air_north(), first, count, t),
+           HeldInputIn(d, wind.air_east(), first, count, t), state(wind.psi_channel()),
+           own(wind.u_channel(), "u"), own(wind.v_channel(), "v"),
+           [&](int i, double value) { u(i) = value; });
 }
 
 }  // namespace
@@ -184,9 +184,9 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
         for (size_t i = 0; i < inputs.size(); ++i)
           u(static_cast<Eigen::Index>(i)) = HeldInput(data, *inputs[i], t - system.DelayS());
         if (wind.engaged())
-          for (const auto& [i, value] :
-               WindInputsAt(wind, data, 0, rows, t - system.DelayS(), [&](int c) { return x(c); }))
-            u(i) = value;
+          SetWindInputs(
+              wind, data, 0, rows, t - system.DelayS(), [&](int c) { return x(c); },
+              [&](Eigen::Index i) -> double& { return u(i); });
         system.Step(u, h, x);
       }
       if (const int bad = bounds.Exceeded(x); bad >= 0) {
@@ -281,10 +281,9 @@ FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
           u(j, i) = HeldInputIn(data, *inputs[static_cast<size_t>(i)], starts[j],
                                 end(j) - starts[j], at - system.DelayS());
         if (wind.engaged())
-          for (const auto& [i, value] :
-               WindInputsAt(wind, data, starts[j], end(j) - starts[j], at - system.DelayS(),
-                            [&](int c) { return x(j, c); }))
-            u(j, i) = value;
+          SetWindInputs(
+              wind, data, starts[j], end(j) - starts[j], at - system.DelayS(),
+              [&](int c) { return x(j, c); }, [&](Eigen::Index i) -> double& { return u(j, i); });
       }
       system.Steps(u, h, advance, x);
     }

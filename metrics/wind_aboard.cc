@@ -36,15 +36,11 @@ WindAboard::WindAboard(const Dataset& data, const std::vector<std::string>& inpu
   engaged_ = true;
 }
 
-std::vector<std::pair<int, double>> WindAboard::Inputs(double north, double east, double psi,
-                                                       double u, double v) const {
+std::array<double, 4> WindAboard::Values(double north, double east, double psi, double u,
+                                         double v) {
   const std::array<double, 2> rel = RelativeWindOf({north, east}, psi, u, v);
   // data.md#derived-channels: the air's velocity past the ship, -V [cos gamma, sin gamma].
-  const std::array<double, 4> value = {rel[0], rel[1], -rel[0] * std::cos(rel[1]),
-                                       -rel[0] * std::sin(rel[1])};
-  std::vector<std::pair<int, double>> out;
-  for (const auto& [input, kind] : wind_inputs_) out.emplace_back(input, value[kind]);
-  return out;
+  return {rel[0], rel[1], -rel[0] * std::cos(rel[1]), -rel[0] * std::sin(rel[1])};
 }
 
 }  // namespace usvid

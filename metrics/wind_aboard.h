@@ -36,12 +36,19 @@ class WindAboard {
   int u_channel() const { return u_; }
   int v_channel() const { return v_; }
 
-  // The wind inputs, as pairs (index among the inputs, its value), that the air [north, east]
-  // makes over a hull heading psi with body velocities u, v.
-  std::vector<std::pair<int, double>> Inputs(double north, double east, double psi, double u,
-                                             double v) const;
+  // Sets each wind input, set(index among the inputs, its value), to what the air [north, east]
+  // makes over a hull heading psi with body velocities u, v. Called at every integration step:
+  // it allocates nothing.
+  template <typename Setter>
+  void Set(double north, double east, double psi, double u, double v, Setter set) const {
+    const std::array<double, 4> value = Values(north, east, psi, u, v);
+    for (const auto& [input, kind] : wind_inputs_) set(input, value[kind]);
+  }
 
  private:
+  // wind_speed, wind_direction, wind_u, wind_v aboard.
+  static std::array<double, 4> Values(double north, double east, double psi, double u, double v);
+
   bool engaged_ = false;
   int psi_ = -1, u_ = -1, v_ = -1;
   // Per wind input: its index among the inputs, and which of speed, direction, wind_u, wind_v.
