@@ -1,6 +1,7 @@
 #include "core/records.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 
@@ -66,6 +67,29 @@ std::vector<long> RecordStarts(const Eigen::Ref<const Eigen::VectorXd>& t) {
   for (Eigen::Index i = 1; i < t.size(); ++i)
     if (t(i) - t(i - 1) >= 0.5 * kRecordGapS) starts.push_back(static_cast<long>(i));
   return starts;
+}
+
+RecordSplit SplitEachRecord(const Dataset& data, double last_share, long min_rows,
+                            const std::string& what) {
+  const std::vector<long> starts = RecordStarts(data.t());
+  if (starts.empty()) throw InputError(data.SourcePrefix() + what + ": no rows");
+  std::vector<Dataset> first, last;
+  for (size_t k = 0; k < starts.size(); ++k) {
+    const long begin = starts[k];
+    const long end = k + 1 < starts.size() ? starts[k + 1] : static_cast<long>(data.rows());
+    const long split =
+        begin +
+        static_cast<long>(std::floor((1.0 - last_share) * static_cast<double>(end - begin)));
+    if (split - begin < min_rows || end - split < min_rows)
+      throw InputError(data.SourcePrefix() + what + ": too few rows to hold out a part of record " +
+                       std::to_string(k + 1) + " of " + std::to_string(starts.size()) + " (" +
+                       std::to_string(end - begin) + ")");
+    first.push_back(data.Rows(begin, split - begin));
+    last.push_back(data.Rows(split, end - split));
+  }
+  RecordSplit out{JoinRecords(std::move(first)), JoinRecords(std::move(last))};
+  out.first.metadata() = out.last.metadata() = data.metadata();
+  return out;
 }
 
 std::vector<std::string> RecordList(const std::string& text, const std::string& what) {

@@ -26,6 +26,16 @@ Dataset JoinRecords(std::vector<Dataset> records, std::vector<std::string>* drop
 // not records). One record: {0}; no rows: {}.
 std::vector<long> RecordStarts(const Eigen::Ref<const Eigen::VectorXd>& t);
 
+// Each record of a joined record cut in two: the first (1 - last_share) of its rows, and the
+// rest. The first parts are joined again, and the last parts, so that every record (every
+// maneuver of a joint fit) is in both; metadata: `data`'s. One record: rows [0, split) and
+// [split, end). InputError "`what`: ..." when a record's part would hold fewer than min_rows.
+struct RecordSplit {
+  Dataset first, last;
+};
+RecordSplit SplitEachRecord(const Dataset& data, double last_share, long min_rows,
+                            const std::string& what);
+
 // Splits "a.csv,b.csv" at the commas; InputError "`what`: ..." for an empty list or name.
 std::vector<std::string> RecordList(const std::string& text, const std::string& what);
 

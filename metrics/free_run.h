@@ -8,8 +8,8 @@
 // "parameters": {...}, "effects": [...]}, as `identify --method refit` and `diagnose` write them,
 // or just {"vessel": "kvlcc2"} for the nominal simulator) is free-run by that simulator on the
 // data's inputs from the data's first row, its measured states compared.
-// The run stops when a state leaves its bound (DivergenceBounds): it is then reported as
-// diverged, with the channel and time, and the rest holds the last finite value, so scores stay
+// The run stops when a state leaves its bound (simulation/divergence_bounds.h): it is then reported
+// as diverged, with the channel and time, and the rest holds the last finite value, so scores stay
 // finite.
 #pragma once
 
@@ -19,6 +19,7 @@
 
 #include "core/dataset.h"
 #include "effects/effect.h"
+#include "simulation/divergence_bounds.h"
 
 namespace usvid {
 
@@ -34,23 +35,6 @@ struct VesselModel {
 bool IsVesselModel(const nlohmann::json& model);
 // Throws InputError for an unknown vessel, parameter or effect.
 VesselModel ParseVesselModel(const nlohmann::json& model);
-
-// Divergence, per channel. A state with its own dynamics (a velocity, a rate, an actuator
-// state) has diverged when it leaves ten times the largest magnitude the data show of it (of at
-// least 1e-3 in its unit, for a channel the data hold at zero); positions and heading, the
-// integrals of those, only when they are no longer finite (a model that turns where the vessel
-// went straight is wrong, not divergent). One bound for all channels would let a velocity grow to
-// ten times the position range before the run counted as diverged.
-class DivergenceBounds {
- public:
-  DivergenceBounds(const std::vector<std::string>& channels, const Dataset& data);
-  // The index of the first channel of `x` out of its bound, or -1.
-  int Exceeded(const Eigen::VectorXd& x) const;
-  double Bound(size_t i) const { return bounds_[i]; }
-
- private:
-  std::vector<double> bounds_;  // +infinity: only finiteness checked
-};
 
 struct FreeRun {
   Dataset simulated;                  // the integrated channels at the data's time stamps

@@ -7,6 +7,8 @@
 
 #include "core/error.h"
 #include "core/evenly_spread.h"
+#include "core/records.h"
+#include "methods/hybrid/heldout_free_run.h"
 #include "preprocessing/pipeline.h"
 #include "simulation/segment_length.h"
 #include "simulation/vessel_simulator.h"
@@ -15,11 +17,6 @@ namespace usvid::hybrid {
 namespace {
 
 constexpr double kNoScore = std::numeric_limits<double>::infinity();
-
-// Rows [0, split) or [split, end) of `data`.
-Dataset Part(const Dataset& data, Eigen::Index split, bool first) {
-  return first ? data.Rows(0, split) : data.Rows(split, data.rows() - split);
-}
 
 // At most max_rows rows of `data` (all when max_rows is 0), spread evenly over it.
 void ThinRows(Dataset& data, long max_rows) {
@@ -72,18 +69,19 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   // fits and scores takes half of max_rows (whatever the threads, so the numbers do not depend
   // on them), and the selection holds no more than the final fit on the whole record.
   if (refit.max_rows > 0) refit.max_rows = std::max<long>(1, refit.max_rows / 2);
-  const Eigen::Index split =
-      static_cast<Eigen::Index>(std::floor((1.0 - options.heldout) * static_cast<double>(data.rows())));
-  if (split < 16 || data.rows() - split < 16)
-    throw InputError(data.SourcePrefix() + "hybrid: too few rows to hold out a part (" +
-                     std::to_string(data.rows()) + ")");
-  const Dataset first = Part(data, split, true), heldout = Part(data, split, false);
+  // Each record fits and judges (core/records.h): cut at the share of the rows alone, eight
+  // joined runs (random, turning, zig-zag) were fitted on the random runs and turns and judged
+  // on the zig-zags.
+  const RecordSplit parts = SplitEachRecord(data, options.heldout, 16, std::string(kMethodName));
+  const Dataset &first = parts.first, &heldout = parts.last;
 
   HybridResult result;
   const RefitResult vessel_fit = RefitVessel(vessel, first, start, refit);
   const RefitResult vessel_score = HeldoutScore(vessel, heldout, vessel_fit, refit);
   result.vessel_heldout_error = MeanSquaredError(vessel_score);
   result.effective_samples = vessel_score.residuals / vessel_score.correlation_time;
+  result.vessel_free_run_error =
+      HeldoutFreeRunError(vessel, heldout, vessel_fit.params, {}, states);
 
   // Proposals from the derivative residual on the first part.
   // The derivative residual is regressed on the library at rows spread over the first part (at
@@ -115,11 +113,13 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   // Forward selection by held-out simulation.
   std::vector<Effect> chosen;
   double error = result.vessel_heldout_error;
+  double free_run_error = result.vessel_free_run_error;
   const int n = static_cast<int>(result.proposals.size());
   std::vector<bool> taken(static_cast<size_t>(n), false);
   for (int round = 0; round < options.max_terms; ++round) {
     SelectionRound r;
     r.heldout_error.assign(static_cast<size_t>(n), kNoScore);
+    r.free_run_error.assign(static_cast<size_t>(n), kNoScore);
     std::vector<RefitResult> fits(static_cast<size_t>(n));
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(1, options.refit.threads))
     for (int j = 0; j < n; ++j) {
@@ -132,13 +132,18 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
         fits[j] = RefitVessel(vessel, first, start, o);
         const double e = MeanSquaredError(HeldoutScore(vessel, heldout, fits[j], o));
         if (std::isfinite(e)) r.heldout_error[j] = e;
+        r.free_run_error[j] =
+            HeldoutFreeRunError(vessel, heldout, fits[j].params, fits[j].terms, states);
       } catch (const std::exception&) {
         // A proposal whose fit fails is not chosen (its error stays infinite).
       }
     }
+    // The best by multiple shooting among the proposals whose free runs hold and are no worse.
     int best = -1;
     for (int j = 0; j < n; ++j)
-      if (std::isfinite(r.heldout_error[j]) && (best < 0 || r.heldout_error[j] < r.heldout_error[best]))
+      if (std::isfinite(r.heldout_error[j]) && std::isfinite(r.free_run_error[j]) &&
+          r.free_run_error[j] <= free_run_error &&
+          (best < 0 || r.heldout_error[j] < r.heldout_error[best]))
         best = j;
     if (best >= 0 && r.heldout_error[best] > 0.0)
       r.likelihood_ratio = result.effective_samples * std::log(error / r.heldout_error[best]);
@@ -147,11 +152,13 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
       taken[best] = true;
       chosen = fits[best].terms;  // the coefficients fitted so far start the next round
       error = r.heldout_error[best];
+      free_run_error = r.free_run_error[best];
     }
     result.rounds.push_back(r);
     if (r.chosen < 0) break;
   }
   result.heldout_error = error;
+  result.free_run_error = free_run_error;
 
   RefitOptions final_options = refit;
   final_options.terms = chosen;

@@ -1,6 +1,7 @@
 // `hybrid`: a registered vessel plus the discrepancy terms its physics lacks (Grey-box
 // identification: the model a naval architect trusts, and what the data say it misses).
-//  1. The training record is split: the first part fits, the last `heldout` part judges.
+//  1. The training record is split: the first part fits, the last `heldout` part judges; joined
+//     records one by one (core/records.h: SplitEachRecord), so that every record does both.
 //  2. The vessel is refitted on the first part (methods/refit: its own coefficients, multiple
 //     shooting, a prior around the published values).
 //  3. Proposals: forward orthogonal least squares (term_proposals.h), per_state terms for each
@@ -10,9 +11,10 @@
 //     chosen so far, the vessel and all the terms fitted together on the first part by
 //     multiple shooting, and the result scored on the held-out part (each segment's initial
 //     state estimated, the model held). The best is kept when its likelihood ratio on the
-//     held-out part passes a chi-square test (critical_ratio); at most max_terms rounds. A derivative residual proposes, the held-out
-//     simulation decides: on real data the proposals with the largest ERR often chase noise in
-//     the differentiated states.
+//     held-out part passes a chi-square test (critical_ratio), and only if the held-out part's
+//     free runs (heldout_free_run.h) are no worse with it; at most max_terms rounds. A
+//     derivative residual proposes, the held-out simulation decides: on real data the proposals
+//     with the largest ERR often chase noise in the differentiated states.
 //  5. The vessel and the chosen terms are refitted together on the whole record.
 // The model is a vessel model (like refit's) whose "effects" are the chosen missing terms, so
 // `usvid evaluate`, `simulate --params` and `diagnose --params` run it.
@@ -44,6 +46,7 @@ struct HybridOptions {
 
 struct SelectionRound {
   std::vector<double> heldout_error;  // per proposal (infinity: already chosen or failed)
+  std::vector<double> free_run_error;  // per proposal (heldout_free_run.h; infinity: diverged)
   double likelihood_ratio = 0.0;      // of the best
   int chosen = -1;                    // index into proposals; -1: none good enough, stop
 };
@@ -55,6 +58,9 @@ struct HybridResult {
   double effective_samples = 0.0;     // N_eff of the held-out part
   std::vector<SelectionRound> rounds;
   double heldout_error = 0.0;  // with the chosen terms (fitted on the first part)
+  // The free runs of the held-out part (heldout_free_run.h): the vessel alone, and with the terms.
+  double vessel_free_run_error = 0.0;
+  double free_run_error = 0.0;
   double seconds = 0.0;
 };
 

@@ -12,6 +12,11 @@
 namespace usvid {
 namespace {
 
+// A free-run error, or "diverged".
+nlohmann::json FiniteOr(double error) {
+  return std::isfinite(error) ? nlohmann::json(error) : nlohmann::json("diverged");
+}
+
 // hybrid: the vessel refitted with the missing terms its residual proposes and held-out
 // simulation keeps (methods/hybrid/hybrid.h); a vessel model whose effects are those terms.
 nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o,
@@ -35,7 +40,12 @@ nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o
     for (size_t j = 0; j < r.heldout_error.size(); ++j)
       if (std::isfinite(r.heldout_error[j]))
         errors[EffectLabel(h.proposals[j].term)] = r.heldout_error[j];
+    nlohmann::json free_runs = nlohmann::json::object();
+    for (size_t j = 0; j < r.free_run_error.size(); ++j)
+      if (std::isfinite(r.heldout_error[j]))
+        free_runs[EffectLabel(h.proposals[j].term)] = FiniteOr(r.free_run_error[j]);
     rounds.push_back({{"heldout_error", errors},
+                      {"free_run_error", free_runs},
                       {"likelihood_ratio", r.likelihood_ratio},
                       {"chosen", r.chosen >= 0 ? EffectLabel(h.proposals[r.chosen].term)
                                                : std::string("none")}});
@@ -59,7 +69,9 @@ nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o
             {"vessel_heldout_error", h.vessel_heldout_error},
             {"effective_samples", h.effective_samples},
             {"critical_ratio", ho.critical_ratio},
-            {"heldout_error", h.heldout_error}}},
+            {"heldout_error", h.heldout_error},
+            {"vessel_free_run_error", FiniteOr(h.vessel_free_run_error)},
+            {"free_run_error", FiniteOr(h.free_run_error)}}},
           {"train", {{"data", o.data_name}, {"samples", data.rows()}, {"seconds", h.seconds}}}};
 }
 

@@ -1,7 +1,8 @@
 // Records joined for one fit (core/records.h) and the stretches between gaps
 // (core/stretches.h): each record's time follows the one before after kRecordGapS, every
 // record's rows are kept in order, the channels only some records have are left out and named,
-// and the join is a gap that cuts the joined series into exactly its records.
+// the join is a gap that cuts the joined series into exactly its records, and a split of each
+// record puts every record in both parts.
 #include "core/records.h"
 
 #include <gtest/gtest.h>
@@ -65,6 +66,38 @@ TEST(RecordsTest, TheJoinIsAGapThatCutsTheSeriesIntoItsRecords) {
     EXPECT_EQ(s[1].first, 30);
     EXPECT_EQ(s[1].rows(), 20);
     EXPECT_EQ(s[2].end, 75);
+  }
+}
+
+TEST(RecordsTest, EachRecordIsSplitSoThatEveryRecordIsInBothParts) {
+  // A fit on the first parts judged on the last parts sees every maneuver in both: split at the
+  // share of the joined rows, the first part would be records a and b, the last record c alone.
+  const Dataset joined =
+      JoinRecords({Record(0.0, 0.1, 30, 0.0, false, "a"), Record(0.0, 0.1, 60, 100.0, false, "b"),
+                   Record(0.0, 0.1, 90, 200.0, false, "c")});
+  const RecordSplit parts = SplitEachRecord(joined, 1.0 / 3.0, 5, "test");
+  ASSERT_EQ(parts.first.rows(), 20 + 40 + 60);
+  ASSERT_EQ(parts.last.rows(), 10 + 20 + 30);
+  EXPECT_EQ(RecordStarts(parts.first.t()), (std::vector<long>{0, 20, 60}));
+  EXPECT_EQ(RecordStarts(parts.last.t()), (std::vector<long>{0, 10, 30}));
+  EXPECT_EQ(parts.first["x"](19), 19.0);  // a's first two thirds
+  EXPECT_EQ(parts.last["x"](0), 20.0);    // a's last third
+  EXPECT_EQ(parts.last["x"](10), 140.0);  // b's from its row 40
+  EXPECT_EQ(parts.last["x"](59), 289.0);  // c's last row
+  EXPECT_EQ(parts.first.metadata().at("records"), "3");
+  // One record: its first rows and its last.
+  const RecordSplit one = SplitEachRecord(Record(5.0, 0.1, 30, 0.0, false, "a"), 0.5, 5, "test");
+  EXPECT_EQ(one.first.rows(), 15);
+  EXPECT_EQ(one.last.t()(0), 6.5);
+  // A record too short to give each part min_rows is an input error naming it.
+  try {
+    SplitEachRecord(joined, 1.0 / 3.0, 11, "hybrid");
+    FAIL() << "record a has 10 rows to hold out";
+  } catch (const InputError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("hybrid: too few rows to hold out a part of record 1 of 3"),
+        std::string::npos)
+        << e.what();
   }
 }
 

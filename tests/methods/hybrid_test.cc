@@ -1,8 +1,9 @@
 // `hybrid` (methods/hybrid/hybrid.h): a registered vessel plus the terms its physics lacks.
 // Data from odin3dof with a cross-flow yaw term it does not have, r' += 0.05 |v| v: the hybrid
 // adds exactly that term, with its coefficient, and nothing else; from the vessel as it is, it
-// adds nothing. The proposals (FROLS) find the terms of a known residual, and a speed-scaled
-// vessel's library has the MMG form.
+// adds nothing. A free run, which checks each term, tells a missing term from an unstable one.
+// The proposals (FROLS) find the terms of a known residual, and a speed-scaled vessel's library
+// has the MMG form.
 #include "methods/hybrid/hybrid.h"
 
 #include <gmock/gmock.h>
@@ -12,8 +13,10 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/records.h"
 #include "effects/effect_values.h"
 #include "maneuvers/maneuver_factory.h"
+#include "methods/hybrid/heldout_free_run.h"
 #include "methods/hybrid/term_proposals.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
@@ -61,6 +64,29 @@ TEST(HybridTest, AddsNothingToTheVesselAsItIs) {
   EXPECT_TRUE(h.fit.terms.empty());
   ASSERT_EQ(h.rounds.size(), 1u);
   EXPECT_LT(h.rounds[0].likelihood_ratio, options.critical_ratio);
+}
+
+TEST(HybridTest, AFreeRunChecksTheModelOnEachHeldOutRecordFromItsOwnStart) {
+  // Two records of odin3dof with the cross-flow term, joined: the vessel with the term free-runs
+  // them to the noise; without it the error is larger; with an unstable yaw term the runs leave
+  // their bounds, which multiple shooting from each segment's measured state would not see.
+  // Each record runs from its own first row: run across the join, the second would start from
+  // the first one's end.
+  const VesselInfo& info = FindVessel("odin3dof").Info();
+  const Dataset joined =
+      JoinRecords({Simulate({kCrossFlowYaw}, 300, 7), Simulate({kCrossFlowYaw}, 300, 8)});
+  const std::vector<std::string> states = {"u", "v", "r"};
+  const double with_term =
+      hybrid::HeldoutFreeRunError("odin3dof", joined, info.default_params, {kCrossFlowYaw}, states);
+  const double without =
+      hybrid::HeldoutFreeRunError("odin3dof", joined, info.default_params, {}, states);
+  EXPECT_LT(with_term, 0.01);
+  EXPECT_GT(without, 10.0 * with_term);
+  // A yaw moment that grows with the rate squared the wrong way, as the Esso Osaka runs proposed.
+  const Effect unstable{EffectKind::kMissingTerm, {{"coefficient", 10.0}}, {}, "r", "abs(r)*r"};
+  const double e = hybrid::HeldoutFreeRunError("odin3dof", joined, info.default_params,
+                                               {kCrossFlowYaw, unstable}, states);
+  EXPECT_TRUE(std::isinf(e)) << e;
 }
 
 TEST(HybridTest, RefusesWhatItCannotDo) {
