@@ -20,7 +20,7 @@ double HeldoutFreeRunError(const std::string& vessel, const Dataset& heldout,
   const std::vector<long> starts = RecordStarts(heldout.t());
   std::vector<double> squared(states.size(), 0.0), sum(states.size(), 0.0),
       sum_squares(states.size(), 0.0);
-  long rows = 0;
+  std::vector<long> samples(states.size(), 0);
   for (size_t k = 0; k < starts.size(); ++k) {
     const long end = k + 1 < starts.size() ? starts[k + 1] : static_cast<long>(heldout.rows());
     const Dataset record = heldout.Rows(starts[k], end - starts[k]);
@@ -33,22 +33,26 @@ double HeldoutFreeRunError(const std::string& vessel, const Dataset& heldout,
         x(static_cast<Eigen::Index>(s)) = run.data[states[s]](row);
       if (bounds.Exceeded(x) >= 0) return kDiverged;
       for (size_t s = 0; s < states.size(); ++s) {
-        const double measured = record[states[s]](row);
+        // Compared where the state was measured (a sensor's own rate, a dropout: not sampled).
+        const double measured = record.Get(states[s]).Value(row);
+        if (!std::isfinite(measured)) continue;
         squared[s] += std::pow(x(static_cast<Eigen::Index>(s)) - measured, 2);
         sum[s] += measured;
         sum_squares[s] += measured * measured;
+        ++samples[s];
       }
     }
-    rows += record.rows();
   }
   double error = 0.0;
+  int compared = 0;
   for (size_t s = 0; s < states.size(); ++s) {
-    const double mean = sum[s] / static_cast<double>(rows);
-    const double variance =
-        std::max(sum_squares[s] / static_cast<double>(rows) - mean * mean, 1e-12);
-    error += squared[s] / static_cast<double>(rows) / variance;
+    if (samples[s] == 0) continue;
+    const auto n = static_cast<double>(samples[s]);
+    const double variance = std::max(sum_squares[s] / n - std::pow(sum[s] / n, 2), 1e-12);
+    error += squared[s] / n / variance;
+    ++compared;
   }
-  return error / static_cast<double>(states.size());
+  return compared > 0 ? error / compared : 0.0;
 }
 
 }  // namespace usvid::hybrid

@@ -17,8 +17,8 @@
 namespace usvid::hybrid {
 
 // The mean over the `states` of each one's free-run mean squared error over its variance in
-// `heldout`, over all of its records (core/records.h); +infinity when a run leaves the bounds of
-// simulation/divergence_bounds.h.
+// `heldout`, over all of its records (core/records.h) and the rows where the state was sampled;
+// +infinity when a run leaves the bounds of simulation/divergence_bounds.h.
 double HeldoutFreeRunError(const std::string& vessel, const Dataset& heldout,
                            const std::vector<double>& params, const std::vector<Effect>& terms,
                            const std::vector<std::string>& states);

@@ -82,6 +82,18 @@ TEST(HybridTest, AFreeRunChecksTheModelOnEachHeldOutRecordFromItsOwnStart) {
       hybrid::HeldoutFreeRunError("odin3dof", joined, info.default_params, {}, states);
   EXPECT_LT(with_term, 0.01);
   EXPECT_GT(without, 10.0 * with_term);
+  // A state logged at a third of the rate (its other rows not sampled) is compared where it was.
+  Dataset sparse = joined;
+  Channel::Mask every_third = Channel::Mask::Constant(sparse.rows(), false);
+  Eigen::VectorXd u = Eigen::VectorXd::Constant(sparse.rows(), std::nan(""));
+  for (Eigen::Index k = 0; k < sparse.rows(); k += 3) {
+    every_third(k) = true;
+    u(k) = sparse["u"](k);
+  }
+  sparse.Set("u", u, every_third);
+  EXPECT_NEAR(
+      hybrid::HeldoutFreeRunError("odin3dof", sparse, info.default_params, {kCrossFlowYaw}, states),
+      with_term, 0.005);
   // A yaw moment that grows with the rate squared the wrong way, as the Esso Osaka runs proposed.
   const Effect unstable{EffectKind::kMissingTerm, {{"coefficient", 10.0}}, {}, "r", "abs(r)*r"};
   const double e = hybrid::HeldoutFreeRunError("odin3dof", joined, info.default_params,
