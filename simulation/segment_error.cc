@@ -5,19 +5,29 @@
 
 #include "core/error.h"
 #include "core/stretches.h"
+#include "simulation/divergence_bounds.h"
 
 namespace usvid {
 
-double SegmentedSimulationError(const VesselSimulator& sim, const std::vector<double>& params,
-                                const EffectValues<double>& effects, const Dataset& data,
-                                const std::vector<std::string>& channels, double segment_s,
-                                const RunOptions& options) {
+SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
+                                          const std::vector<double>& params,
+                                          const EffectValues<double>& effects, const Dataset& data,
+                                          const std::vector<std::string>& channels,
+                                          double segment_s, const RunOptions& options) {
   if (!(segment_s > 0)) throw InputError("segment length must be positive");
   std::vector<double> variance;
   for (const std::string& c : channels) {
     const Eigen::ArrayXd v = data[c].array();
-    variance.push_back(std::max((v - v.mean()).square().mean(), 1e-300));
+    if (v.allFinite()) {
+      variance.push_back(std::max((v - v.mean()).square().mean(), 1e-300));
+    } else {  // over the sampled rows
+      const auto sampled = v.isFinite();
+      const auto n = static_cast<double>(std::max<Eigen::Index>(1, sampled.count()));
+      const double mean = sampled.select(v, 0.0).sum() / n;
+      variance.push_back(std::max(sampled.select((v - mean).square(), 0.0).sum() / n, 1e-300));
+    }
   }
+  SegmentedError out;
   double total = 0.0;
   long count = 0;
   const Eigen::VectorXd& t = data.t();
@@ -37,17 +47,37 @@ double SegmentedSimulationError(const VesselSimulator& sim, const std::vector<do
     Dataset segment = data;
     segment.KeepRows(keep);
     const SimulationResult r = sim.RunInputs(segment, params, effects, options);
+    std::vector<const Eigen::VectorXd*> simulated;
+    if (r.data.rows() > 0)
+      for (const std::string& c : channels) simulated.push_back(&r.data[c]);
+    out.diverged = out.diverged || r.data.rows() < segment.rows();
+    const DivergenceBounds bounds(channels, segment);
+    Eigen::VectorXd x(static_cast<Eigen::Index>(channels.size()));
+    for (Eigen::Index k = 0; k < r.data.rows() && !out.diverged; ++k) {
+      for (size_t c = 0; c < channels.size(); ++c)
+        x(static_cast<Eigen::Index>(c)) = (*simulated[c])(k);
+      out.diverged = bounds.Exceeded(x) >= 0;
+    }
     for (size_t c = 0; c < channels.size(); ++c) {
       const Eigen::VectorXd& y = segment[channels[c]];
       for (Eigen::Index k = 0; k < segment.rows(); ++k) {
-        const double e = k < r.data.rows() ? r.data[channels[c]](k) - y(k) : y(k);
+        if (!std::isfinite(y(k))) continue;  // not sampled there
+        const double e = k < r.data.rows() ? (*simulated[c])(k)-y(k) : y(k);
         total += e * e / variance[c];
+        ++count;
       }
     }
-    count += static_cast<long>(segment.rows() * channels.size());
     start = end;
   }
-  return count > 0 ? total / static_cast<double>(count) : 0.0;
+  out.error = count > 0 ? total / static_cast<double>(count) : 0.0;
+  return out;
+}
+
+double SegmentedSimulationError(const VesselSimulator& sim, const std::vector<double>& params,
+                                const EffectValues<double>& effects, const Dataset& data,
+                                const std::vector<std::string>& channels, double segment_s,
+                                const RunOptions& options) {
+  return SegmentedSimulationErrorOf(sim, params, effects, data, channels, segment_s, options).error;
 }
 
 }  // namespace usvid

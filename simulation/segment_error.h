@@ -1,9 +1,11 @@
 // How far a simulator's free run is from measured data, over short segments: the data are cut
-// into segments of segment_s seconds, each simulated open-loop from its first row's measured
-// state under the recorded inputs, and the squared errors of the state channels, each divided by
-// that channel's variance over the data, are averaged. Short segments keep the cost smooth for
-// unstable hulls, whose long free runs separate whatever the parameters. A diverged segment
-// costs as much as predicting zero.
+// into segments of segment_s seconds (none across a gap: a join of records, a dropout), each
+// simulated open-loop from its first row's measured state under the recorded inputs, and the
+// squared errors of the state channels, each divided by that channel's variance over the data,
+// are averaged over the rows where the channel was sampled. Short segments keep the cost smooth
+// for unstable hulls, whose long free runs separate whatever the parameters. A diverged segment
+// costs as much as predicting zero. segment_s may be infinite: each stretch between gaps is one
+// free run (the hybrid's check of its terms, methods/hybrid/heldout_free_run.h).
 #pragma once
 
 #include <string>
@@ -13,6 +15,19 @@
 
 namespace usvid {
 
+struct SegmentedError {
+  double error = 0.0;
+  // Whether a segment's run stopped early or left the bounds of simulation/divergence_bounds.h.
+  bool diverged = false;
+};
+
+SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
+                                          const std::vector<double>& params,
+                                          const EffectValues<double>& effects, const Dataset& data,
+                                          const std::vector<std::string>& channels,
+                                          double segment_s, const RunOptions& options = {});
+
+// The error alone.
 double SegmentedSimulationError(const VesselSimulator& sim, const std::vector<double>& params,
                                 const EffectValues<double>& effects, const Dataset& data,
                                 const std::vector<std::string>& channels, double segment_s,

@@ -16,9 +16,10 @@
 
 namespace usvid::hybrid {
 
-// The mean over the `states` of each one's free-run mean squared error over its variance in
-// `heldout`, over all of its records (core/records.h) and the rows where the state was sampled;
-// +infinity when a run leaves the bounds of simulation/divergence_bounds.h.
+// The free runs' error of simulation/segment_error.h, each record of `heldout` (and each stretch
+// between a log's own gaps) run whole from its first row: the squared errors of the `states`
+// over each one's variance, averaged over the rows where it was sampled; +infinity when a run
+// leaves the bounds of simulation/divergence_bounds.h.
 double HeldoutFreeRunError(const std::string& vessel, const Dataset& heldout,
                            const std::vector<double>& params, const std::vector<Effect>& terms,
                            const std::vector<std::string>& states);
