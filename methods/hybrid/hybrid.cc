@@ -55,6 +55,7 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   if (!(options.heldout > 0.0 && options.heldout < 1.0))
     throw InputError("hybrid: the held-out fraction must be in (0, 1)");
   if (options.per_state < 1) throw InputError("hybrid: at least one proposal per state");
+  if (options.search_rows < 0) throw InputError("hybrid: search_rows must be >= 0");
   if (options.max_terms < 0 || options.max_terms > kMaxRefitTerms)
     throw InputError("hybrid: at most " + std::to_string(kMaxRefitTerms) + " terms");
   if (!(options.critical_ratio >= 0.0))
@@ -66,9 +67,13 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   refit.hold_model = false;
   if (refit.segment_s == 0.0) refit.segment_s = AutomaticSegmentSeconds(data, info);
   // The selection fits and scores proposals side by side, two at a time on 2 cores: each of its
-  // fits and scores takes half of max_rows (whatever the threads, so the numbers do not depend
-  // on them), and the selection holds no more than the final fit on the whole record.
-  if (refit.max_rows > 0) refit.max_rows = std::max<long>(1, refit.max_rows / 2);
+  // fits and scores takes search_rows, by default half of max_rows (whatever the threads, so the
+  // numbers do not depend on them), and the selection holds no more than the final fit on the
+  // whole record.
+  if (options.search_rows > 0)
+    refit.max_rows = options.search_rows;
+  else if (refit.max_rows > 0)
+    refit.max_rows = std::max<long>(1, refit.max_rows / 2);
   // Each record fits and judges (core/records.h): cut at the share of the rows alone, eight
   // joined runs (random, turning, zig-zag) were fitted on the random runs and turns and judged
   // on the zig-zags.

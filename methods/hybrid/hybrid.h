@@ -35,6 +35,10 @@ inline constexpr std::string_view kMethodName = "hybrid";
 
 struct HybridOptions {
   RefitOptions refit;  // free parameters, segment, prior; its terms are ignored
+  // The most rows each proposal's fit and score use, spread over the first and the held-out
+  // part (0: half of refit.max_rows, or all when that is 0). The search refits the vessel once
+  // per proposal and round; the final fit (step 5) takes refit.max_rows.
+  long search_rows = 0;
   double heldout = 1.0 / 3.0;  // fraction of the record (its end) that judges the terms
   int per_state = 3;           // proposals per dynamic state
   int max_terms = 3;           // rounds of selection (at most kMaxRefitTerms)

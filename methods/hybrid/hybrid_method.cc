@@ -27,6 +27,7 @@ nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o
   ho.refit = RefitOptionsFor(options);
   ho.refit.threads = o.threads > 0 ? o.threads : 1;  // proposals in parallel, each one thread
   ho.max_terms = static_cast<int>(options.Integer("max_terms"));
+  ho.search_rows = options.Integer("search_rows");
   const hybrid::HybridResult h = hybrid::IdentifyHybrid(
       o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, ho);
   nlohmann::json proposals = nlohmann::json::array(), rounds = nlohmann::json::array();
@@ -84,6 +85,10 @@ Method HybridMethod() {
   m.options = RefitOptionSpecs();
   m.options.push_back(IntegerOption("max_terms", hybrid::HybridOptions{}.max_terms, 0,
                                     kMaxRefitTerms, "most missing terms to add"));
+  m.options.push_back(IntegerOption(
+      "search_rows", hybrid::HybridOptions{}.search_rows, 0, kUnbounded,
+      "the most rows each proposed term's fit and score use (0: half of fit_rows); the final "
+      "fit takes fit_rows"));
   m.identify = IdentifyHybridModel;
   return m;
 }

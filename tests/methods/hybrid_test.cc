@@ -55,6 +55,23 @@ TEST(HybridTest, AddsTheMissingCrossFlowYawTermAndOnlyThat) {
   EXPECT_EQ(h.rounds.back().chosen, -1);  // the next best term is not worth its coefficient
 }
 
+TEST(HybridTest, SearchesOnAShareOfTheRowsAndFitsTheModelOnAllOfThem) {
+  // search_rows bounds each proposal's fit and score; fit_rows (0: all) the final fit's.
+  const Dataset data = Simulate({kCrossFlowYaw}, 900, 3);
+  hybrid::HybridOptions options;
+  options.refit.threads = 2;
+  options.refit.max_rows = 0;
+  options.search_rows = data.rows() / 8;
+  const hybrid::HybridResult h = hybrid::IdentifyHybrid(
+      "odin3dof", data, FindVessel("odin3dof").Info().default_params, options);
+  ASSERT_EQ(h.fit.terms.size(), 1u);
+  EXPECT_EQ(h.fit.terms[0].term, "abs(v)*v");
+  EXPECT_NEAR(h.fit.terms[0].at("coefficient"), 0.05, 0.005);
+  // Three states' residuals on nearly every row (each segment's first row is its estimated
+  // start), not on the search's eighth.
+  EXPECT_GT(h.fit.residuals, 3 * data.rows() * 9 / 10);
+}
+
 TEST(HybridTest, AddsNothingToTheVesselAsItIs) {
   const Dataset data = Simulate({}, 600, 4);
   hybrid::HybridOptions options;
@@ -109,6 +126,9 @@ TEST(HybridTest, RefusesWhatItCannotDo) {
   EXPECT_THROW(hybrid::IdentifyHybrid("odin3dof", data, start, options), InputError);
   options = {};
   options.max_terms = kMaxRefitTerms + 1;
+  EXPECT_THROW(hybrid::IdentifyHybrid("odin3dof", data, start, options), InputError);
+  options = {};
+  options.search_rows = -1;
   EXPECT_THROW(hybrid::IdentifyHybrid("odin3dof", data, start, options), InputError);
   options = {};
   EXPECT_THROW(hybrid::IdentifyHybrid("odin-hs", data,
