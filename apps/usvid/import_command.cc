@@ -14,6 +14,7 @@
 #include "importers/froude_scaling.h"
 #include "importers/marin_dat.h"
 #include "preprocessing/heading_rate.h"
+#include "preprocessing/rate_calibration.h"
 
 namespace usvid {
 namespace {
@@ -23,6 +24,7 @@ struct ImportOptions {
   std::string data;
   std::vector<std::string> map;
   std::string rate_from;
+  std::string rate_bias_from;
   double scale = 1.0;
   std::vector<std::string> dimensions;
   std::string out;
@@ -62,6 +64,13 @@ void RunImport(const ImportOptions& o) {
     data.Set("r", RateFromHeading(data, o.rate_from));
     report.notes.push_back("r from the derivative of the smoothed, unwrapped " + o.rate_from);
   }
+  if (!o.rate_bias_from.empty()) {
+    if (!o.rate_from.empty())
+      throw InputError("--rate-bias-from: r derived with --rate-from has no gyro's bias");
+    const RateCalibration c = EstimateRateCalibration(data, o.rate_bias_from);
+    data.Set("r", CalibratedRate(data, c));
+    report.notes.push_back(DescribeRateCalibration(c, o.rate_bias_from));
+  }
   if (o.scale != 1.0) {
     std::ostringstream s;
     s << "Froude-scaled by lambda = " << o.scale << ": t x" << std::sqrt(o.scale);
@@ -94,6 +103,10 @@ void AddImportCommand(CLI::App& app) {
   cmd->add_option("--rate-from", o->rate_from,
                   "Add the rate of turn r [rad/s] from this heading channel [rad] (a log without "
                   "a gyro): unwrapped, smoothing-spline derivative");
+  cmd->add_option("--rate-bias-from", o->rate_bias_from,
+                  "Remove the rate of turn's offset and scale error, estimated against this "
+                  "heading channel [rad] (a gyro's bias: the integral of r parts from the "
+                  "heading's change); both on stderr");
   cmd->add_option("--scale", o->scale,
                   "Froude-scale the log by LAMBDA = L_target / L_log (> 1: model to full scale, "
                   "< 1: back): time and speeds x sqrt(LAMBDA), lengths x LAMBDA, rates and "

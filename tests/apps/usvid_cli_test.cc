@@ -86,6 +86,9 @@ TEST_F(UsvidCliTest, MeasuredDataOptionsRefuseBadInput) {
       {"import --format csv --data " + (dir / "log.csv").string() +
            " --map t=time,psi=yaw --rate-from heading --out " + out + ".csv",
        "heading"},
+      {"import --format csv --data " + (dir / "log.csv").string() +
+           " --map t=time,psi=yaw --rate-bias-from psi --out " + out + ".csv",
+       "no rate of turn column 'r'"},
   };
   for (const Case& c : cases) {
     const auto r = RunUsvid(c.args);
