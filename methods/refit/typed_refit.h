@@ -45,10 +45,37 @@ constexpr std::array<int, DynamicStates<V>()> DynamicIndices() {
   return idx;
 }
 
+// The vessel's parameters as Ceres sees them: a block of K values theta, of which parameter i
+// reads theta[slot[i]] * scale[i], or `fixed[i]` when slot[i] is -1. Ceres differentiates by
+// every value of the block (a Jet carries K + C + kMaxRefitTerms derivatives through each
+// simulation step), so a refit of a few of a large vessel's parameters (12 of an MMG model's
+// 66) gives them a block of their own: kCompactParams values, the free ones first and the rest
+// held. With more free parameters the block is the whole vector, each in its own slot.
+inline constexpr int kCompactParams = 24;
+
+template <Vessel V>
+constexpr int CompactParams() {
+  return std::min(kCompactParams, V::kParams);
+}
+
+template <Vessel V>
+struct ParamSlots {
+  std::array<int, V::kParams> slot;
+  std::array<double, V::kParams> scale, fixed;
+  template <typename T>
+  std::array<T, V::kParams> Expand(const T* theta) const {
+    std::array<T, V::kParams> p;
+    for (int i = 0; i < V::kParams; ++i)
+      p[i] = slot[i] >= 0 ? theta[slot[i]] * scale[i] : T(fixed[i]);
+    return p;
+  }
+};
+
 // One segment: rows [first, last] of the data simulated from the free dynamic states x0 (the
 // kinematic ones from the data); residuals (simulated - measured) / sd of every dynamic state
 // at every sampled row after the first. The missing terms' coefficients are kappa * term_scale.
-template <Vessel V>
+// The vessel's parameters are a block of K (ParamSlots).
+template <Vessel V, int K>
 struct RefitSegment {
   static constexpr int C = DynamicStates<V>();
   const InputTrack* track;
@@ -57,7 +84,7 @@ struct RefitSegment {
   Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> sampled;
   std::array<double, V::kStates> first;  // the data's first row (kinematic states used)
   std::array<double, C> sd;
-  std::array<double, V::kParams> scale;
+  ParamSlots<V> params;
   std::vector<std::shared_ptr<const ResolvedTerm>> terms;  // at most kMaxRefitTerms
   std::array<double, kMaxRefitTerms> term_scale;
   double max_step;
@@ -69,8 +96,7 @@ struct RefitSegment {
   bool operator()(const T* theta, const T* x0, const T* kappa, T* res) const {
     constexpr int N = Plant<V>::kStates;
     constexpr auto dyn = DynamicIndices<V>();
-    std::array<T, V::kParams> p;
-    for (int i = 0; i < V::kParams; ++i) p[i] = theta[i] * scale[i];
+    const std::array<T, V::kParams> p = params.Expand(theta);
     std::array<T, N> start;
     for (int i = 0; i < V::kStates; ++i) start[i] = T(first[i]);
     for (int c = 0; c < C; ++c) start[dyn[c]] = x0[c];
@@ -102,17 +128,17 @@ struct RefitSegment {
   }
 };
 
-// The prior: (theta_i - centre_i) / prior_sd for the free parameters, centre_i = start_i /
-// |start_i| (+-1: theta is the parameter over its start's size, so a negative start is -1).
-template <Vessel V>
+// The prior: (theta_s - centre_s) / prior_sd for the block's values that are free parameters,
+// centre_s = start_i / |start_i| (+-1: theta is the parameter over its start's size, so a
+// negative start is -1).
+template <int K>
 struct RefitPrior {
-  std::array<bool, V::kParams> free;
-  std::array<double, V::kParams> centre;
+  std::array<bool, K> free;
+  std::array<double, K> centre;
   double prior_sd;
   template <typename T>
   bool operator()(const T* theta, T* res) const {
-    for (int i = 0; i < V::kParams; ++i)
-      res[i] = free[i] ? (theta[i] - centre[i]) / prior_sd : T(0);
+    for (int s = 0; s < K; ++s) res[s] = free[s] ? (theta[s] - centre[s]) / prior_sd : T(0);
     return true;
   }
 };
@@ -260,13 +286,12 @@ inline std::vector<std::pair<Eigen::Index, Eigen::Index>> SpreadSegments(
 }
 
 // The segment of rows [a, b]: its times, measurements and first row, with the scales.
-template <Vessel V>
-RefitSegment<V>* NewSegment(const Dataset& data, const InputTrack& track, Eigen::Index a,
-                            Eigen::Index b, double dt, const MeasuredStates<V>& states,
-                            const std::array<double, V::kParams>& scale,
-                            const MissingTerms& missing) {
+template <Vessel V, int K>
+RefitSegment<V, K>* NewSegment(const Dataset& data, const InputTrack& track, Eigen::Index a,
+                               Eigen::Index b, double dt, const MeasuredStates<V>& states,
+                               const ParamSlots<V>& params, const MissingTerms& missing) {
   constexpr int C = DynamicStates<V>();
-  auto* seg = new RefitSegment<V>;
+  auto* seg = new RefitSegment<V, K>;
   seg->track = &track;
   seg->max_step = std::min(dt, 0.5) * 1.0000001;
   for (Eigen::Index k = a; k <= b; ++k) seg->times.push_back(data.t()(k));
@@ -283,7 +308,7 @@ RefitSegment<V>* NewSegment(const Dataset& data, const InputTrack& track, Eigen:
     seg->first[i] = ch != nullptr && ch->IsSampled(a) ? ch->Value(a) : 0.0;
   }
   seg->sd = states.sd;
-  seg->scale = scale;
+  seg->params = params;
   seg->terms = missing.terms;
   seg->term_scale = missing.term_scale;
   return seg;
@@ -291,16 +316,16 @@ RefitSegment<V>* NewSegment(const Dataset& data, const InputTrack& track, Eigen:
 
 // Holds constant the parameters that are not free (all of them with hold_model) and the terms'
 // coefficients that are unused (all of them with hold_model).
-template <Vessel V>
-void HoldFixed(const std::array<bool, V::kParams>& free, bool hold_model, size_t n_terms,
-               double* theta, double* kappa, ceres::Problem* problem) {
+template <int K>
+void HoldFixed(const std::array<bool, K>& free, bool hold_model, size_t n_terms, double* theta,
+               double* kappa, ceres::Problem* problem) {
   std::vector<int> held;
-  for (int i = 0; i < V::kParams; ++i)
-    if (!free[i] || hold_model) held.push_back(i);
-  if (held.size() == static_cast<size_t>(V::kParams))
+  for (int s = 0; s < K; ++s)
+    if (!free[s] || hold_model) held.push_back(s);
+  if (held.size() == static_cast<size_t>(K))
     problem->SetParameterBlockConstant(theta);
   else if (!held.empty())
-    problem->SetManifold(theta, new ceres::SubsetManifold(V::kParams, held));
+    problem->SetManifold(theta, new ceres::SubsetManifold(K, held));
   std::vector<int> unused;
   for (int j = hold_model ? 0 : static_cast<int>(n_terms); j < kMaxRefitTerms; ++j)
     unused.push_back(j);
@@ -341,15 +366,18 @@ inline double SegmentCorrelationTime(ceres::Problem& problem, int residuals, int
 
 }  // namespace detail
 
-template <Vessel V>
-RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
-                       const std::vector<double>& start, const RefitOptions& o) {
+namespace detail {
+
+// RefitTyped with the vessel's parameters in a block of K (ParamSlots): the free ones in its
+// first slots when K is below V::kParams, else each parameter in its own slot.
+template <Vessel V, int K>
+RefitResult RefitWith(const VesselInfo& info, const Dataset& data, const std::vector<double>& start,
+                      const RefitOptions& o, const std::array<bool, V::kParams>& free) {
   constexpr int C = DynamicStates<V>();
   constexpr auto dyn = DynamicIndices<V>();
   RefitResult result;
   result.names = info.params;
   result.start = start;
-  const std::array<bool, V::kParams> free = detail::FreeParameters<V>(info, o.free);
   for (int i = 0; i < V::kParams; ++i)
     if (free[i]) result.free.push_back(info.params[i]);
   // Data: inputs, dynamic states, their measurement noise.
@@ -364,10 +392,19 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   const double segment_s = o.segment_s > 0 ? o.segment_s : AutomaticSegmentSeconds(data, info);
   result.segment_s = segment_s;
   if (!(o.prior_sd > 0)) throw InputError("refit: the prior's standard deviation must be positive");
-  std::array<double, V::kParams> scale, theta;
+  // theta: the block; block_free: which of its values are free parameters.
+  ParamSlots<V> slots;
+  std::array<double, K> theta{};
+  std::array<bool, K> block_free{};
+  int next = 0;
   for (int i = 0; i < V::kParams; ++i) {
-    scale[i] = start[i] != 0.0 ? std::abs(start[i]) : 1.0;
-    theta[i] = start[i] / scale[i];
+    slots.scale[i] = start[i] != 0.0 ? std::abs(start[i]) : 1.0;
+    slots.fixed[i] = start[i];
+    slots.slot[i] = K == V::kParams ? i : free[i] ? next++ : -1;
+    if (slots.slot[i] >= 0) {
+      theta[slots.slot[i]] = start[i] / slots.scale[i];
+      block_free[slots.slot[i]] = free[i];
+    }
   }
   detail::MissingTerms missing = detail::ResolveMissingTerms(info, o.terms);
   const double dt = data.rows() > 1 ? data.duration() / static_cast<double>(data.rows() - 1) : 1.0;
@@ -379,23 +416,24 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   ceres::Problem problem;
   for (size_t j = 0; j < bounds.size(); ++j) {
     const auto [a, b] = bounds[j];
-    RefitSegment<V>* seg = detail::NewSegment<V>(data, track, a, b, dt, states, scale, missing);
+    RefitSegment<V, K>* seg =
+        detail::NewSegment<V, K>(data, track, a, b, dt, states, slots, missing);
     seg->wind_over_ground = air.has_value();
     for (int c = 0; c < C; ++c) x0[j][c] = seg->first[dyn[c]];
     const int residuals = seg->Residuals();
     result.residuals += residuals;
     problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<RefitSegment<V>, ceres::DYNAMIC, V::kParams, C,
-                                        kMaxRefitTerms>(seg, residuals),
+        new ceres::AutoDiffCostFunction<RefitSegment<V, K>, ceres::DYNAMIC, K, C, kMaxRefitTerms>(
+            seg, residuals),
         weight[j] == 1.0 ? nullptr
                          : new ceres::ScaledLoss(nullptr, weight[j], ceres::TAKE_OWNERSHIP),
         theta.data(), x0[j].data(), missing.kappa.data());
   }
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RefitPrior<V>, V::kParams, V::kParams>(
-                               new RefitPrior<V>{free, theta, o.prior_sd}),
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RefitPrior<K>, K, K>(
+                               new RefitPrior<K>{block_free, theta, o.prior_sd}),
                            nullptr, theta.data());
-  detail::HoldFixed<V>(free, o.hold_model, missing.terms.size(), theta.data(), missing.kappa.data(),
-                       &problem);
+  detail::HoldFixed<K>(block_free, o.hold_model, missing.terms.size(), theta.data(),
+                       missing.kappa.data(), &problem);
 
   if (o.information_only) {
     std::vector<double*> starts;
@@ -411,11 +449,26 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
     result.correlation_time = detail::SegmentCorrelationTime(problem, result.residuals, C);
   result.params.resize(V::kParams);
   result.sd.assign(V::kParams, 0.0);
-  for (int i = 0; i < V::kParams; ++i) result.params[i] = theta[i] * scale[i];
+  const std::array<double, V::kParams> p = slots.Expand(theta.data());
+  result.params.assign(p.begin(), p.end());
   result.terms = o.terms;
   for (size_t j = 0; j < missing.terms.size(); ++j)
     result.terms[j].parameters["coefficient"] = missing.kappa[j] * missing.term_scale[j];
   return result;
+}
+
+}  // namespace detail
+
+template <Vessel V>
+RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
+                       const std::vector<double>& start, const RefitOptions& o) {
+  const std::array<bool, V::kParams> free = detail::FreeParameters<V>(info, o.free);
+  constexpr int kCompact = CompactParams<V>();
+  if constexpr (kCompact < V::kParams) {
+    if (std::count(free.begin(), free.end(), true) <= kCompact)
+      return detail::RefitWith<V, kCompact>(info, data, start, o, free);
+  }
+  return detail::RefitWith<V, V::kParams>(info, data, start, o, free);
 }
 
 template <Vessel V>
