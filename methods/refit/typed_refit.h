@@ -364,10 +364,6 @@ inline double SegmentCorrelationTime(ceres::Problem& problem, int residuals, int
       Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())), channels);
 }
 
-}  // namespace detail
-
-namespace detail {
-
 // RefitTyped with the vessel's parameters in a block of K (ParamSlots): the free ones in its
 // first slots when K is below V::kParams, else each parameter in its own slot.
 template <Vessel V, int K>
@@ -447,7 +443,6 @@ RefitResult RefitWith(const VesselInfo& info, const Dataset& data, const std::ve
   result.segments = static_cast<int>(bounds.size());
   if (o.hold_model)
     result.correlation_time = detail::SegmentCorrelationTime(problem, result.residuals, C);
-  result.params.resize(V::kParams);
   result.sd.assign(V::kParams, 0.0);
   const std::array<double, V::kParams> p = slots.Expand(theta.data());
   result.params.assign(p.begin(), p.end());
