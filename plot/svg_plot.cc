@@ -154,11 +154,23 @@ bool LinePlot::HasData() const {
   return false;
 }
 
+std::size_t LinePlot::PaletteIndex(std::size_t series) const {
+  std::size_t index = 0;
+  for (std::size_t i = 0; i < series; ++i) index += series_[i].style.color.empty();
+  return index;
+}
+
 std::string LinePlot::ColorOf(std::size_t series) const {
   if (!series_[series].style.color.empty()) return series_[series].style.color;
-  std::size_t palette_index = 0;
-  for (std::size_t i = 0; i < series; ++i) palette_index += series_[i].style.color.empty();
-  return std::string(svg::SeriesColor(palette_index));
+  return std::string(svg::SeriesColor(PaletteIndex(series)));
+}
+
+SeriesStyle LinePlot::StyleOf(std::size_t series) const {
+  SeriesStyle style = series_[series].style;
+  if (style.color.empty() && PaletteIndex(series) / svg::kSeriesColorCount % 2 == 1)
+    style.dash = style.dash == Dash::kDotted ? Dash::kSolid : Dash::kDotted;
+  style.color = ColorOf(series);
+  return style;
 }
 
 }  // namespace usvid

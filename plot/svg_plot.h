@@ -123,7 +123,12 @@ class LinePlot {
   bool HasData() const;  // any point with finite x and y
   std::vector<AnnotationLabel> PlaceAnnotations(const svg::AxisTicks& x, double area_left,
                                                 double area_width) const;
+  std::size_t PaletteIndex(std::size_t series) const;  // among the series that take the palette
   std::string ColorOf(std::size_t series) const;
+  // The series' style with its colour resolved; a palette colour's second series (the palette
+  // come round again) is drawn dotted, or solid when it was dotted, so that no two series look
+  // alike.
+  SeriesStyle StyleOf(std::size_t series) const;
   void RenderBands(std::string& out, const LinePlotLayout& layout) const;
   void RenderGrid(std::string& out, const LinePlotLayout& layout) const;
   // Lines (and lone samples between gaps) when `markers` is false, else the markers.

@@ -43,7 +43,7 @@ svg::AxisTicks XTicks(double lo, double hi, bool fixed, double area_width) {
 std::vector<svg::LegendEntry> LinePlot::LegendEntries() const {
   std::vector<svg::LegendEntry> entries;
   for (std::size_t i = 0; i < series_.size(); ++i) {
-    entries.push_back({series_[i].name, series_[i].style, ColorOf(i)});
+    entries.push_back({series_[i].name, StyleOf(i), ColorOf(i)});
   }
   return entries;
 }

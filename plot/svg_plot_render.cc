@@ -145,7 +145,7 @@ void LinePlot::RenderSeries(std::string& out, const LinePlotLayout& L, bool mark
     if (!d.empty()) {
       out += "<path d=\"" + d + "\" fill=\"none\" stroke=\"" + color + "\" stroke-width=\"" +
              Num(s.style.line_width) + "\" stroke-linejoin=\"round\"";
-      out += DashAttribute(s.style.dash);
+      out += DashAttribute(StyleOf(i).dash);
       out += "/>\n";
     }
     if (!dots.empty() && !s.style.markers) out += "<g fill=\"" + color + "\">\n" + dots + "</g>\n";

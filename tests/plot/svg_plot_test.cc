@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "plot/colors.h"
 #include "tests/plot/svg_inspect.h"
 #include "tests/plot/xml_check.h"
 
@@ -229,6 +230,31 @@ TEST_F(LinePlotTest, MeasuredDataKeepAColourNoModelTakes) {
     EXPECT_NE(svg_inspect::SeriesElements(doc, "m" + std::to_string(i), "path")[0]->Attr("stroke"),
               data)
         << i;
+}
+
+// When the models outnumber the palette, a colour's second series is dotted where its first is
+// dashed (the real suite's Esso Osaka track plots nine: refit took diagnose's blue, SINDy
+// fossen-ceres's orange, both dashed), in the plot and in the legend.
+TEST_F(LinePlotTest, AColoursSecondSeriesIsDrawnDotted) {
+  const std::vector<double> x = {0, 1};
+  const std::size_t n = svg::kSeriesColorCount + 2;
+  for (std::size_t i = 0; i < n; ++i)
+    plot_.AddSeries("m" + std::to_string(i), x, x, SeriesStyle::Dashed());
+  const xml_check::Document doc = Render();
+  const auto path = [&](std::size_t i) {
+    return svg_inspect::SeriesElements(doc, "m" + std::to_string(i), "path")[0];
+  };
+  for (std::size_t i = 0; i < svg::kSeriesColorCount; ++i)
+    EXPECT_EQ(path(i)->Attr("stroke-dasharray"), "7 4") << i;
+  for (std::size_t i = svg::kSeriesColorCount; i < n; ++i) {
+    EXPECT_EQ(path(i)->Attr("stroke"), path(i - svg::kSeriesColorCount)->Attr("stroke")) << i;
+    EXPECT_EQ(path(i)->Attr("stroke-dasharray"), "1.5 3") << i;
+  }
+  // The legend's swatches: two dotted lines.
+  int dotted_swatches = 0;
+  for (const auto& e : doc.elements)
+    dotted_swatches += e.name == "line" && e.Attr("stroke-dasharray") == "1.5 3";
+  EXPECT_EQ(dotted_swatches, 2);
 }
 
 // A fixed y range is kept as the axis limits; the data beyond it are clipped to the plot area.
