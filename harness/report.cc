@@ -11,7 +11,6 @@
 #include "harness/markdown_html.h"
 #include "metrics/evaluation.h"
 #include "metrics/rank_tests.h"
-#include "plot/colors.h"
 #include "plot/figure_grid.h"
 #include "plot/heat_map.h"
 #include "plot/svg_text.h"
@@ -84,11 +83,8 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
   grid.SetTitle(vessel + ", held-out " + test + ": measured and free runs").SetXLabel("t", "s");
   // Each method keeps its colour in every panel, also where another method has no such channel.
   std::map<std::string, SeriesStyle> styles;
-  for (const auto& [method, e] : runs) {
-    SeriesStyle style = SeriesStyle::Dashed();
-    style.color = std::string(svg::SeriesColor(styles.size()));
-    styles[method] = style;
-  }
+  for (const auto& [method, e] : runs)
+    styles[method] = PaletteStyle(SeriesStyle::Dashed(), styles.size());
   for (const std::string& c : channels) {
     if (!held.Has(c)) continue;
     LinePlot p;

@@ -166,10 +166,14 @@ std::string LinePlot::ColorOf(std::size_t series) const {
 }
 
 SeriesStyle LinePlot::StyleOf(std::size_t series) const {
-  SeriesStyle style = series_[series].style;
-  if (style.color.empty() && PaletteIndex(series) / svg::kSeriesColorCount % 2 == 1)
+  const SeriesStyle& style = series_[series].style;
+  return style.color.empty() ? PaletteStyle(style, PaletteIndex(series)) : style;
+}
+
+SeriesStyle PaletteStyle(SeriesStyle style, std::size_t index) {
+  if (index / svg::kSeriesColorCount % 2 == 1)
     style.dash = style.dash == Dash::kDotted ? Dash::kSolid : Dash::kDotted;
-  style.color = ColorOf(series);
+  style.color = std::string(svg::SeriesColor(index));
   return style;
 }
 

@@ -29,6 +29,12 @@ namespace usvid {
 
 enum class LegendPlacement { kAuto, kRight, kBelow };
 
+// `style` in the palette's colour number `index`; from the palette's second round on, the dash
+// of every other round is changed (dotted, or solid when it was dotted), so that no two series
+// look alike. Series without a colour get this; a figure that gives each method one colour in
+// every panel calls it itself.
+SeriesStyle PaletteStyle(SeriesStyle style, std::size_t index);
+
 // A laid-out LinePlot: the plot area and axes inside a panel of the canvas (all in px).
 struct LinePlotLayout {
   double width = 0.0;  // the whole panel
@@ -125,9 +131,7 @@ class LinePlot {
                                                 double area_width) const;
   std::size_t PaletteIndex(std::size_t series) const;  // among the series that take the palette
   std::string ColorOf(std::size_t series) const;
-  // The series' style with its colour resolved; a palette colour's second series (the palette
-  // come round again) is drawn dotted, or solid when it was dotted, so that no two series look
-  // alike.
+  // The series' style with its colour resolved (PaletteStyle when it has none).
   SeriesStyle StyleOf(std::size_t series) const;
   void RenderBands(std::string& out, const LinePlotLayout& layout) const;
   void RenderGrid(std::string& out, const LinePlotLayout& layout) const;

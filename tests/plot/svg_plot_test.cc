@@ -257,6 +257,18 @@ TEST_F(LinePlotTest, AColoursSecondSeriesIsDrawnDotted) {
   EXPECT_EQ(dotted_swatches, 2);
 }
 
+// A figure that gives each method its colour itself (compare's free-run figures) gets the same
+// rule: the palette's second round dotted, its third as the first.
+TEST(PaletteStyleTest, EveryOtherRoundOfThePaletteChangesTheDash) {
+  const std::size_t n = svg::kSeriesColorCount;
+  EXPECT_EQ(PaletteStyle(SeriesStyle::Dashed(), 1).dash, Dash::kDashed);
+  EXPECT_EQ(PaletteStyle(SeriesStyle::Dashed(), n + 1).dash, Dash::kDotted);
+  EXPECT_EQ(PaletteStyle(SeriesStyle::Dashed(), n + 1).color,
+            PaletteStyle(SeriesStyle::Dashed(), 1).color);
+  EXPECT_EQ(PaletteStyle(SeriesStyle::Dotted(), n).dash, Dash::kSolid);
+  EXPECT_EQ(PaletteStyle(SeriesStyle::Dashed(), 2 * n).dash, Dash::kDashed);
+}
+
 // A fixed y range is kept as the axis limits; the data beyond it are clipped to the plot area.
 TEST_F(LinePlotTest, FixedYRangeIsKeptAndDataAreClipped) {
   const std::vector<double> x = {0, 1, 2};
