@@ -3,7 +3,7 @@
 // Osaka studies free five to twelve), and the same segments scored with the model held (a
 // hybrid's held-out score, run once per proposal). Ceres differentiates by every value of the
 // parameter block, so the free parameters get a block of their own (typed_refit.h); the
-// whole vector was three times slower on the Esso Osaka runs (docs/hybrid.md).
+// whole vector was 2.7 times slower on the Esso Osaka runs (docs/performance.md, item 4).
 #include <benchmark/benchmark.h>
 
 #include "maneuvers/maneuver_factory.h"

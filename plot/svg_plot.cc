@@ -160,10 +160,7 @@ std::size_t LinePlot::PaletteIndex(std::size_t series) const {
   return index;
 }
 
-std::string LinePlot::ColorOf(std::size_t series) const {
-  if (!series_[series].style.color.empty()) return series_[series].style.color;
-  return std::string(svg::SeriesColor(PaletteIndex(series)));
-}
+std::string LinePlot::ColorOf(std::size_t series) const { return StyleOf(series).color; }
 
 SeriesStyle LinePlot::StyleOf(std::size_t series) const {
   const SeriesStyle& style = series_[series].style;

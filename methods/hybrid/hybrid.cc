@@ -68,8 +68,8 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   if (refit.segment_s == 0.0) refit.segment_s = AutomaticSegmentSeconds(data, info);
   // The selection fits and scores proposals side by side, two at a time on 2 cores: each of its
   // fits and scores takes search_rows, by default half of max_rows (whatever the threads, so the
-  // numbers do not depend on them), and the selection holds no more than the final fit on the
-  // whole record.
+  // numbers do not depend on them), so that by default the selection holds no more than the
+  // final fit on the whole record.
   if (options.search_rows > 0)
     refit.max_rows = options.search_rows;
   else if (refit.max_rows > 0)
