@@ -64,7 +64,7 @@ void Resolve(nlohmann::json& suite, const fs::path& data_dir, std::set<std::stri
 }
 
 // The runs of the track's folders that the track does not list, sorted, as test entries like
-// its first one (format, column map) but without a maneuver: scored by their free runs.
+// its first one (format, column map, end) but without a maneuver: scored by their free runs.
 std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::json& suite,
                                         const fs::path& data_dir,
                                         const std::set<std::string>& listed) {
@@ -84,7 +84,8 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
     nlohmann::json entry = {{"name", "held-out " + fs::path(f).stem().string()},
                             {"format", like.at("format")},
                             {"file", (data_dir / f).lexically_normal().string()}};
-    if (like.contains("map")) entry["map"] = like["map"];
+    for (const char* key : {"map", "end_at_stop"})
+      if (like.contains(key)) entry[key] = like[key];
     out.push_back(entry);
   }
   return out;

@@ -13,6 +13,7 @@
 #include "importers/csv_log.h"
 #include "importers/marin_dat.h"
 #include "preprocessing/heading_rate.h"
+#include "preprocessing/record_end.h"
 
 namespace usvid {
 
@@ -24,8 +25,8 @@ std::string SuitePath(const std::string& base_dir, const std::string& file) {
 SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
                          const std::string& where) {
   if (!v.is_object()) throw InputError(where + ": each data entry is an object");
-  static const std::set<std::string> kFields = {"name",      "file",   "format", "map",
-                                                "rate_from", "from_s", "to_s", "maneuver"};
+  static const std::set<std::string> kFields = {
+      "name", "file", "format", "map", "rate_from", "end_at_stop", "from_s", "to_s", "maneuver"};
   for (const auto& [key, value] : v.items()) {
     if (!kFields.contains(key)) throw InputError(where + ": unknown field '" + key + "'");
     const bool number = key == "from_s" || key == "to_s";
@@ -51,6 +52,7 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
   if (!d.map.empty() && d.format != "csv-log")
     throw InputError(where + ": 'map' applies to format csv-log only");
   d.rate_from = v.value("rate_from", std::string());
+  d.end_at_stop = v.value("end_at_stop", std::string());
   d.maneuver = v.value("maneuver", std::string());
   if (!d.maneuver.empty() && !d.maneuver.starts_with("zigzag") && !d.maneuver.starts_with("turning"))
     throw InputError(where + ": maneuver '" + d.maneuver +
@@ -68,6 +70,7 @@ nlohmann::json SuiteDataToJson(const SuiteData& d) {
       {"format", d.format}};
   if (!d.map.empty()) j["map"] = d.map;
   if (!d.rate_from.empty()) j["rate_from"] = d.rate_from;
+  if (!d.end_at_stop.empty()) j["end_at_stop"] = d.end_at_stop;
   if (!d.maneuver.empty()) j["maneuver"] = d.maneuver;
   if (std::isfinite(d.from_s)) j["from_s"] = d.from_s;
   if (std::isfinite(d.to_s)) j["to_s"] = d.to_s;
@@ -90,6 +93,7 @@ Dataset LoadRecord(const SuiteData& d, const std::string& file) {
   } else {
     data = ReadDatasetCsv(file);
   }
+  if (!d.end_at_stop.empty()) EndAtStop(data, d.end_at_stop);
   if (!d.rate_from.empty()) data.Set("r", RateFromHeading(data, d.rate_from));
   if (std::isfinite(d.from_s) || std::isfinite(d.to_s)) {
     std::vector<bool> keep(data.rows());

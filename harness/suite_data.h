@@ -2,11 +2,14 @@
 // test on recorded files ("data": {"train": [...], "test": [...]}), each
 //   {"name": "zigzag 20/-20", "file": "path", "format": "csv" | "marin-dat" | "csv-log",
 //    "map": "t=time,psi=psi,delta=delta" (csv-log: import --map), "rate_from": "psi",
+//    "end_at_stop": "n",
 //    "from_s": 0, "to_s": 140, "maneuver": "zigzag:-20/20"}
 // "file" may be a list of paths: the records, each read and cut alike, are joined for one
 // joint fit (core/records.h; a training entry only). Paths are relative to the suite file's
 // folder. "rate_from" adds the rate of turn r from that
-// heading (preprocessing/heading_rate.h) for logs without a gyro. A file is read as
+// heading (preprocessing/heading_rate.h) for logs without a gyro. "end_at_stop" ends each
+// record at the last row where that actuator still runs, as `usvid import --end-at-stop`
+// (preprocessing/record_end.h: the recovery after a test). A file is read as
 // `usvid import` would read it, with the same repairs. "from_s" and "to_s" keep the rows with
 // from_s <= t < to_s (a held-back part of one log as its own test set). "maneuver" names the
 // maneuver a test record was run with (maneuver_factory.h: zigzag:A/B or turning:A, A in
@@ -24,7 +27,7 @@
 namespace usvid {
 
 struct SuiteData {
-  std::string name, format = "csv", map, rate_from, maneuver;
+  std::string name, format = "csv", map, rate_from, end_at_stop, maneuver;
   std::vector<std::string> files;  // one, or several records joined
   double from_s = -INFINITY, to_s = INFINITY;
 };

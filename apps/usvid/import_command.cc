@@ -1,4 +1,5 @@
-// usvid import --format marin-dat|csv --data LOG [--map NEW=OLD[:unit],...] [--scale LAMBDA]
+// usvid import --format marin-dat|csv --data LOG [--map NEW=OLD[:unit],...] [--end-at-stop CH]
+//   [--scale LAMBDA]
 //   --out F.csv
 
 #include <cmath>
@@ -15,6 +16,7 @@
 #include "importers/marin_dat.h"
 #include "preprocessing/heading_rate.h"
 #include "preprocessing/rate_calibration.h"
+#include "preprocessing/record_end.h"
 
 namespace usvid {
 namespace {
@@ -25,6 +27,7 @@ struct ImportOptions {
   std::vector<std::string> map;
   std::string rate_from;
   std::string rate_bias_from;
+  std::string end_at_stop;
   double scale = 1.0;
   std::vector<std::string> dimensions;
   std::string out;
@@ -58,6 +61,8 @@ void RunImport(const ImportOptions& o) {
   } else {
     data = ImportCsvLog(o.data, ParseColumnMap(o.map), report);
   }
+  if (!o.end_at_stop.empty())
+    report.notes.push_back(DescribeRecordEnd(EndAtStop(data, o.end_at_stop), o.end_at_stop));
   if (data.rows() < 2) throw InputError(o.data + ": fewer than two rows left after repair");
   if (!o.rate_from.empty()) {
     if (data.Has("r")) throw InputError("--rate-from: the log already has a channel r");
@@ -107,6 +112,10 @@ void AddImportCommand(CLI::App& app) {
                   "Remove the rate of turn's offset and scale error, estimated against this "
                   "heading channel [rad] (a gyro's bias: the integral of r parts from the "
                   "heading's change); both on stderr");
+  cmd->add_option("--end-at-stop", o->end_at_stop,
+                  "End the record at the last row where this actuator channel (e.g. n) still "
+                  "runs: the recovery after a test, driven by what the log does not hold, is "
+                  "dropped; the time and rows dropped on stderr");
   cmd->add_option("--scale", o->scale,
                   "Froude-scale the log by LAMBDA = L_target / L_log (> 1: model to full scale, "
                   "< 1: back): time and speeds x sqrt(LAMBDA), lengths x LAMBDA, rates and "

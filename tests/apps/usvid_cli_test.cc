@@ -89,6 +89,9 @@ TEST_F(UsvidCliTest, MeasuredDataOptionsRefuseBadInput) {
       {"import --format csv --data " + (dir / "log.csv").string() +
            " --map t=time,psi=yaw --rate-bias-from psi --out " + out + ".csv",
        "no rate of turn column 'r'"},
+      {"import --format csv --data " + (dir / "log.csv").string() +
+           " --map t=time,psi=yaw --end-at-stop rpm --out " + out + ".csv",
+       "no column 'rpm' to end the record at"},
   };
   for (const Case& c : cases) {
     const auto r = RunUsvid(c.args);

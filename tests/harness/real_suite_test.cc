@@ -70,6 +70,7 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
   const SuiteData& run = esso.suite.test_data[added - names.begin()];
   EXPECT_EQ(run.format, "csv-log");
   EXPECT_EQ(run.map, esso.suite.test_data.front().map);
+  EXPECT_EQ(run.end_at_stop, "n");  // as every listed test run: the recovery is dropped
   EXPECT_TRUE(run.maneuver.empty());
   EXPECT_THAT(esso.notes[0],
               HasSubstr(std::to_string(runs - 16) + " further runs of the data folder"));

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "harness/results.h"
 #include "harness/run_suite.h"
+#include "harness/suite_data.h"
 
 namespace usvid {
 namespace {
@@ -331,6 +332,25 @@ TEST_F(SuiteTest, MeasuredDataSuitesAreReadStrictly) {
   s = ok;
   s["data"]["test"][0]["file"] = {"b.dat", "c.dat"};
   expect(s, "a test entry is one file");
+}
+
+// "end_at_stop": each record of an entry ends at its propeller's last running row (the recovery
+// after a test, preprocessing/record_end.h), and the entry says so when it is written back.
+TEST_F(SuiteTest, AnEntryEndsEachRecordWhereItsPropellerStops) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "usvid_suite_end";
+  std::filesystem::create_directories(dir);
+  std::ofstream((dir / "run.csv").string()) << "t,n,r\n0,10,0.01\n0.1,10,0.02\n0.2,10,0.03\n"
+                                               "0.3,10,0.04\n0.4,0,0.3\n0.5,0,-0.2\n";
+  const nlohmann::json entry = {{"name", "run"}, {"file", "run.csv"}, {"end_at_stop", "n"}};
+  const SuiteData d = ParseSuiteData(entry, dir.string(), "s.json: data");
+  const Dataset data = LoadSuiteData(d);
+  ASSERT_EQ(data.rows(), 4);
+  EXPECT_DOUBLE_EQ(data["r"](3), 0.04);
+  EXPECT_EQ(SuiteDataToJson(d).at("end_at_stop"), "n");
+  nlohmann::json bad = entry;
+  bad["end_at_stop"] = 1;
+  EXPECT_THROW(ParseSuiteData(bad, dir.string(), "s.json: data"), InputError);
+  std::filesystem::remove_all(dir);
 }
 
 // Trained and tested on files: the nominal vessel fits its own clean data exactly, every method

@@ -120,6 +120,41 @@ TEST(EssoOsakaTest, TheParticularsAloneReplayEachZigzagFromItsExecute) {
   }
 }
 
+// The zig-zag of 31 Jul 13:04 goes on recording for 13 s after its propeller stopped, while
+// the unlogged thrusters bring the model back: its yaw rate there, with the rudder amidships,
+// swings wider than anywhere in the zig-zag. `--end-at-stop n` ends the record at the stop
+// (docs/data.md#the-end-of-a-test).
+TEST(EssoOsakaTest, TheRecoveryAfterAZigzagIsDropped) {
+  if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
+  const fs::path dir = FreshTempDir();
+  const std::string map = "\"t=t [s],r=r_angvelo [rad/s],n=n_prop [rps],delta=delta_rudder [rad]\"";
+  const std::string log = kData + "/zigzag/zigzag_31-Jul-2020_13_04_24.csv";
+  const std::string whole = (dir / "whole.csv").string(), test = (dir / "test.csv").string();
+  ASSERT_EQ(
+      RunUsvid("import --format csv --data " + log + " --map " + map + " --out " + whole).exit_code,
+      0);
+  const auto r = RunUsvid("import --format csv --data " + log + " --map " + map +
+                          " --end-at-stop n --out " + test);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, ::testing::HasSubstr("ended where n stopped, at t = 127.1 s: 13.1 s"));
+  auto largest_rate = [](const std::string& file, double from_s) {
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);  // t,r,n,delta
+    double largest = 0.0;
+    while (std::getline(in, line)) {
+      std::stringstream s(line);
+      std::string t, rate;
+      std::getline(s, t, ',');
+      std::getline(s, rate, ',');
+      if (std::stod(t) >= from_s) largest = std::max(largest, std::abs(std::stod(rate)));
+    }
+    return largest;
+  };
+  const double in_test = largest_rate(test, 0.0), after = largest_rate(whole, 127.2);
+  EXPECT_GT(after, in_test) << "the recovery's yaw rate against the zig-zag's";
+}
+
 TEST(EssoOsakaTest, DiagnoseNamesTheLoggedWindThatAModelIgnores) {
   // The random run of 31 Jul 12:29 (684 s, relative wind 0.3-3 m/s). Against the model from the
   // particulars without its wind (model: none), diagnose names the wind; diagnosed again with
