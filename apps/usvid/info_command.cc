@@ -1,6 +1,8 @@
 // usvid info --data F.csv: checks a data file against docs/data.md#data-files and summarises
 // it: rows, duration, and per channel the samples taken, the sampling rate and the range.
-// With --zigzag B: the zig-zag overshoots (metrics/zigzag_response.h).
+// A propeller (n, rev or rpm) that stops before the record ends is reported with the seconds
+// that follow it (preprocessing/record_end.h). With --zigzag B: the zig-zag overshoots
+// (metrics/zigzag_response.h).
 
 #include <algorithm>
 #include <cstdio>
@@ -14,6 +16,7 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "metrics/zigzag_response.h"
+#include "preprocessing/record_end.h"
 
 namespace usvid {
 namespace {
@@ -53,6 +56,21 @@ void PrintHeldMemory(const Dataset& d) {
   std::printf("\n");
 }
 
+// "n stops at 127.1 s and the record goes on for 13.1 s: ..." for a propeller channel that stops
+// for good before the last row; nothing for one that runs to the end, never runs or has gaps.
+void PrintPropellerStop(const Dataset& d) {
+  for (const char* channel : {"n", "rev", "rpm"}) {
+    const Channel* c = d.Find(channel);
+    if (c == nullptr || !c->FullySampled() || c->values().cwiseAbs().maxCoeff() == 0.0) continue;
+    const RecordEnd end = FindRecordEnd(d, channel);
+    if (end.dropped_rows == 0) continue;
+    std::printf(
+        "%s stops at %.1f s and the record goes on for %.1f s: a test's end, or the recovery "
+        "after it (import --end-at-stop %s drops it; docs/data.md#the-end-of-a-test)\n",
+        channel, end.t_end, end.dropped_s, channel);
+  }
+}
+
 struct InfoOptions {
   std::string data;
   double zigzag_deg = 0.0;  // > 0: analyse as a zig-zag with this heading threshold
@@ -76,6 +94,7 @@ void RunInfo(const InfoOptions& o) {
   for (const Dataset::TextColumn& c : d.text_columns())
     std::printf("%-16s %9s\n", c.name.c_str(), "text");
   PrintHeldMemory(d);
+  PrintPropellerStop(d);
   if (o.zigzag_deg > 0) {
     // The rudder angle A taken equal to B, as in the usual 10/10 and 20/20 tests: the execute is
     // the first order of at least about B held until the heading has turned by B.

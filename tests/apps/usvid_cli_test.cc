@@ -12,6 +12,7 @@ namespace {
 
 using testing::FreshTempDir;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using testing::RunUsvid;
 using ::testing::StartsWith;
 using testing::WriteText;
@@ -134,6 +135,26 @@ TEST_F(UsvidCliTest, ImportCsvThenInfo) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_THAT(bad.err, HasSubstr("bad.csv:3:3"));
   EXPECT_FALSE(fs::exists(bad_out));
+}
+
+// A log whose propeller stops before its end: info says where and how long the record goes on,
+// and import --end-at-stop drops those rows and says so (docs/data.md#the-end-of-a-test).
+TEST_F(UsvidCliTest, ThePropellersStopIsReportedAndTheRecordCanEndThere) {
+  const auto dir = FreshTempDir();
+  WriteText(dir / "log.csv", "time,rps,yaw\n0,10,0\n1,10,0.1\n2,10,0.2\n3,0,0.5\n4,0,0.1\n");
+  const auto whole = (dir / "whole.csv").string(), test = (dir / "test.csv").string();
+  ASSERT_EQ(RunUsvid("import --format csv --data " + (dir / "log.csv").string() +
+                     " --map t=time,n=rps,psi=yaw --out " + whole)
+                .exit_code,
+            0);
+  const auto info = RunUsvid("info --data " + whole);
+  EXPECT_THAT(info.out, HasSubstr("n stops at 2.0 s and the record goes on for 2.0 s"));
+  const auto r = RunUsvid("import --format csv --data " + (dir / "log.csv").string() +
+                          " --map t=time,n=rps,psi=yaw --end-at-stop n --out " + test);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("ended where n stopped, at t = 2.0 s: 2.0 s (2 rows) dropped"));
+  EXPECT_EQ(ReadDatasetCsv(test).rows(), 3);
+  EXPECT_THAT(RunUsvid("info --data " + test).out, Not(HasSubstr("stops at")));
 }
 
 // --scale Froude-scales the log and says each channel's factor; a scale of 0 or below, or a
