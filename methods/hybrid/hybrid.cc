@@ -58,6 +58,8 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
   if (options.search_rows < 0) throw InputError("hybrid: search_rows must be >= 0");
   if (options.max_terms < 0 || options.max_terms > kMaxRefitTerms)
     throw InputError("hybrid: at most " + std::to_string(kMaxRefitTerms) + " terms");
+  if (!(options.set_aside_cosine >= 0.0 && options.set_aside_cosine <= 1.0))
+    throw InputError("hybrid: set_aside_cosine must be in [0, 1]");
   if (!(options.critical_ratio >= 0.0))
     throw InputError("hybrid: the critical likelihood ratio must be >= 0");
   const VesselInfo& info = FindVessel(vessel).Info();
@@ -114,6 +116,23 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
       if (std::none_of(result.proposals.begin(), result.proposals.end(),
                        [&](const TermProposal& q) { return SameEffect(q.term, p.term); }))
         result.proposals.push_back(std::move(p));
+  // A proposal with a freed coefficient's own shape would only move that coefficient past its
+  // prior (free_coefficient_shape.h): each is told its closest, and set aside on request.
+  {
+    const std::vector<CoefficientShape> shapes =
+        ClosestFreeCoefficient(vessel, prepared.data, vessel_fit.names, vessel_fit.params,
+                               vessel_fit.free, result.proposals);
+    std::vector<TermProposal> kept;
+    for (size_t i = 0; i < shapes.size(); ++i) {
+      if (options.set_aside_cosine > 0.0 && shapes[i].cosine >= options.set_aside_cosine)
+        result.set_aside.emplace_back(result.proposals[i], shapes[i]);
+      else {
+        kept.push_back(result.proposals[i]);
+        result.proposal_shapes.push_back(shapes[i]);
+      }
+    }
+    result.proposals = std::move(kept);
+  }
 
   // Forward selection by held-out simulation.
   std::vector<Effect> chosen;

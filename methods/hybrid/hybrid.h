@@ -20,11 +20,11 @@
 // `usvid evaluate`, `simulate --params` and `diagnose --params` run it.
 #pragma once
 
-#include <string_view>
-
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "methods/hybrid/free_coefficient_shape.h"
 #include "methods/hybrid/term_proposals.h"
 #include "methods/refit/refit.h"
 
@@ -46,6 +46,10 @@ struct HybridOptions {
   // for one degree of freedom, N_eff the held-out residuals over their correlation time (of the
   // vessel alone): the diagnosis's rule (diagnosis/diagnose.h).
   double critical_ratio = 10.83;
+  // A proposal whose term column is at least this close in shape (|cos|) to a freed
+  // coefficient's derivative column is that coefficient, not a missing term, and is set aside
+  // (free_coefficient_shape.h); 0: none is (every proposal still reports its closest).
+  double set_aside_cosine = 0.0;
 };
 
 struct SelectionRound {
@@ -58,6 +62,10 @@ struct SelectionRound {
 struct HybridResult {
   RefitResult fit;  // the final fit: the vessel's parameters and the chosen terms
   std::vector<TermProposal> proposals;
+  std::vector<CoefficientShape> proposal_shapes;  // per proposal: its closest freed coefficient
+  // The proposals set aside as a freed coefficient's own shape (free_coefficient_shape.h), each
+  // with that coefficient and the cosine.
+  std::vector<std::pair<TermProposal, CoefficientShape>> set_aside;
   double vessel_heldout_error = 0.0;  // the refitted vessel alone, on the held-out part
   double effective_samples = 0.0;     // N_eff of the held-out part
   std::vector<SelectionRound> rounds;

@@ -28,13 +28,24 @@ nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o
   ho.refit.threads = o.threads > 0 ? o.threads : 1;  // proposals in parallel, each one thread
   ho.max_terms = static_cast<int>(options.Integer("max_terms"));
   ho.search_rows = options.Integer("search_rows");
+  ho.set_aside_cosine = options.Number("set_aside_cosine");
   const hybrid::HybridResult h = hybrid::IdentifyHybrid(
       o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, ho);
   nlohmann::json proposals = nlohmann::json::array(), rounds = nlohmann::json::array();
-  for (const hybrid::TermProposal& p : h.proposals) {
+  for (size_t i = 0; i < h.proposals.size(); ++i) {
+    nlohmann::json j = EffectToJson(h.proposals[i].term);
+    j["err"] = h.proposals[i].err;
+    if (!h.proposal_shapes[i].parameter.empty())
+      j["closest_free_coefficient"] = {{"parameter", h.proposal_shapes[i].parameter},
+                                       {"cosine", h.proposal_shapes[i].cosine}};
+    proposals.push_back(j);
+  }
+  nlohmann::json set_aside = nlohmann::json::array();
+  for (const auto& [p, shape] : h.set_aside) {
     nlohmann::json j = EffectToJson(p.term);
     j["err"] = p.err;
-    proposals.push_back(j);
+    j["closest_free_coefficient"] = {{"parameter", shape.parameter}, {"cosine", shape.cosine}};
+    set_aside.push_back(j);
   }
   for (const hybrid::SelectionRound& r : h.rounds) {
     nlohmann::json errors = nlohmann::json::object();
@@ -66,6 +77,8 @@ nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o
           {"hybrid",
            {{"heldout_fraction", ho.heldout},
             {"proposals", proposals},
+            {"set_aside", set_aside},
+            {"set_aside_cosine", ho.set_aside_cosine},
             {"rounds", rounds},
             {"vessel_heldout_error", h.vessel_heldout_error},
             {"effective_samples", h.effective_samples},
@@ -89,6 +102,10 @@ Method HybridMethod() {
       "search_rows", hybrid::HybridOptions{}.search_rows, 0, kUnbounded,
       "the most rows each proposed term's fit and score use (0: half of fit_rows); the final "
       "fit takes fit_rows"));
+  m.options.push_back(NumberOption(
+      "set_aside_cosine", hybrid::HybridOptions{}.set_aside_cosine, 0, 1,
+      "set aside a proposed term whose shape is at least this close (|cos|) to a freed "
+      "coefficient's: that coefficient past its prior, not a missing term (0: keep all)"));
   m.identify = IdentifyHybridModel;
   return m;
 }

@@ -16,8 +16,10 @@
 #include "core/records.h"
 #include "effects/effect_values.h"
 #include "maneuvers/maneuver_factory.h"
+#include "methods/hybrid/free_coefficient_shape.h"
 #include "methods/hybrid/heldout_free_run.h"
 #include "methods/hybrid/term_proposals.h"
+#include "preprocessing/pipeline.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
 
@@ -131,6 +133,9 @@ TEST(HybridTest, RefusesWhatItCannotDo) {
   options.search_rows = -1;
   EXPECT_THROW(hybrid::IdentifyHybrid("odin3dof", data, start, options), InputError);
   options = {};
+  options.set_aside_cosine = 1.5;
+  EXPECT_THROW(hybrid::IdentifyHybrid("odin3dof", data, start, options), InputError);
+  options = {};
   EXPECT_THROW(hybrid::IdentifyHybrid("odin-hs", data,
                                       FindVessel("odin-hs").Info().default_params, options),
                InputError);
@@ -172,6 +177,54 @@ TEST(TermProposalsTest, FindsTheTermsOfAKnownResidual) {
   ASSERT_EQ(scaled.size(), 1u);
   EXPECT_EQ(scaled[0].term.term, "u*u*delta");
   EXPECT_NEAR(scaled[0].term.at("coefficient"), 0.01, 1e-12);
+}
+
+// A term of a freed coefficient's own shape is that coefficient (free_coefficient_shape.h): on
+// a KVLCC2 zig-zag, the MMG yaw moment of N_v is 1/2 rho L^2 d U^2 N_v v/U, so r' += c u v has
+// its shape (|cos| above 0.99), and r' += c u r that of N_r; the cross-flow |v| v and the
+// rudder's u^2 delta are the shape of no freed coefficient, nor is anything with none freed.
+TEST(FreeCoefficientShapeTest, ATermOfAFreedCoefficientsShapeIsThatCoefficient) {
+  const VesselSimulator& sim = FindVessel("kvlcc2");
+  const VesselInfo& info = sim.Info();
+  auto m = MakeManeuver("zigzag:20/20", info.actuation, 600, 1);
+  const Dataset data = sim.RunManeuver(*m, info.default_params, {}, RunOptions{}).data;
+  const std::vector<std::string> states = {"u", "v", "r"};
+  const PreparedData prepared = Preprocess(data, states, info.InputsIn(data), PreprocessOptions{});
+  auto term = [](const std::string& state, const std::string& expression) {
+    return hybrid::TermProposal{
+        Effect{EffectKind::kMissingTerm, {{"coefficient", 1.0}}, {}, state, expression}, 0.0};
+  };
+  const std::vector<hybrid::TermProposal> proposals = {
+      term("r", "u*v"), term("r", "u*r"), term("r", "abs(v)*v"), term("r", "u*u*delta")};
+  const auto shapes = hybrid::ClosestFreeCoefficient(
+      "kvlcc2", prepared.data, info.params, info.default_params, {"N_v", "N_r"}, proposals);
+  ASSERT_EQ(shapes.size(), 4u);
+  EXPECT_EQ(shapes[0].parameter, "N_v");
+  EXPECT_GT(shapes[0].cosine, 0.99);
+  EXPECT_EQ(shapes[1].parameter, "N_r");
+  EXPECT_GT(shapes[1].cosine, 0.99);
+  EXPECT_LT(shapes[2].cosine, 0.99);
+  EXPECT_LT(shapes[3].cosine, 0.99);
+  // The hybrid, asked to, sets aside exactly the proposals of a freed coefficient's shape (here
+  // the yaw moment r' += 2e-4 u v hidden in the data, N_v's), and tells every other its closest.
+  const Effect sway_moment{EffectKind::kMissingTerm, {{"coefficient", 2e-4}}, {}, "r", "u*v"};
+  const Dataset hidden =
+      sim.RunManeuver(*m, info.default_params, ValuesOf({sway_moment}, info.inputs, info.states),
+                      RunOptions{})
+          .data;
+  hybrid::HybridOptions options;
+  options.max_terms = 0;
+  options.set_aside_cosine = 0.99;
+  const hybrid::HybridResult h =
+      hybrid::IdentifyHybrid("kvlcc2", hidden, info.default_params, options);
+  ASSERT_FALSE(h.set_aside.empty());
+  for (const auto& [p, shape] : h.set_aside) EXPECT_GE(shape.cosine, 0.99) << p.term.term;
+  ASSERT_EQ(h.proposal_shapes.size(), h.proposals.size());
+  for (const auto& shape : h.proposal_shapes) EXPECT_LT(shape.cosine, 0.99) << shape.parameter;
+  const auto none = hybrid::ClosestFreeCoefficient("kvlcc2", prepared.data, info.params,
+                                                   info.default_params, {}, proposals);
+  EXPECT_EQ(none[0].parameter, "");
+  EXPECT_EQ(none[0].cosine, 0.0);
 }
 
 }  // namespace
