@@ -7,6 +7,8 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "harness/embedded_suites.h"
+#include "harness/suite_data.h"
+#include "metrics/maneuver_of_record.h"
 
 namespace usvid {
 namespace {
@@ -63,29 +65,46 @@ void Resolve(nlohmann::json& suite, const fs::path& data_dir, std::set<std::stri
     }
 }
 
+// The maneuver a further run of `folder` holds, read from the record (metrics/
+// maneuver_of_record.h) when the folder is named zigzag or turning; "" for another folder, a
+// record without such a test, or one that cannot be read (its row then says why).
+std::string ManeuverOfFurtherRun(const nlohmann::json& entry, const std::string& folder) {
+  const std::string kind = fs::path(folder).filename().string();
+  if (kind != "zigzag" && kind != "turning") return "";
+  try {
+    return ManeuverOfRecord(LoadSuiteData(ParseSuiteData(entry, "", "further run")), kind);
+  } catch (const InputError&) {
+    return "";
+  }
+}
+
 // The runs of the track's folders that the track does not list, sorted, as test entries like
-// its first one (format, column map, end) but without a maneuver: scored by their free runs.
+// its first one (format, column map, end). A zig-zag or a turn, in a folder of that name, is
+// re-run closed-loop as its record says (ManeuverOfFurtherRun); every run is scored by its
+// free run.
 std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::json& suite,
                                         const fs::path& data_dir,
                                         const std::set<std::string>& listed) {
-  std::vector<std::string> found;
+  std::vector<std::pair<std::string, std::string>> found;  // (run, its folder)
   for (const char* folder : spec.folders) {
     std::error_code ec;
     for (const fs::directory_entry& e : fs::directory_iterator(data_dir / folder, ec)) {
       if (!e.is_regular_file() || e.path().extension() != spec.extension) continue;
       const std::string relative = (fs::path(folder) / e.path().filename()).string();
-      if (!listed.contains(relative)) found.push_back(relative);
+      if (!listed.contains(relative)) found.emplace_back(relative, folder);
     }
   }
   std::sort(found.begin(), found.end());
   std::vector<nlohmann::json> out;
   const nlohmann::json& like = suite["data"]["test"].at(0);
-  for (const std::string& f : found) {
+  for (const auto& [f, folder] : found) {
     nlohmann::json entry = {{"name", "held-out " + fs::path(f).stem().string()},
                             {"format", like.at("format")},
                             {"file", (data_dir / f).lexically_normal().string()}};
     for (const char* key : {"map", "end_at_stop"})
       if (like.contains(key)) entry[key] = like[key];
+    if (const std::string maneuver = ManeuverOfFurtherRun(entry, folder); !maneuver.empty())
+      entry["maneuver"] = maneuver;
     out.push_back(entry);
   }
   return out;
@@ -130,8 +149,9 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir,
     else
       track.notes.push_back(std::to_string(further.size()) +
                             (further.size() == 1 ? " further run" : " further runs") +
-                            " of the data folder scored as held-out tests (free runs; no "
-                            "maneuver re-run)");
+                            " of the data folder scored as held-out tests (free runs; the "
+                            "zig-zags and turns also re-run closed-loop, their angle and side "
+                            "read from the record)");
     jsons.push_back(std::move(suite));
     tracks.push_back(std::move(track));
   }

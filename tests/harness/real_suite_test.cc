@@ -71,7 +71,14 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
   EXPECT_EQ(run.format, "csv-log");
   EXPECT_EQ(run.map, esso.suite.test_data.front().map);
   EXPECT_EQ(run.end_at_stop, "n");  // as every listed test run: the recovery is dropped
-  EXPECT_TRUE(run.maneuver.empty());
+  // Re-run closed-loop as the record says: 13:04 is the study's zigzag:20/20.
+  EXPECT_EQ(run.maneuver, "zigzag:20/20");
+  for (const SuiteData& d : esso.suite.test_data) {
+    if (!d.name.starts_with("held-out ")) continue;
+    if (d.name.starts_with("held-out turn_"))
+      EXPECT_THAT(d.maneuver, ::testing::MatchesRegex("turning:-?(20|35)")) << d.name;
+    if (d.name.starts_with("held-out random_")) EXPECT_EQ(d.maneuver, "") << d.name;
+  }
   EXPECT_THAT(esso.notes[0],
               HasSubstr(std::to_string(runs - 16) + " further runs of the data folder"));
   // The embedded vessel file is written beside the results, and the track names it there.
