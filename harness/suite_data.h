@@ -13,7 +13,8 @@
 // `usvid import` would read it, with the same repairs. "from_s" and "to_s" keep the rows with
 // from_s <= t < to_s (a held-back part of one log as its own test set). "maneuver" names the
 // maneuver a test record was run with (maneuver_factory.h: zigzag:A/B or turning:A, A in
-// starboard-positive degrees), so that compare can replay it closed-loop on each model; without
+// starboard-positive degrees; zigzag or turning alone: read from the record,
+// metrics/maneuver_of_record.h), so that compare can replay it closed-loop on each model; without
 // it the record is scored on its recorded inputs only.
 #pragma once
 

@@ -13,6 +13,7 @@
 #include "maneuvers/true_wind.h"
 #include "metrics/equation_model.h"
 #include "metrics/free_run.h"
+#include "metrics/maneuver_of_record.h"
 #include "metrics/rank_tests.h"
 #include "metrics/turning_response.h"
 #include "metrics/wind_aboard.h"
@@ -571,7 +572,18 @@ nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
 }
 
 nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
-                               const std::string& spec, const Dataset& recorded_data) {
+                               const std::string& given_spec, const Dataset& recorded_data) {
+  std::string spec = given_spec;
+  // "zigzag" or "turning" without an angle: the one the record holds (maneuver_of_record.h).
+  if ((spec == "zigzag" || spec == "turning") && !vessel.empty()) {
+    const Actuation& act = FindVessel(vessel).Info().actuation;
+    Dataset with_heading = recorded_data;
+    AddDerivedChannels(with_heading);
+    const std::string read =
+        ManeuverOfRecord(with_heading, spec, with_heading.Has("psi") ? "psi" : "chi",
+                         act.input_names.at(act.yaw_input));
+    if (!read.empty()) spec = read;
+  }
   nlohmann::json out = {{"maneuver", spec}};
   if (spec.empty()) {
     out["status"] = "not replayable: recorded inputs only (the test data name no maneuver)";

@@ -164,7 +164,8 @@ void AddEvaluateCommand(CLI::App& app) {
                   "simulated from its commands");
   cmd->add_option("--maneuver", o->maneuver,
                   "The maneuver the data record (zigzag:A/B or turning:A, A in starboard-positive "
-                  "degrees): re-run closed-loop on the model, its criteria beside the data's");
+                  "degrees; zigzag or turning alone: the angle and side read from the record): "
+                  "re-run closed-loop on the model, its criteria beside the data's");
   cmd->add_option("--vessel", o->vessel, "The vessel whose actuators the replay uses (default: "
                   "the model's)");
   cmd->add_option("--out", o->out, "Directory for metrics.json and plots (else stdout)");

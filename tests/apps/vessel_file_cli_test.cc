@@ -212,6 +212,29 @@ TEST(VesselFileCliTest, AClosedLoopReplayFollowsTheLoggedWind) {
   EXPECT_GT(first_overshoot_error((dir / "calm.csv").string(), "calm"), 1.0);
 }
 
+// `--maneuver zigzag` without its angle replays the zig-zag the record holds: a port-first
+// 15/15 zig-zag of the file's ship is replayed as zigzag:-15/15, to its own first overshoot
+// (metrics/maneuver_of_record.h).
+TEST(VesselFileCliTest, AManeuverWithoutItsAngleIsReadFromTheRecord) {
+  const fs::path dir = FreshTempDir();
+  const std::string zz = (dir / "zz.csv").string(), model = (dir / "nominal.json").string();
+  ASSERT_EQ(
+      RunUsvid("simulate --vessel " + kEsso + " --maneuver zigzag:-15/15 --out " + zz).exit_code,
+      0);
+  ASSERT_EQ(
+      RunUsvid("identify --method nominal --vessel " + kEsso + " --data " + zz + " --out " + model)
+          .exit_code,
+      0);
+  const auto r = RunUsvid("evaluate --model " + model + " --data " + zz +
+                          " --maneuver zigzag --out " + (dir / "eval").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json loop =
+      ReadJsonFile((dir / "eval" / "metrics.json").string()).at("closed_loop");
+  EXPECT_EQ(loop.at("maneuver"), "zigzag:-15/15");
+  ASSERT_EQ(loop.at("status"), "ok");
+  EXPECT_LT(std::abs(loop.at("first_overshoot_error_deg").get<double>()), 0.05);
+}
+
 // The relative wind a log holds is the true wind seen from the hull that logged it. A model that
 // turns otherwise meets that true wind on its own heading: a free run and a closed-loop replay
 // of another ship's record give the model what the same true wind does to it, not the logged
