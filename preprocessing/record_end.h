@@ -14,14 +14,14 @@
 namespace usvid {
 
 struct RecordEnd {
-  double t_end = 0.0;    // time of the last row kept [s]
-  double dropped_s = 0;  // seconds of record dropped after it
+  double t_end = 0.0;      // time of the last row kept [s]
+  double dropped_s = 0.0;  // seconds of record dropped after it
   int dropped_rows = 0;
 };
 
 // The last row at which |channel| is above 1 % of its largest magnitude in the record ("still
-// running": an idling or noisy zero reads as stopped). Throws InputError naming the data's file
-// when the channel is missing, has empty cells or never runs.
+// running": a noisy zero reads as stopped, an idling propeller as running). Throws InputError
+// naming the data's file when the channel is missing, has empty cells or never runs.
 RecordEnd FindRecordEnd(const Dataset& data, const std::string& channel);
 
 // Drops the rows after FindRecordEnd's last running row.
