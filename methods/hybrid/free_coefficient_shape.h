@@ -1,10 +1,10 @@
 // Whether a proposed term is a coefficient the refit already frees, in another dress. A missing
 // term adds c * term(x, u) to a state's derivative; a freed coefficient p changes that
 // derivative by (df/dp) dp. Where the two columns have the same shape over the rows, the term
-// is not missing: it only moves p past the prior that holds p near its published value. On the
-// Esso Osaka runs the hybrid kept r' += -0.151 u v beside a freed N_v, whose yaw moment is
-// 1/2 rho L^2 d U^2 N_v v/U = (...) U v, and before it u' += -0.124 u^2 beside a freed R_0
-// (docs/hybrid.md#a-term-that-is-a-freed-coefficient).
+// is not missing: it is a second p, fitted beside p without the prior that holds p near its
+// published value. On the Esso Osaka runs the hybrid kept r' += -0.151 u v beside a freed N_v,
+// whose yaw moment is 1/2 rho L^2 d U^2 N_v v/U = (...) U v, and before it u' += -0.124 u^2
+// beside a freed R_0 (docs/hybrid.md#a-term-that-is-a-freed-coefficient).
 #pragma once
 
 #include <string>
