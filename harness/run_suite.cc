@@ -307,7 +307,10 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       row.diverged = e.diverged;
       row.diverged_at_s = e.diverged_at_s;
       row.diverged_channel = e.diverged_channel;
-      row.closed_loop = ClosedLoopScore(model, job.vessel, TestManeuverSpec(suite, test), held);
+      const std::string spec = TestManeuverSpec(suite, test);
+      row.closed_loop = ClosedLoopScore(
+          model, job.vessel, suite.Measured() ? RecordedManeuverSpec(spec, job.vessel, held) : spec,
+          held);
     } catch (const std::exception& e) {
       row.status = std::string("failed: ") + e.what();
       row.closed_loop = NotReplayed(suite, test, "the model's evaluation failed");

@@ -571,19 +571,20 @@ nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
   throw InputError("closed loop: '" + spec + "' has no maneuver criteria");
 }
 
+std::string RecordedManeuverSpec(const std::string& spec, const std::string& vessel,
+                                 const Dataset& recorded) {
+  if ((spec != "zigzag" && spec != "turning") || vessel.empty()) return spec;
+  const Actuation& act = FindVessel(vessel).Info().actuation;
+  Dataset with_heading = recorded;
+  AddDerivedChannels(with_heading);
+  const std::string read =
+      ManeuverOfRecord(with_heading, spec, with_heading.Has("psi") ? "psi" : "chi",
+                       act.input_names.at(act.yaw_input));
+  return read.empty() ? spec : read;
+}
+
 nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
-                               const std::string& given_spec, const Dataset& recorded_data) {
-  std::string spec = given_spec;
-  // "zigzag" or "turning" without an angle: the one the record holds (maneuver_of_record.h).
-  if ((spec == "zigzag" || spec == "turning") && !vessel.empty()) {
-    const Actuation& act = FindVessel(vessel).Info().actuation;
-    Dataset with_heading = recorded_data;
-    AddDerivedChannels(with_heading);
-    const std::string read =
-        ManeuverOfRecord(with_heading, spec, with_heading.Has("psi") ? "psi" : "chi",
-                         act.input_names.at(act.yaw_input));
-    if (!read.empty()) spec = read;
-  }
+                               const std::string& spec, const Dataset& recorded_data) {
   nlohmann::json out = {{"maneuver", spec}};
   if (spec.empty()) {
     out["status"] = "not replayable: recorded inputs only (the test data name no maneuver)";

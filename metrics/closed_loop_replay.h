@@ -71,12 +71,18 @@ nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
 
 // A row's "closed_loop" object: {"maneuver", "status", "measured": {criteria}, "model":
 // {criteria}, and per criterion "<name>_error_<unit>" = model - measured (null when either is)}.
-// A spec of "zigzag" or "turning" alone is the test the record holds, its angle and side read
-// from it (metrics/maneuver_of_record.h), and "maneuver" names that spec. status "ok"; "diverged at
+// status "ok"; "diverged at
 // T s (channel)"; or "not replayable: why" (an open-loop maneuver, a record without a maneuver, a
 // model that cannot run one): never a missing field, never throws for the model's sake (a record
 // without the maneuver's channels still throws InputError).
 nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
                                const std::string& spec, const Dataset& recorded);
+
+// The spec that replays a measured record: "zigzag" or "turning" alone is the test the record
+// holds, its angle and side read from it with `vessel`'s rudder (metrics/maneuver_of_record.h);
+// any other spec, or one the record does not hold, is returned as it is. Measured records only:
+// a simulated suite's "zigzag" is the maneuver it simulated (20/20).
+std::string RecordedManeuverSpec(const std::string& spec, const std::string& vessel,
+                                 const Dataset& recorded);
 
 }  // namespace usvid

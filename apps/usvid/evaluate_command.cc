@@ -62,7 +62,8 @@ ScoredRecord EvaluateRecord(const nlohmann::json& model, const EvaluateOptions& 
     if (vessel.empty())
       throw InputError(o.model + ": --maneuver needs a vessel: the model names none, give --vessel");
     FindVessel(vessel);  // throws for an unknown name
-    metrics["closed_loop"] = ClosedLoopScore(model, vessel, o.maneuver, r.data);
+    metrics["closed_loop"] =
+        ClosedLoopScore(model, vessel, RecordedManeuverSpec(o.maneuver, vessel, r.data), r.data);
   }
   metrics["model"] = o.model;
   metrics["data"] = path;
