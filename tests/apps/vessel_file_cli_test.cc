@@ -235,6 +235,25 @@ TEST(VesselFileCliTest, AManeuverWithoutItsAngleIsReadFromTheRecord) {
   EXPECT_LT(std::abs(loop.at("first_overshoot_error_deg").get<double>()), 0.05);
 }
 
+// A measured suite's test entry with "maneuver": "zigzag" replays the same way.
+TEST(VesselFileCliTest, AMeasuredSuitesBareZigzagIsReadFromItsRecord) {
+  const fs::path dir = FreshTempDir();
+  const std::string zz = (dir / "zz.csv").string();
+  ASSERT_EQ(
+      RunUsvid("simulate --vessel " + kEsso + " --maneuver zigzag:-15/15 --out " + zz).exit_code,
+      0);
+  WriteText(dir / "suite.json", R"({"name": "bare", "vessels": [")" + kEsso + R"("],
+      "data": {"train": [{"name": "zz", "file": "zz.csv"}],
+               "test": [{"name": "zz again", "file": "zz.csv", "maneuver": "zigzag"}]},
+      "methods": ["nominal"]})");
+  const auto r = RunUsvid("compare --suite " + (dir / "suite.json").string() + " --out " +
+                          (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json row = ReadJsonFile((dir / "out" / "results.json").string()).at("rows").at(0);
+  EXPECT_EQ(row.at("closed_loop").at("maneuver"), "zigzag:-15/15");
+  EXPECT_EQ(row.at("closed_loop").at("status"), "ok");
+}
+
 // The relative wind a log holds is the true wind seen from the hull that logged it. A model that
 // turns otherwise meets that true wind on its own heading: a free run and a closed-loop replay
 // of another ship's record give the model what the same true wind does to it, not the logged
