@@ -460,6 +460,13 @@ std::string ErrorKey(const std::string& criterion) {
   return criterion + "_error";
 }
 
+// turning[:A]: the rudder angle |A| [deg] the execute is found at; 0 (the command's largest)
+// without one.
+double TurningRudderDeg(const std::string& spec) {
+  const size_t colon = spec.find(':');
+  return colon == std::string::npos ? 0.0 : std::abs(std::stod(spec.substr(colon + 1)));
+}
+
 // zigzag[:A/B]: the rudder angle A and the heading threshold B [deg], 20/20 by default.
 ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
                              const std::string& heading, const std::string& rudder,
@@ -487,7 +494,8 @@ void CheckFirstTurn(const std::string& spec, const Dataset& recorded, const std:
     recorded_turn = z.first_turn;
     execute_s = z.execute_s;
   } else {
-    const TurningResponse r = AnalyseTurning(recorded, heading, rudder);
+    const TurningResponse r =
+        AnalyseTurning(recorded, heading, rudder, "north", "east", true, TurningRudderDeg(spec));
     recorded_turn = r.direction;
     execute_s = r.execute_s;
   }
@@ -532,7 +540,9 @@ ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& 
 double ManeuverExecute(const std::string& spec, const Dataset& data, const std::string& heading,
                        const std::string& rudder) {
   if (spec.starts_with("zigzag")) return AnalyseZigzag(spec, data, heading, rudder).execute_s;
-  if (spec.starts_with("turning")) return AnalyseTurning(data, heading, rudder).execute_s;
+  if (spec.starts_with("turning"))
+    return AnalyseTurning(data, heading, rudder, "north", "east", true, TurningRudderDeg(spec))
+        .execute_s;
   throw InputError("closed loop: '" + spec + "' has no execute");
 }
 
@@ -562,7 +572,8 @@ nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
             {"period_s", Value(at(z.reversal_s, 2) - at(z.reversal_s, 0))}};
   }
   if (spec.starts_with("turning")) {
-    const TurningResponse r = AnalyseTurning(data, heading, rudder, "north", "east", !replay);
+    const TurningResponse r =
+        AnalyseTurning(data, heading, rudder, "north", "east", !replay, TurningRudderDeg(spec));
     return {{"advance_m", Value(r.advance_m)},
             {"transfer_m", Value(r.transfer_m)},
             {"tactical_diameter_m", Value(r.tactical_diameter_m)},

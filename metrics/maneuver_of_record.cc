@@ -33,7 +33,7 @@ std::string ManeuverOfRecord(const Dataset& data, const std::string& kind,
     if (z.first_turn == 0 || z.reversal_s.empty()) return "";
     return "zigzag:" + std::to_string(z.first_turn * a) + "/" + std::to_string(a);
   }
-  const TurningResponse t = AnalyseTurning(data, heading, rudder);
+  const TurningResponse t = AnalyseTurning(data, heading, rudder, "north", "east", true, a);
   if (t.direction == 0 || !std::isfinite(t.advance_m)) return "";  // not turned by 90 deg
   return "turning:" + std::to_string(t.direction * a);
 }

@@ -92,7 +92,7 @@ double CircleRadius(const Eigen::VectorXd& t, const Eigen::VectorXd& north,
 
 TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
                                const std::string& rudder, const std::string& north,
-                               const std::string& east, bool find_execute) {
+                               const std::string& east, bool find_execute, double rudder_deg) {
   for (const std::string& c : {heading, rudder, north, east})
     if (!data.Has(c)) {
       data.CheckNotText(c);
@@ -106,7 +106,9 @@ TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
   const Samples psi = Sampled(t, UnwrappedAngle(data[heading]));  // a log's heading may wrap
   std::vector<double> heading_at(delta.t.size());
   for (size_t k = 0; k < delta.t.size(); ++k) heading_at[k] = At(psi, delta.t[k]);
-  const long first = find_execute ? FindExecute(delta.x, heading_at, moved, 90.0 * kDeg) : -1;
+  const long first = find_execute ? FindExecute(delta.x, heading_at, moved, 90.0 * kDeg,
+                                                std::abs(rudder_deg) * kDeg)
+                                  : -1;
   double execute = first >= 0 ? delta.t[first] : kNaN;
   for (size_t k = 0; k < delta.x.size() && std::isnan(execute); ++k)
     if (std::abs(delta.x[k] - delta.x[0]) > moved) execute = delta.t[k];

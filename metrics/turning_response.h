@@ -44,10 +44,12 @@ struct TurningResponse {
 // Not reaching 90 or 180 deg is a result (flags false, values NaN). Throws InputError (naming
 // the data's file) when a channel is missing or the rudder never moves.
 // `find_execute` false: the execute is the first movement (a simulated run, which starts at its
-// lead-in).
+// lead-in). `rudder_deg`: the test's rudder angle A of turning:A, the order the execute is found
+// at (metrics/maneuver_execute.h); 0 takes the command's largest, which an operator's swing
+// past A before the order (the Esso Osaka circle of 14 Oct 14:29: -24 deg, then 19.5) exceeds.
 TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading = "psi",
                                const std::string& rudder = "delta",
-                               const std::string& north = "north",
-                               const std::string& east = "east", bool find_execute = true);
+                               const std::string& north = "north", const std::string& east = "east",
+                               bool find_execute = true, double rudder_deg = 0.0);
 
 }  // namespace usvid

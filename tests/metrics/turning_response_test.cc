@@ -79,6 +79,20 @@ TEST(TurningResponseTest, AnalyticCircleGivesItsGeometry) {
 
 // The ITTC rudder sign (positive to port) gives the same figures: the direction is read from
 // the heading.
+// An operator who swings the rudder past the test's angle before the order (to port, 40 deg, for
+// 3 s, while the heading holds) makes that swing the command's largest: the 35 deg order is then
+// not at full angle, and the execute falls back to the swing. Given the test's angle (turning:35)
+// the execute is the order's, and the circle's figures are exact.
+TEST(TurningResponseTest, TheTestsAngleFindsTheExecutePastAnOperatorsWiderSwing) {
+  Dataset d = StraightThenCircle(+1);
+  Eigen::VectorXd delta = d["delta"];
+  for (Eigen::Index k = 0; k < d.rows(); ++k)
+    if (d.t()(k) >= kExecute - 5.0 && d.t()(k) < kExecute - 2.0) delta(k) = -40 * kDeg;
+  d.Set("delta", delta);
+  ExpectCircle(AnalyseTurning(d, "psi", "delta", "north", "east", true, 35.0), +1, "given 35");
+  EXPECT_NEAR(AnalyseTurning(d).execute_s, kExecute - 5.0, 1e-9);  // the swing, not the order
+}
+
 TEST(TurningResponseTest, RudderSignConventionDoesNotMatter) {
   for (int side : {+1, -1}) {
     Dataset d = StraightThenCircle(side);
