@@ -15,19 +15,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A folder scanned for further test runs, from the data folder, and the test its runs hold:
+// "zigzag", "turning", "any" (either, read from each record) or "" (free runs alone).
+struct RunFolder {
+  const char* path;
+  const char* tests;
+};
+
 struct TrackSpec {
   const char* name;
   const char* json;
-  std::vector<const char*> folders;  // scanned for further test runs, from the data folder
+  std::vector<RunFolder> folders;
   const char* extension;
 };
 
 const std::vector<TrackSpec>& Tracks() {
   static const std::vector<TrackSpec> tracks = {
-      {"kvlcc2", kRealKvlcc2SuiteJson, {"kvlcc2-marin"}, ".dat"},
+      {"kvlcc2", kRealKvlcc2SuiteJson, {{"kvlcc2-marin", "any"}}, ".dat"},
       {"esso-osaka",
        kRealEssoOsakaSuiteJson,
-       {"esso-osaka/zigzag", "esso-osaka/turning", "esso-osaka/random"},
+       {{"esso-osaka/zigzag", "zigzag"},
+        {"esso-osaka/turning", "turning"},
+        {"esso-osaka/random", ""}},
        ".csv"}};
   return tracks;
 }
@@ -66,32 +75,32 @@ void Resolve(nlohmann::json& suite, const fs::path& data_dir, std::set<std::stri
 }
 
 // The maneuver a further run of `folder` holds, read from the record (metrics/
-// maneuver_of_record.h) when the folder is named zigzag or turning; "" for another folder, a
-// record without such a test, or one that cannot be read (its row then says why).
-std::string ManeuverOfFurtherRun(const nlohmann::json& entry, const std::string& folder) {
-  const std::string kind = fs::path(folder).filename().string();
-  if (kind != "zigzag" && kind != "turning") return "";
+// maneuver_of_record.h) when the folder holds tests; "" for a folder of free runs, a record
+// without such a test, or one that cannot be read (its row then says why).
+std::string ManeuverOfFurtherRun(const nlohmann::json& entry, const RunFolder& folder) {
+  if (std::string(folder.tests).empty()) return "";
   try {
-    return ManeuverOfRecord(LoadSuiteData(ParseSuiteData(entry, "", "further run")), kind);
+    return ManeuverOfRecord(LoadSuiteData(ParseSuiteData(entry, "", "further run")), folder.tests);
   } catch (const InputError&) {
     return "";
   }
 }
 
 // The runs of the track's folders that the track does not list, sorted, as test entries like
-// its first one (format, column map, end). A zig-zag or a turn, in a folder of that name, is
+// its first one (format, column map, end). A zig-zag or a turn, in a folder of tests, is
 // re-run closed-loop as its record says (ManeuverOfFurtherRun); every run is scored by its
 // free run.
 std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::json& suite,
                                         const fs::path& data_dir,
                                         const std::set<std::string>& listed) {
-  std::vector<std::pair<std::string, std::string>> found;  // (run, its folder)
-  for (const char* folder : spec.folders) {
+  std::vector<std::pair<std::string, size_t>> found;  // (run, its folder's index)
+  for (size_t i = 0; i < spec.folders.size(); ++i) {
     std::error_code ec;
+    const fs::path folder = spec.folders[i].path;
     for (const fs::directory_entry& e : fs::directory_iterator(data_dir / folder, ec)) {
       if (!e.is_regular_file() || e.path().extension() != spec.extension) continue;
-      const std::string relative = (fs::path(folder) / e.path().filename()).string();
-      if (!listed.contains(relative)) found.emplace_back(relative, folder);
+      const std::string relative = (folder / e.path().filename()).string();
+      if (!listed.contains(relative)) found.emplace_back(relative, i);
     }
   }
   std::sort(found.begin(), found.end());
@@ -103,7 +112,8 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
                             {"file", (data_dir / f).lexically_normal().string()}};
     for (const char* key : {"map", "end_at_stop"})
       if (like.contains(key)) entry[key] = like[key];
-    if (const std::string maneuver = ManeuverOfFurtherRun(entry, folder); !maneuver.empty())
+    if (const std::string maneuver = ManeuverOfFurtherRun(entry, spec.folders[folder]);
+        !maneuver.empty())
       entry["maneuver"] = maneuver;
     out.push_back(entry);
   }
@@ -134,7 +144,7 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir,
     std::vector<std::string> lacks;
     Resolve(suite, data_dir, listed, lacks);
     if (lacks.size() == listed.size())  // the whole vessel is absent: name its folder
-      missing.push_back(fs::path(spec.folders[0]).begin()->string() + "/ (all " +
+      missing.push_back(fs::path(spec.folders[0].path).begin()->string() + "/ (all " +
                         std::to_string(listed.size()) + " of the track's runs)");
     else
       missing.insert(missing.end(), lacks.begin(), lacks.end());

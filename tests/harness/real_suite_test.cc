@@ -1,6 +1,7 @@
 // The real suite's tracks (harness/real_suite.h) on a data folder: the shared runs, and every
 // further run of a track's folders added as a held-out test (the papers' test runs, where a
-// folder holds them). Skips without ../shared/data.
+// folder holds them; another tank's KVLCC2 tests), re-run closed-loop as its record says when
+// it is a zig-zag or a turn. Skips without ../shared/data.
 #include "harness/real_suite.h"
 
 #include <gmock/gmock.h>
@@ -36,7 +37,15 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
   const fs::path dir = TempDir("further");
   const fs::path data = dir / "data";
   fs::create_directories(data);
-  fs::create_directory_symlink(fs::absolute(kShared / "kvlcc2-marin"), data / "kvlcc2-marin");
+  // A copy of the KVLCC2 folder with two runs more, a zig-zag and a turning circle, named as
+  // another tank might name them.
+  fs::create_directories(data / "kvlcc2-marin");
+  for (const auto& e : fs::directory_iterator(kShared / "kvlcc2-marin"))
+    fs::create_symlink(fs::absolute(e.path()), data / "kvlcc2-marin" / e.path().filename());
+  fs::create_symlink(fs::absolute(kShared / "kvlcc2-marin/MARIN_FREE_KVLCC2_zz_-20_m.dat"),
+                     data / "kvlcc2-marin/other_tank_a.dat");
+  fs::create_symlink(fs::absolute(kShared / "kvlcc2-marin/MARIN_FREE_KVLCC2_tc_35_m.dat"),
+                     data / "kvlcc2-marin/other_tank_b.dat");
   // A copy of the Esso folder with one run more: a zig-zag the shared folder does not have.
   for (const char* sub : {"zigzag", "turning", "random", "berthing"}) {
     fs::create_directories(data / "esso-osaka" / sub);
@@ -51,9 +60,16 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
   const SuiteTrack& kvlcc2 = tracks[0];
   const SuiteTrack& esso = tracks[1];
   EXPECT_EQ(kvlcc2.name, "kvlcc2");
-  EXPECT_THAT(TestNames(kvlcc2.suite), ::testing::ElementsAre("zigzag -20/20", "turning 35"));
+  EXPECT_THAT(TestNames(kvlcc2.suite),
+              ::testing::ElementsAre("zigzag -20/20", "turning 35", "held-out other_tank_a",
+                                     "held-out other_tank_b"));
+  // The folder holds both kinds of test: each further run's is read from its record, and is
+  // the spec the track gives the same record by hand.
+  ASSERT_EQ(kvlcc2.suite.test_data.size(), 4u);
+  EXPECT_EQ(kvlcc2.suite.test_data[2].maneuver, kvlcc2.suite.test_data[0].maneuver);
+  EXPECT_EQ(kvlcc2.suite.test_data[3].maneuver, kvlcc2.suite.test_data[1].maneuver);
   ASSERT_EQ(kvlcc2.notes.size(), 1u);
-  EXPECT_THAT(kvlcc2.notes[0], HasSubstr("only the shared runs"));
+  EXPECT_THAT(kvlcc2.notes[0], HasSubstr("2 further runs of the data folder"));
 
   EXPECT_EQ(esso.name, "esso-osaka");
   const std::vector<std::string> names = TestNames(esso.suite);

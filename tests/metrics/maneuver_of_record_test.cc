@@ -2,7 +2,9 @@
 // either way give back the spec they were run with, a random-steps record is neither, and a
 // record without a rudder is refused. On the shared Esso Osaka runs (a hand-steered start, a
 // logged rudder a little off its order), every zig-zag and turning circle gives the spec the
-// study replays it with (docs/studies/esso-osaka-mmg.json).
+// study replays it with (docs/studies/esso-osaka-mmg.json). Either kind is told from the record
+// itself: MARIN's KVLCC2 zig-zags and turning circle, in one folder, give the specs that
+// docs/studies/kvlcc2-marin.json names.
 #include "metrics/maneuver_of_record.h"
 
 #include <gmock/gmock.h>
@@ -14,6 +16,7 @@
 #include "core/error.h"
 #include "importers/column_map.h"
 #include "importers/csv_log.h"
+#include "importers/marin_dat.h"
 #include "maneuvers/maneuver_factory.h"
 #include "simulation/vessel_simulator.h"
 
@@ -34,6 +37,10 @@ TEST(ManeuverOfRecordTest, ASimulatedTestGivesBackItsSpec) {
   EXPECT_EQ(ManeuverOfRecord(Simulated("turning:35", 900), "turning"), "turning:35");
   EXPECT_EQ(ManeuverOfRecord(Simulated("turning:-35", 900), "turning"), "turning:-35");
   EXPECT_EQ(ManeuverOfRecord(Simulated("zigzag:20/20", 900), "turning"), "");
+  // A turn never reverses its rudder, and a zig-zag's heading never turns by 90 deg.
+  EXPECT_EQ(ManeuverOfRecord(Simulated("zigzag:-10/10", 900), "any"), "zigzag:-10/10");
+  EXPECT_EQ(ManeuverOfRecord(Simulated("turning:-35", 900), "any"), "turning:-35");
+  EXPECT_EQ(ManeuverOfRecord(Simulated("random-steps", 900), "any"), "");
   Dataset no_rudder = Simulated("zigzag:20/20", 100);
   no_rudder.Set("delta", Eigen::VectorXd::Zero(no_rudder.rows()));
   EXPECT_EQ(ManeuverOfRecord(no_rudder, "zigzag"), "");
@@ -64,6 +71,21 @@ TEST(ManeuverOfRecordTest, EachSharedEssoOsakaTestGivesTheStudysSpec) {
     ImportReport report;
     const Dataset d = ImportCsvLog((data / file).string(), map, report);
     EXPECT_EQ(ManeuverOfRecord(d, std::string(spec).substr(0, std::string(spec).find(':'))), spec)
+        << file;
+    EXPECT_EQ(ManeuverOfRecord(d, "any"), spec) << file;
+  }
+}
+
+TEST(ManeuverOfRecordTest, MarinsKvlcc2TestsAreToldApartFromTheirRecords) {
+  const std::filesystem::path data = std::string(USVID_SHARED_DATA_DIR) + "/kvlcc2-marin";
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
+  const std::pair<const char*, const char*> runs[] = {
+      {"MARIN_FREE_KVLCC2_zz_20_m.dat", "zigzag:-20/20"},
+      {"MARIN_FREE_KVLCC2_zz_-20_m.dat", "zigzag:20/20"},
+      {"MARIN_FREE_KVLCC2_tc_35_m.dat", "turning:-35"}};
+  for (const auto& [file, spec] : runs) {
+    ImportReport report;
+    EXPECT_EQ(ManeuverOfRecord(ImportMarinDat((data / file).string(), report), "any"), spec)
         << file;
   }
 }
