@@ -1,9 +1,9 @@
 #include "maneuvers/maneuver_factory.h"
 
 #include "core/error.h"
-#include "core/parse_number.h"
 #include "maneuvers/autopilot.h"
 #include "maneuvers/input_schedule.h"
+#include "maneuvers/maneuver_spec.h"
 #include "maneuvers/step_grid.h"
 #include "maneuvers/turning.h"
 #include "maneuvers/zigzag.h"
@@ -14,24 +14,12 @@ namespace {
 constexpr const char* kKnown =
     "zigzag:A/B, turning:A, stepgrid:T/Y, random-steps, prbs, multisine, autopilot:HOLD";
 
-// Splits "a/b" into numbers; `count` of them are expected.
-std::vector<double> Numbers(const std::string& args, size_t count, const std::string& spec) {
-  std::vector<double> out;
-  size_t start = 0;
-  while (true) {
-    const auto slash = args.find('/', start);
-    const std::string item = args.substr(start, slash == std::string::npos ? slash : slash - start);
-    const ParsedNumber p = ParseNumber(item);
-    if (p.status != NumberStatus::kOk)
-      throw InputError("--maneuver '" + spec + "': " + DescribeNumberStatus(p.status, item));
-    out.push_back(p.value);
-    if (slash == std::string::npos) break;
-    start = slash + 1;
-  }
-  if (out.size() != count)
+// The spec's numbers; `count` of them are expected.
+std::vector<double> Numbers(const ManeuverSpec& parsed, size_t count, const std::string& spec) {
+  if (parsed.numbers.size() != count)
     throw InputError("--maneuver '" + spec + "': expected " + std::to_string(count) +
                      " number(s) after ':'");
-  return out;
+  return parsed.numbers;
 }
 
 double Positive(double value, const std::string& spec) {
@@ -44,10 +32,9 @@ double Positive(double value, const std::string& spec) {
 std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation& act,
                                        double duration_s, uint64_t seed) {
   if (duration_s < 0) throw InputError("--duration: must not be negative");
-  const auto colon = spec.find(':');
-  const std::string name = spec.substr(0, colon);
-  const bool has_args = colon != std::string::npos;
-  const std::string args = has_args ? spec.substr(colon + 1) : "";
+  const ManeuverSpec args = ParseManeuverSpec(spec);
+  const std::string& name = args.name;
+  const bool has_args = spec.find(':') != std::string::npos;
   auto duration = [&](double fallback) { return duration_s > 0 ? duration_s : fallback; };
 
   if (name == "zigzag") {

@@ -10,6 +10,7 @@
 #include "core/derived_channels.h"
 #include "core/error.h"
 #include "maneuvers/maneuver_factory.h"
+#include "maneuvers/maneuver_spec.h"
 #include "maneuvers/true_wind.h"
 #include "metrics/equation_model.h"
 #include "metrics/free_run.h"
@@ -463,17 +464,17 @@ std::string ErrorKey(const std::string& criterion) {
 // turning[:A]: the rudder angle |A| [deg] the execute is found at; 0 (the command's largest)
 // without one.
 double TurningRudderDeg(const std::string& spec) {
-  const size_t colon = spec.find(':');
-  return colon == std::string::npos ? 0.0 : std::abs(std::stod(spec.substr(colon + 1)));
+  const ManeuverSpec parsed = ParseManeuverSpec(spec);
+  return parsed.numbers.empty() ? 0.0 : std::abs(parsed.numbers[0]);
 }
 
 // zigzag[:A/B]: the rudder angle A and the heading threshold B [deg], 20/20 by default.
 ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
                              const std::string& heading, const std::string& rudder,
                              bool replay = false) {
-  const size_t colon = spec.find(':'), slash = spec.find('/');
-  const double a = colon == std::string::npos ? 20.0 : std::abs(std::stod(spec.substr(colon + 1)));
-  const double b = slash == std::string::npos ? 20.0 : std::abs(std::stod(spec.substr(slash + 1)));
+  const ManeuverSpec parsed = ParseManeuverSpec(spec);
+  const double a = parsed.numbers.empty() ? 20.0 : std::abs(parsed.numbers[0]);
+  const double b = parsed.numbers.size() < 2 ? 20.0 : std::abs(parsed.numbers[1]);
   return AnalyseZigzag(data, b, heading, rudder, replay ? -1.0 : a);
 }
 
@@ -483,13 +484,12 @@ ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
 // from the other side.
 void CheckFirstTurn(const std::string& spec, const Dataset& recorded, const std::string& heading,
                     const std::string& rudder) {
-  const size_t colon = spec.find(':');
-  const size_t end = spec.find('/', colon == std::string::npos ? 0 : colon);
-  const double angle = colon == std::string::npos ? 1.0 : std::stod(spec.substr(colon + 1));
-  const int turns = angle >= 0 ? 1 : -1;
+  const ManeuverSpec parsed = ParseManeuverSpec(spec);
+  const bool zigzag = parsed.name == "zigzag";
+  const int turns = parsed.numbers.empty() || parsed.numbers[0] >= 0 ? 1 : -1;
   double execute_s = 0.0;
   int recorded_turn = 0;
-  if (spec.starts_with("zigzag")) {
+  if (zigzag) {
     const ZigzagResponse z = AnalyseZigzag(spec, recorded, heading, rudder);
     recorded_turn = z.first_turn;
     execute_s = z.execute_s;
@@ -500,21 +500,12 @@ void CheckFirstTurn(const std::string& spec, const Dataset& recorded, const std:
     execute_s = r.execute_s;
   }
   if (recorded_turn == 0 || recorded_turn == turns) return;
-  const std::string number =
-      colon == std::string::npos
-          ? ""
-          : spec.substr(colon + 1, end == std::string::npos ? std::string::npos : end - colon - 1);
-  const std::string mirrored =
-      colon == std::string::npos ? spec + ":-" + (spec.starts_with("zigzag") ? "20/20" : "35")
-                                 : spec.substr(0, colon + 1) +
-                                       (number.starts_with('-') ? number.substr(1) : "-" + number) +
-                                       (end == std::string::npos ? "" : spec.substr(end));
   std::ostringstream at;
   at << std::fixed << std::setprecision(1) << execute_s;
   throw InputError(recorded.SourcePrefix() + spec + " turns to " +
                    (turns > 0 ? "starboard" : "port") + " first, the record to " +
                    (turns > 0 ? "port" : "starboard") + " (its execute at " + at.str() +
-                   " s): give " + mirrored);
+                   " s): give " + parsed.Mirrored(zigzag ? "20/20" : "35"));
 }
 
 // A criterion's value for JSON: null when not finite.
