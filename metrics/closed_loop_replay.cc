@@ -577,11 +577,9 @@ std::string RecordedManeuverSpec(const std::string& spec, const std::string& ves
                                  const Dataset& recorded) {
   if ((spec != "zigzag" && spec != "turning") || vessel.empty()) return spec;
   const Actuation& act = FindVessel(vessel).Info().actuation;
-  Dataset with_heading = recorded;
-  AddDerivedChannels(with_heading);
-  const std::string read =
-      ManeuverOfRecord(with_heading, spec, with_heading.Has("psi") ? "psi" : "chi",
-                       act.input_names.at(act.yaw_input));
+  // The heading as logged: a derived course needs psi itself (core/derived_channels.h).
+  const std::string read = ManeuverOfRecord(recorded, spec, recorded.Has("psi") ? "psi" : "chi",
+                                            act.input_names.at(act.yaw_input));
   return read.empty() ? spec : read;
 }
 
