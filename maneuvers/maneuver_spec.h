@@ -1,8 +1,7 @@
 // A maneuver spec (docs/data.md#maneuvers) split into its name and its numbers:
 // "zigzag:-20/20" -> zigzag, {-20, 20}; "turning" -> turning, {} (the maneuver's defaults). The
-// one reader of a spec's text: the factory builds maneuvers from it (maneuver_factory.h), and the
-// closed-loop replay reads a test's angles from it and mirrors its side (metrics/
-// closed_loop_replay.h).
+// factory builds maneuvers from it (maneuver_factory.h), and the closed-loop replay reads a
+// test's angles from it and mirrors its side (metrics/closed_loop_replay.h).
 #pragma once
 
 #include <string>

@@ -3,8 +3,8 @@
 // record without a rudder is refused. On the shared Esso Osaka runs (a hand-steered start, a
 // logged rudder a little off its order), every zig-zag and turning circle gives the spec the
 // study replays it with (docs/studies/esso-osaka-mmg.json). Either kind is told from the record
-// itself: MARIN's KVLCC2 zig-zags and turning circle, in one folder, give the specs that
-// docs/studies/kvlcc2-marin.json names.
+// itself: MARIN's KVLCC2 zig-zags and turning circle, in one folder, give the specs the real
+// suite's KVLCC2 track names by hand (harness/suites/real-kvlcc2.json), and zz_20 its mirror.
 #include "metrics/maneuver_of_record.h"
 
 #include <gmock/gmock.h>
@@ -37,7 +37,7 @@ TEST(ManeuverOfRecordTest, ASimulatedTestGivesBackItsSpec) {
   EXPECT_EQ(ManeuverOfRecord(Simulated("turning:35", 900), "turning"), "turning:35");
   EXPECT_EQ(ManeuverOfRecord(Simulated("turning:-35", 900), "turning"), "turning:-35");
   EXPECT_EQ(ManeuverOfRecord(Simulated("zigzag:20/20", 900), "turning"), "");
-  // A turn never reverses its rudder, and a zig-zag's heading never turns by 90 deg.
+  // Either kind, told apart by the side the rudder holds its angle to; random steps hold none.
   EXPECT_EQ(ManeuverOfRecord(Simulated("zigzag:-10/10", 900), "any"), "zigzag:-10/10");
   EXPECT_EQ(ManeuverOfRecord(Simulated("turning:-35", 900), "any"), "turning:-35");
   EXPECT_EQ(ManeuverOfRecord(Simulated("random-steps", 900), "any"), "");
