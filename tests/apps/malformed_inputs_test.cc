@@ -141,6 +141,10 @@ const Malformed kCatalogue[] = {
      "evaluate --model {D}/model.json --data {D}/good.csv --maneuver zigzag:-20/20 --out {OUT}",
      "zigzag:-20/20 turns to port first, the record to starboard (its execute at 5.0 s): give "
      "zigzag:20/20"},
+    // A maneuver whose number does not parse, refused before the replay ("2x" is not 2).
+    {"evaluate_maneuver_bad_number",
+     "evaluate --model {D}/model.json --data {D}/good.csv --maneuver zigzag:2x/20 --out {OUT}",
+     "--maneuver 'zigzag:2x/20': '2x' is not a number"},
     // Suite JSON.
     {"suite_unknown_field", "compare --suite {D}/suite_unknown.json --out {OUT}", "colour"},
     {"suite_wrong_type", "compare --suite {D}/suite_types.json --out {OUT}", "vessels"},
