@@ -22,23 +22,40 @@ struct RunFolder {
   const char* tests;
 };
 
+// A further run's file extension and the suite format it is read in; "" for the format of the
+// track's listed runs (with their column map).
+struct RunFormat {
+  const char* extension;
+  const char* format;
+};
+
 struct TrackSpec {
   const char* name;
   const char* json;
   std::vector<RunFolder> folders;
-  const char* extension;
+  std::vector<RunFormat> formats;
 };
 
+// KVLCC2's folder also takes data files of usvid's own format (docs/data.md): another tank's
+// tests, imported (and Froude-scaled) with usvid import.
 const std::vector<TrackSpec>& Tracks() {
   static const std::vector<TrackSpec> tracks = {
-      {"kvlcc2", kRealKvlcc2SuiteJson, {{"kvlcc2-marin", "any"}}, ".dat"},
+      {"kvlcc2", kRealKvlcc2SuiteJson, {{"kvlcc2-marin", "any"}}, {{".dat", ""}, {".csv", "csv"}}},
       {"esso-osaka",
        kRealEssoOsakaSuiteJson,
        {{"esso-osaka/zigzag", "zigzag"},
         {"esso-osaka/turning", "turning"},
         {"esso-osaka/random", ""}},
-       ".csv"}};
+       {{".csv", ""}}}};
   return tracks;
+}
+
+// The format `path` is read in, as `spec` maps its extension; nullptr for a file it does not
+// read.
+const char* FormatOf(const TrackSpec& spec, const fs::path& path) {
+  for (const RunFormat& f : spec.formats)
+    if (path.extension() == f.extension) return f.format;
+  return nullptr;
 }
 
 // The embedded vessel files a track may name as "@FILE".
@@ -98,7 +115,7 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
     std::error_code ec;
     const fs::path folder = spec.folders[i].path;
     for (const fs::directory_entry& e : fs::directory_iterator(data_dir / folder, ec)) {
-      if (!e.is_regular_file() || e.path().extension() != spec.extension) continue;
+      if (!e.is_regular_file() || FormatOf(spec, e.path()) == nullptr) continue;
       const std::string relative = (folder / e.path().filename()).string();
       if (!listed.contains(relative)) found.emplace_back(relative, i);
     }
@@ -107,11 +124,13 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
   std::vector<nlohmann::json> out;
   const nlohmann::json& like = suite["data"]["test"].at(0);
   for (const auto& [f, folder] : found) {
-    nlohmann::json entry = {{"name", "held-out " + fs::path(f).stem().string()},
-                            {"format", like.at("format")},
-                            {"file", (data_dir / f).lexically_normal().string()}};
-    for (const char* key : {"map", "end_at_stop"})
-      if (like.contains(key)) entry[key] = like[key];
+    const std::string format = FormatOf(spec, f);
+    nlohmann::json entry = {
+        {"name", "held-out " + fs::path(f).stem().string()},
+        {"format", format.empty() ? like.at("format").get<std::string>() : format},
+        {"file", (data_dir / f).lexically_normal().string()}};
+    if (like.contains("end_at_stop")) entry["end_at_stop"] = like["end_at_stop"];
+    if (like.contains("map") && format.empty()) entry["map"] = like["map"];
     if (const std::string maneuver = ManeuverOfFurtherRun(entry, spec.folders[folder]);
         !maneuver.empty())
       entry["maneuver"] = maneuver;

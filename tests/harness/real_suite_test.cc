@@ -1,7 +1,7 @@
 // The real suite's tracks (harness/real_suite.h) on a data folder: the shared runs, and every
 // further run of a track's folders added as a held-out test (the papers' test runs, where a
-// folder holds them; another tank's KVLCC2 tests), re-run closed-loop as its record says when
-// it is a zig-zag or a turn. Skips without ../shared/data.
+// folder holds them; another tank's KVLCC2 tests, as MARIN's .dat or usvid's own CSV), re-run
+// closed-loop as its record says when it is a zig-zag or a turn. Skips without ../shared/data.
 #include "harness/real_suite.h"
 
 #include <gmock/gmock.h>
@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <filesystem>
+
+#include "core/csv_dataset.h"
+#include "importers/marin_dat.h"
 
 namespace usvid {
 namespace {
@@ -46,6 +49,11 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
                      data / "kvlcc2-marin/other_tank_a.dat");
   fs::create_symlink(fs::absolute(kShared / "kvlcc2-marin/MARIN_FREE_KVLCC2_tc_35_m.dat"),
                      data / "kvlcc2-marin/other_tank_b.dat");
+  // And one in usvid's own data format, as usvid import writes another tank's log.
+  ImportReport report;
+  WriteDatasetCsv(
+      (data / "kvlcc2-marin/other_tank_c.csv").string(),
+      ImportMarinDat((kShared / "kvlcc2-marin/MARIN_FREE_KVLCC2_zz_-20_m.dat").string(), report));
   // A copy of the Esso folder with one run more: a zig-zag the shared folder does not have.
   for (const char* sub : {"zigzag", "turning", "random", "berthing"}) {
     fs::create_directories(data / "esso-osaka" / sub);
@@ -62,14 +70,18 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
   EXPECT_EQ(kvlcc2.name, "kvlcc2");
   EXPECT_THAT(TestNames(kvlcc2.suite),
               ::testing::ElementsAre("zigzag -20/20", "turning 35", "held-out other_tank_a",
-                                     "held-out other_tank_b"));
+                                     "held-out other_tank_b", "held-out other_tank_c"));
   // The folder holds both kinds of test: each further run's is read from its record, and is
   // the spec the track gives the same record by hand.
-  ASSERT_EQ(kvlcc2.suite.test_data.size(), 4u);
-  EXPECT_EQ(kvlcc2.suite.test_data[2].maneuver, kvlcc2.suite.test_data[0].maneuver);
-  EXPECT_EQ(kvlcc2.suite.test_data[3].maneuver, kvlcc2.suite.test_data[1].maneuver);
+  const std::vector<SuiteData>& tests = kvlcc2.suite.test_data;
+  ASSERT_EQ(tests.size(), 5u);
+  EXPECT_EQ(tests[2].maneuver, tests[0].maneuver);
+  EXPECT_EQ(tests[3].maneuver, tests[1].maneuver);
+  EXPECT_EQ(tests[4].maneuver, tests[0].maneuver);
+  EXPECT_EQ(tests[2].format, "marin-dat");
+  EXPECT_EQ(tests[4].format, "csv");
   ASSERT_EQ(kvlcc2.notes.size(), 1u);
-  EXPECT_THAT(kvlcc2.notes[0], HasSubstr("2 further runs of the data folder"));
+  EXPECT_THAT(kvlcc2.notes[0], HasSubstr("3 further runs of the data folder"));
 
   EXPECT_EQ(esso.name, "esso-osaka");
   const std::vector<std::string> names = TestNames(esso.suite);
