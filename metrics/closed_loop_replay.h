@@ -71,10 +71,9 @@ nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
 
 // A row's "closed_loop" object: {"maneuver", "status", "measured": {criteria}, "model":
 // {criteria}, and per criterion "<name>_error_<unit>" = model - measured (null when either is)}.
-// status "ok"; "diverged at
-// T s (channel)"; or "not replayable: why" (an open-loop maneuver, a record without a maneuver, a
-// model that cannot run one): never a missing field, never throws for the model's sake (a record
-// without the maneuver's channels still throws InputError).
+// status "ok"; "diverged at T s (channel)"; or "not replayable: why" (an open-loop maneuver, a
+// record without a maneuver, a model that cannot run one): never a missing field, never throws
+// for the model's sake (a record without the maneuver's channels still throws InputError).
 nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
                                const std::string& spec, const Dataset& recorded);
 

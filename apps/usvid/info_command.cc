@@ -60,9 +60,13 @@ void PrintHeldMemory(const Dataset& d) {
 // for good before the last row; nothing for one that runs to the end, never runs or has gaps.
 void PrintPropellerStop(const Dataset& d) {
   for (const char* channel : {"n", "rev", "rpm"}) {
-    const Channel* c = d.Find(channel);
-    if (c == nullptr || !c->FullySampled() || c->values().cwiseAbs().maxCoeff() == 0.0) continue;
-    const RecordEnd end = FindRecordEnd(d, channel);
+    if (!d.Has(channel)) continue;
+    RecordEnd end;
+    try {
+      end = FindRecordEnd(d, channel);
+    } catch (const InputError&) {  // empty cells, or a propeller that never runs
+      continue;
+    }
     if (end.dropped_rows == 0) continue;
     std::printf(
         "%s stops at %.1f s and the record goes on for %.1f s: a test's end, or the recovery "
