@@ -7,7 +7,8 @@
 // wind among their inputs than without it on the zig-zags and turns. Issue 39: the model built from
 // the vessel's main particulars alone (docs/vessels/files/esso-osaka.yaml) replays each shared
 // zig-zag closed-loop from its execute, after the operator's hand steering from rest, within
-// 5 deg of its first overshoot.
+// 5 deg of its first overshoot; the study's refit meets the issue's refit bars on the shared
+// runs it holds out.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -153,6 +154,59 @@ TEST(EssoOsakaTest, TheRecoveryAfterAZigzagIsDropped) {
   };
   const double in_test = largest_rate(test, 0.0), after = largest_rate(whole, 127.2);
   EXPECT_GT(after, in_test) << "the recovery's yaw rate against the zig-zag's";
+}
+
+// Issue 39's bars for the refit, on the shared runs the study holds out: the refit of the
+// study (docs/studies/esso-osaka-mmg.json: thirteen coefficients, each record weighed alike,
+// fitted jointly on its eight training runs) replays each held-out zig-zag closed-loop within
+// 2 deg of its first overshoot and each held-out turning circle within 10 % of its tactical
+// diameter, and free-runs each zig-zag with an r fit of at least 75 %. Measured when written
+// (docs/real-data.md#refit-n-vrr): 0.56, 0.31, 1.43, 0.99 deg; +9.0 and +5.4 %; 77.0, 77.5,
+// 86.6, 78.9 %. The papers' own test runs, which are not shared, are the issue's real test.
+TEST(EssoOsakaTest, TheStudysRefitReplaysTheHeldOutZigzagsAndCircles) {
+  if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
+  const fs::path dir = FreshTempDir();
+  const fs::path studies = fs::path(USVID_SOURCE_DIR) / "docs" / "studies";
+  nlohmann::json suite =
+      ReadJsonFile((studies / "esso-osaka-mmg.json").string(), JsonComments::kAllowed);
+  // The refit alone, and the study's files made absolute: the suite is written elsewhere.
+  nlohmann::json refit;
+  for (const auto& m : suite.at("methods"))
+    if (m.is_object() && m.at("method") == "refit") refit = m;
+  ASSERT_FALSE(refit.is_null()) << "the study has no refit";
+  suite["methods"] = nlohmann::json::array({refit});
+  const auto absolute = [&](nlohmann::json& file) {
+    file = fs::weakly_canonical(studies / file.get<std::string>()).string();
+  };
+  for (auto& v : suite.at("vessels")) absolute(v);
+  for (auto& f : suite.at("data").at("train").at(0).at("file")) absolute(f);
+  for (auto& t : suite.at("data").at("test")) absolute(t.at("file"));
+  const fs::path suite_file = dir / "refit.json";
+  std::ofstream(suite_file) << suite.dump(1);
+  const auto r =
+      RunUsvid("compare --suite " + suite_file.string() + " --out " + (dir / "study").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json results = ReadJsonFile((dir / "study" / "results.json").string());
+  int zigzags = 0, circles = 0;
+  for (const auto& row : results.at("rows")) {
+    ASSERT_EQ(row.at("status"), "ok") << row.dump();
+    const std::string test = row.at("test_maneuver").get<std::string>();
+    if (!test.starts_with("zigzag") && !test.starts_with("turning")) continue;
+    const nlohmann::json& loop = row.at("closed_loop");
+    ASSERT_EQ(loop.at("status"), "ok") << test;
+    if (test.starts_with("zigzag")) {
+      ++zigzags;
+      EXPECT_LT(std::abs(loop.at("first_overshoot_error_deg").get<double>()), 2.0) << test;
+      EXPECT_GE(row.at("channel_fit_percent").at("r").get<double>(), 75.0) << test;
+    } else {
+      ++circles;
+      const double measured = loop.at("measured").at("tactical_diameter_m").get<double>();
+      const double model = loop.at("model").at("tactical_diameter_m").get<double>();
+      EXPECT_LT(std::abs(model / measured - 1.0), 0.10) << test;
+    }
+  }
+  EXPECT_EQ(zigzags, 4);
+  EXPECT_EQ(circles, 2);
 }
 
 TEST(EssoOsakaTest, DiagnoseNamesTheLoggedWindThatAModelIgnores) {
