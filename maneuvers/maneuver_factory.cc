@@ -34,7 +34,7 @@ std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation&
   if (duration_s < 0) throw InputError("--duration: must not be negative");
   const ManeuverSpec args = ParseManeuverSpec(spec);
   const std::string& name = args.name;
-  const bool has_args = spec.find(':') != std::string::npos;
+  const bool has_args = !args.numbers.empty();  // "name:" with no number does not parse
   auto duration = [&](double fallback) { return duration_s > 0 ? duration_s : fallback; };
 
   if (name == "zigzag") {

@@ -11,7 +11,7 @@ namespace usvid {
 
 struct ManeuverSpec {
   std::string name;
-  std::vector<double> numbers;     // after ':', separated by '/'; empty without ':'
+  std::vector<double> numbers;     // after ':', separated by '/'; empty exactly without ':'
   std::vector<std::string> texts;  // the same numbers as written
 
   // The spec with its first number's sign turned: the same test to the other side
