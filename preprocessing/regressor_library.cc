@@ -4,6 +4,45 @@
 
 namespace usvid {
 
+namespace {
+
+const NamedSignal* FindSignal(const std::vector<NamedSignal>& signals,
+                              std::initializer_list<const char*> names) {
+  for (const char* name : names)
+    for (const NamedSignal& s : signals)
+      if (s.name == name) return &s;
+  return nullptr;
+}
+
+// The rudder-inflow columns of LibraryOptions::rudder_inflow, named and computed.
+std::vector<NamedSignal> RudderInflowColumns(const std::vector<NamedSignal>& states,
+                                             const std::vector<NamedSignal>& inputs,
+                                             const LibraryOptions& options) {
+  std::vector<NamedSignal> columns;
+  if (!options.rudder_inflow) return columns;
+  const NamedSignal* u = FindSignal(states, {"u"});
+  if (!u) u = FindSignal(inputs, {"u"});
+  const NamedSignal* n = FindSignal(inputs, {"n", "rev"});
+  for (const NamedSignal& rudder : inputs) {
+    if (rudder.name != "delta") continue;
+    if (u)
+      columns.push_back({"abs(" + u->name + ")*" + u->name + "*" + rudder.name,
+                         u->values.cwiseAbs().cwiseProduct(u->values).cwiseProduct(rudder.values)});
+    if (!n) continue;
+    // 2 n+, written without a max so that the equation syntax holds it.
+    const std::string ahead = "(" + n->name + "+abs(" + n->name + "))";
+    const Eigen::VectorXd twice_ahead = n->values + n->values.cwiseAbs();
+    if (u)
+      columns.push_back({u->name + "*" + ahead + "*" + rudder.name,
+                         u->values.cwiseProduct(twice_ahead).cwiseProduct(rudder.values)});
+    columns.push_back({ahead + "*" + ahead + "*" + rudder.name,
+                       twice_ahead.cwiseProduct(twice_ahead).cwiseProduct(rudder.values)});
+  }
+  return columns;
+}
+
+}  // namespace
+
 RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
                               const std::vector<NamedSignal>& inputs,
                               const LibraryOptions& options) {
@@ -31,6 +70,9 @@ RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
     for (const NamedSignal& u : inputs) names.push_back("abs(" + u.name + ")*" + u.name);
   }
 
+  const std::vector<NamedSignal> inflow = RudderInflowColumns(states, inputs, options);
+  for (const NamedSignal& col : inflow) names.push_back(col.name);
+
   RegressorLibrary lib{names, Eigen::MatrixXd(n, static_cast<Eigen::Index>(names.size()))};
   Eigen::Index c = 0;
   if (options.constant) lib.columns.col(c++).setOnes();
@@ -52,6 +94,7 @@ RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
     for (const NamedSignal& u : inputs)
       lib.columns.col(c++) = u.values.cwiseAbs().cwiseProduct(u.values);
   }
+  for (const NamedSignal& col : inflow) lib.columns.col(c++) = col.values;
   return lib;
 }
 

@@ -24,6 +24,14 @@ struct LibraryOptions {
   // x_i u_j, u_j u_m (j <= m), |u_j| u_j: after the inputs, so the other columns keep their
   // order.
   bool input_products = false;
+  // A rudder's force grows with the square of its inflow speed, and behind a propeller that
+  // inflow is a quadratic form in the surge speed and the revolutions ahead (MMG's u_R;
+  // docs/baselines.md#the-rudders-inflow): the rudder angle `delta` times |u| u, u n+ and n+ n+,
+  // n+ = max(n, 0) written (n + |n|) (a propeller turning astern throws its wash forward, off
+  // the rudder), of the channels there are (u among the states or inputs; n, else rev, among
+  // the inputs). After every other column. A waterjet's nozzle is not a rudder: its force is
+  // the jet's thrust, which the input products hold.
+  bool rudder_inflow = false;
 };
 
 struct RegressorLibrary {

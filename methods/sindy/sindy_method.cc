@@ -38,11 +38,14 @@ std::vector<OptionSpec> SindyOptionSpecs() {
                    "e.g. from GPS); 0: the derivatives; none: the derivatives, and where they "
                    "cut every term of an equation, the weak form over one hull length of travel "
                    "(a vessel with a length; shortened to leave 10 windows a fold)"),
-      ListOption("library", {"constant", "products", "abs"},
-                 {"constant", "products", "abs", "inputs"},
-                 "the candidate terms besides each variable and input: constant, products "
-                 "(x_i x_k of the variables), abs (|x_i| x_i), inputs (x_i u_j, u_j u_m and "
-                 "|u_j| u_j: a rudder's force with speed, a propeller's thrust)"),
+      ListOption(
+          "library", {"constant", "products", "abs", "rudder"},
+          {"constant", "products", "abs", "inputs", "rudder"},
+          "the candidate terms besides each variable and input: constant, products "
+          "(x_i x_k of the variables), abs (|x_i| x_i), inputs (x_i u_j, u_j u_m and "
+          "|u_j| u_j: a rudder's force with speed, a propeller's thrust), rudder (delta times "
+          "|u| u, u n+ and n+ n+: the force of a rudder behind a propeller, whose wash "
+          "reaches it when the propeller turns ahead, n+ = max(n, 0))"),
       RegimeFeaturesOption(kSindyFroudeHinges),
   };
 }
@@ -58,6 +61,7 @@ sindy::SindyOptions SindyOptionsFor(const MethodOptions& o) {
   s.library.products = has("products");
   s.library.abs_terms = has("abs");
   s.library.input_products = has("inputs");
+  s.library.rudder_inflow = has("rudder");
   return s;
 }
 

@@ -3,8 +3,8 @@
 // data-driven methods trained on eight runs at once and free-run on eight others
 // (docs/studies/esso-osaka.json). Issue 38: every equation of every method keeps terms (SINDy
 // through its weak form: from the derivatives it keeps none), every method's free runs hold on
-// every held-out run, and SINDy's, which do not depend on the seed, fit r better with the logged
-// wind among their inputs than without it on the zig-zags and turns. Issue 39: the model built from
+// every held-out run, and SINDy's, which do not depend on the seed, fit r to issue 38's bars: 70 %
+// on every held-out zig-zag and 50 % on a random run. Issue 39: the model built from
 // the vessel's main particulars alone (docs/vessels/files/esso-osaka.yaml) replays each shared
 // zig-zag closed-loop from its execute, after the operator's hand steering from rest, within
 // 5 deg of its first overshoot; the study's refit meets the issue's refit bars on the shared
@@ -40,7 +40,7 @@ TEST(EssoOsakaTest, EveryMethodKeepsTermsAndHoldsOnTheHeldOutRuns) {
                           "/docs/studies/esso-osaka.json --out " + (dir / "study").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json results = ReadJsonFile((dir / "study" / "results.json").string());
-  std::vector<double> sindy_zigzag_r, sindy_turning_r;
+  std::vector<double> sindy_zigzag_r, sindy_turning_r, sindy_random_r;
   int sindy_rows = 0;
   for (const auto& row : results.at("rows")) {
     // A method whose equation kept no term fails its cell (methods/sindy/sindy_method.cc).
@@ -56,18 +56,21 @@ TEST(EssoOsakaTest, EveryMethodKeepsTermsAndHoldsOnTheHeldOutRuns) {
     const double r_fit = row.at("channel_fit_percent").at("r").get<double>();
     if (test.starts_with("zigzag")) sindy_zigzag_r.push_back(r_fit);
     if (test.starts_with("turning")) sindy_turning_r.push_back(r_fit);
+    if (test.starts_with("random")) sindy_random_r.push_back(r_fit);
   }
   EXPECT_EQ(sindy_rows, 8);
   ASSERT_EQ(sindy_zigzag_r.size(), 4u);
   ASSERT_EQ(sindy_turning_r.size(), 2u);
-  // With the logged wind among its inputs (wind_speed, wind_u, wind_v): 60.0, 44.6, 71.7 and
-  // 81.4 % on the zig-zags when docs/real-data.md was written, against 55.0, 35.8, 52.3 and
-  // 76.6 % without it.
-  std::sort(sindy_zigzag_r.begin(), sindy_zigzag_r.end());
-  EXPECT_GT(sindy_zigzag_r.front(), 40.0);
-  EXPECT_GT(0.5 * (sindy_zigzag_r[1] + sindy_zigzag_r[2]), 60.0);
-  // The turning circles, where the wind turns the model most: 87.1 and 65.5 %, against 47.3 %
-  // on both without it.
+  ASSERT_EQ(sindy_random_r.size(), 2u);
+  // With the rudder's inflow in its library (the rudder's force growing with |u| u, u n+ and
+  // n+ n+; docs/baselines.md#the-rudders-inflow) SINDy fits r on every held-out zig-zag to
+  // issue 38's 70 %: 84.2, 80.0, 85.8 and 84.4 % when docs/real-data.md was written, against
+  // 74.1, 54.4, 73.3 and 80.6 % with u delta alone. The 15/15 zig-zag of 13:22, at the lowest
+  // propeller speed (10 1/s against 12-17), is the one a rudder force in u delta overturned.
+  EXPECT_GT(*std::ranges::min_element(sindy_zigzag_r), 70.0);
+  // And one of the two random runs (6 Aug) to issue 38's 50 %: 61.6 %, against 49.2 %.
+  EXPECT_GT(*std::ranges::max_element(sindy_random_r), 50.0);
+  // The turning circles: 84.3 and 73.3 %, against 47.3 % on both without the wind.
   for (const double r_fit : sindy_turning_r) EXPECT_GT(r_fit, 60.0);
 }
 
