@@ -1,42 +1,36 @@
 #include "preprocessing/regressor_library.h"
 
 #include <Eigen/QR>
+#include <algorithm>
+
+#include "core/expression.h"
+#include "preprocessing/rudder_inflow.h"
 
 namespace usvid {
 
 namespace {
 
-const NamedSignal* FindSignal(const std::vector<NamedSignal>& signals,
-                              std::initializer_list<const char*> names) {
-  for (const char* name : names)
-    for (const NamedSignal& s : signals)
-      if (s.name == name) return &s;
-  return nullptr;
-}
-
-// The rudder-inflow columns of LibraryOptions::rudder_inflow, named and computed.
+// The rudder-inflow columns of LibraryOptions::rudder_inflow, named by their expressions.
 std::vector<NamedSignal> RudderInflowColumns(const std::vector<NamedSignal>& states,
                                              const std::vector<NamedSignal>& inputs,
                                              const LibraryOptions& options) {
   std::vector<NamedSignal> columns;
   if (!options.rudder_inflow) return columns;
-  const NamedSignal* u = FindSignal(states, {"u"});
-  if (!u) u = FindSignal(inputs, {"u"});
-  const NamedSignal* n = FindSignal(inputs, {"n", "rev"});
-  for (const NamedSignal& rudder : inputs) {
-    if (rudder.name != "delta") continue;
-    if (u)
-      columns.push_back({"abs(" + u->name + ")*" + u->name + "*" + rudder.name,
-                         u->values.cwiseAbs().cwiseProduct(u->values).cwiseProduct(rudder.values)});
-    if (!n) continue;
-    // 2 n+, written without a max so that the equation syntax holds it.
-    const std::string ahead = "(" + n->name + "+abs(" + n->name + "))";
-    const Eigen::VectorXd twice_ahead = n->values + n->values.cwiseAbs();
-    if (u)
-      columns.push_back({u->name + "*" + ahead + "*" + rudder.name,
-                         u->values.cwiseProduct(twice_ahead).cwiseProduct(rudder.values)});
-    columns.push_back({ahead + "*" + ahead + "*" + rudder.name,
-                       twice_ahead.cwiseProduct(twice_ahead).cwiseProduct(rudder.values)});
+  std::vector<const NamedSignal*> signals;
+  std::vector<std::string> names;
+  for (const auto* list : {&states, &inputs})
+    for (const NamedSignal& s : *list) {
+      signals.push_back(&s);
+      names.push_back(s.name);
+    }
+  for (const RudderInflowTerm& term : RudderInflowTerms(names)) {
+    const Expression e = Expression::Parse(term.expression, "rudder inflow");
+    std::vector<const double*> columns_of;
+    for (const std::string& v : e.Variables())
+      columns_of.push_back(signals[std::ranges::find(names, v) - names.begin()]->values.data());
+    NamedSignal column{term.expression, Eigen::VectorXd(signals.front()->values.size())};
+    e.EvaluateColumns(columns_of, column.values.size(), column.values.data());
+    columns.push_back(std::move(column));
   }
   return columns;
 }

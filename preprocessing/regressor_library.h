@@ -1,7 +1,8 @@
 // Candidate regressors for equation-error fits (delay scans, SINDy): from state channels x and
 // input channels u, the columns 1, x_i, x_i x_k (i <= k), |x_i| x_i, u_j and, when asked, the
 // input products x_i u_j, u_j u_m (j <= m) and |u_j| u_j (a ship's rudder force grows with
-// u delta at a given speed, its thrust with |n| n), each named in the
+// u delta at a given speed, its thrust with |n| n) and a rudder's force at its inflow speed
+// (preprocessing/rudder_inflow.h), each named in the
 // equation syntax (docs/data.md#equation-syntax: "u", "v*r", "abs(u)*u", "tau_x") so a fitted
 // row of weights is an equation that can be written out.
 #pragma once
@@ -24,13 +25,8 @@ struct LibraryOptions {
   // x_i u_j, u_j u_m (j <= m), |u_j| u_j: after the inputs, so the other columns keep their
   // order.
   bool input_products = false;
-  // A rudder's force grows with the square of its inflow speed, and behind a propeller that
-  // inflow is a quadratic form in the surge speed and the revolutions ahead (MMG's u_R;
-  // docs/baselines.md#the-rudders-inflow): the rudder angle `delta` times |u| u, u n+ and n+ n+,
-  // n+ = max(n, 0) written (n + |n|) (a propeller turning astern throws its wash forward, off
-  // the rudder), of the channels there are (u among the states or inputs; n, else rev, among
-  // the inputs). After every other column. A waterjet's nozzle is not a rudder: its force is
-  // the jet's thrust, which the input products hold.
+  // A rudder's force at its inflow speed: the rudder angle `delta` times |u| u, u n+ and n+ n+
+  // (preprocessing/rudder_inflow.h), of the channels there are. After every other column.
   bool rudder_inflow = false;
 };
 

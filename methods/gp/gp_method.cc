@@ -10,6 +10,7 @@
 #include "methods/gp/term_selection.h"
 #include "methods/method.h"
 #include "methods/regime_features.h"
+#include "preprocessing/rudder_inflow.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -60,6 +61,10 @@ std::vector<OptionSpec> GpOptionSpecs() {
       IntegerOption("fit_rows", d.fit_rows, 0, kUnbounded,
                     "rows the search scores on, spread over the record (0: all)"),
       RegimeFeaturesOption(kGpFroudeHinges),
+      FlagOption("rudder_inflow",
+                 "a rudder's force at its inflow speed among the variables: delta times |u| u, "
+                 "u n+ and n+ n+ (docs/baselines.md#the-rudders-inflow), for records that span "
+                 "propeller speeds (on one zig-zag at one speed it cost a seed its free run)"),
   };
 }
 
@@ -171,6 +176,14 @@ nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& reque
   if (gpo.complete_terms && features_choice != "froude")
     gpo.completion_features =
         RegimeFeatures(features_choice, froude_per_speed, fit.prepared.data, kSindyFroudeHinges);
+  // The rudder's force at its inflow speed among the variables, after the rules above, which are
+  // the regime features' alone.
+  if (o.Flag("rudder_inflow")) {
+    std::vector<std::string> channels = fit.channels.variables;
+    channels.insert(channels.end(), fit.channels.inputs.begin(), fit.channels.inputs.end());
+    for (const RudderInflowTerm& term : RudderInflowTerms(channels))
+      gpo.features.push_back({term.name, term.expression});
+  }
   nlohmann::json features = nlohmann::json::object();  // name -> expression
   for (const DerivedVariable& f : gpo.features) features[f.name] = f.expression;
   const gp::GpIdentification gp = gp::IdentifyWithGp(

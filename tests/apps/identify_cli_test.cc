@@ -204,6 +204,47 @@ TEST_F(IdentifyCliTest, SindyTakesTheRegimeFeaturesAndAFreeRunRecomputesThem) {
   EXPECT_GT(with, without + 5.0) << without;
 }
 
+// GP with the rudder's inflow (docs/baselines.md#the-rudders-inflow): on a KVLCC2 zig-zag, whose
+// propeller channel is rev, --rudder-inflow adds delta times |u| u, u rev+ and rev+ rev+ to the
+// variables its trees are built of, and model.json lists each with its expression, so that a
+// free run on another record recomputes them from the simulated u. Without the flag it adds
+// none, and on a waterjet (a nozzle, not a rudder) none either.
+TEST_F(IdentifyCliTest, GpTakesTheRudderInflowAndAFreeRunRecomputesIt) {
+  const auto train = (dir_ / "kv_g.csv").string(), test = (dir_ / "kv_g_test.csv").string();
+  ASSERT_EQ(
+      RunUsvid("simulate --vessel kvlcc2 --maneuver zigzag:20/20 --duration 300 --out " + train)
+          .exit_code,
+      0);
+  ASSERT_EQ(
+      RunUsvid("simulate --vessel kvlcc2 --maneuver zigzag:10/10 --duration 300 --out " + test)
+          .exit_code,
+      0);
+  int fits = 0;
+  auto features = [&](const std::string& vessel, const std::string& data, const std::string& flag) {
+    const auto model = (dir_ / ("g_" + std::to_string(++fits) + ".json")).string();
+    const auto r =
+        RunUsvid("identify --method gp --vessel " + vessel + " --data " + data +
+                 " --population 100 --generations 3 --seed 1 " + flag + " --out " + model);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return std::pair{model, ReadJsonFile(model).at("gp").at("features")};
+  };
+  const auto [model, with] = features("kvlcc2", train, "--rudder-inflow");
+  EXPECT_EQ(with, nlohmann::json({{"delta_uu", "abs(u)*u*delta"},
+                                  {"delta_un", "u*(rev+abs(rev))*delta"},
+                                  {"delta_nn", "(rev+abs(rev))*(rev+abs(rev))*delta"}}));
+  const auto e = RunUsvid("evaluate --model " + model + " --data " + test + " --out " +
+                          (dir_ / "ev_g").string());
+  EXPECT_EQ(e.exit_code, 0) << e.err;
+  EXPECT_TRUE(features("kvlcc2", train, "").second.empty());
+  const auto jet = (dir_ / "hs_g.csv").string();
+  ASSERT_EQ(
+      RunUsvid("simulate --vessel odin-hs --maneuver zigzag --duration 60 --out " + jet).exit_code,
+      0);
+  for (const auto& [name, expression] :
+       features("odin-hs", jet, "--rudder-inflow --features none").second.items())
+    ADD_FAILURE() << "a waterjet took " << name << " = " << expression;
+}
+
 // A log of the commands alone (issue 19): `usvid actuators` identifies throttle -> rpm and
 // nozzle -> nozzle_angle (delay 0.2 s, time constants 0.6 and 0.1 s) on a log that records
 // both, leaves the held bucket out, and `--actuators` then rebuilds the jets' forces of a log
