@@ -240,9 +240,9 @@ TEST_F(IdentifyCliTest, GpTakesTheRudderInflowAndAFreeRunRecomputesIt) {
   ASSERT_EQ(
       RunUsvid("simulate --vessel odin-hs --maneuver zigzag --duration 60 --out " + jet).exit_code,
       0);
-  for (const auto& [name, expression] :
-       features("odin-hs", jet, "--rudder-inflow --features none").second.items())
-    ADD_FAILURE() << "a waterjet took " << name << " = " << expression;
+  const nlohmann::json on_a_jet =
+      features("odin-hs", jet, "--rudder-inflow --features none").second;
+  EXPECT_TRUE(on_a_jet.empty()) << "a waterjet took " << on_a_jet.dump();
 }
 
 // A log of the commands alone (issue 19): `usvid actuators` identifies throttle -> rpm and

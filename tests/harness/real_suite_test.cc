@@ -103,9 +103,12 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
   EXPECT_EQ(run.maneuver, "zigzag:20/20");
   for (const SuiteData& d : esso.suite.test_data) {
     if (!d.name.starts_with("held-out ")) continue;
-    if (d.name.starts_with("held-out turn_"))
+    if (d.name.starts_with("held-out turn_")) {
       EXPECT_THAT(d.maneuver, ::testing::MatchesRegex("turning:-?(20|35)")) << d.name;
-    if (d.name.starts_with("held-out random_")) EXPECT_EQ(d.maneuver, "") << d.name;
+    }
+    if (d.name.starts_with("held-out random_")) {
+      EXPECT_EQ(d.maneuver, "") << d.name;
+    }
   }
   EXPECT_THAT(esso.notes[0],
               HasSubstr(std::to_string(runs - 16) + " further runs of the data folder"));
