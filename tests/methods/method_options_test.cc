@@ -125,9 +125,12 @@ TEST(MethodOptionsTest, EveryMethodsDeclarationIsWellFormed) {
       EXPECT_TRUE(keys.insert(s.key).second) << "declared twice";
       EXPECT_FALSE(s.help.empty());
       EXPECT_EQ(s.help.find('\n'), std::string::npos);
-      if (!s.default_value.is_null())
+      if (!s.default_value.is_null()) {
         EXPECT_NO_THROW(ValidateOptions(m.name, m.options, {{s.key, s.default_value}}, ""));
-      if (s.type == OptionType::kChoice) EXPECT_FALSE(s.choices.empty());
+      }
+      if (s.type == OptionType::kChoice) {
+        EXPECT_FALSE(s.choices.empty());
+      }
     }
   }
 }
