@@ -177,7 +177,7 @@ TEST_F(UsvidCliTest, ImportFroudeScales) {
   EXPECT_NEAR(d["delta"](0), 0.2, 1e-12);
   EXPECT_NEAR(d["wind"](1), 20.0, 1e-12);
   fs::remove(out);
-  for (const std::string& bad : {" --scale 0", " --scale -4", " --scale 100"}) {
+  for (const char* bad : {" --scale 0", " --scale -4", " --scale 100"}) {
     const auto e = RunUsvid(args + bad);
     EXPECT_EQ(e.exit_code, 2) << bad;
     EXPECT_THAT(e.err, HasSubstr("--scale")) << bad;

@@ -85,7 +85,9 @@ void ExpectSameAsAutoDiff(const Case& c, bool hold_states, int windows) {
   ASSERT_TRUE(windowed.Evaluate(parameters, res_win.data(), jac_win));
   EXPECT_EQ(res_win, res_full);
   EXPECT_EQ(j0_win, j0_full);
-  if (!hold_states) EXPECT_EQ(j1_win, j1_full);
+  if (!hold_states) {
+    EXPECT_EQ(j1_win, j1_full);
+  }
   EXPECT_EQ(j2_win, j2_full);
 
   // Residuals alone: both evaluate the functor in doubles.

@@ -59,8 +59,8 @@ TEST_F(ResampleTest, LongGapsAreNotBridged) {
   s.segment(400, 100) = false;  // 40 s to 50 s missing
   d.Set("x", d.t(), s);
   ResampleReport report;
-  const Dataset out =
-      Resample(d, {.rate_hz = 2.0, .interpolation = Interpolation::kLinear}, &report);
+  const Dataset out = Resample(
+      d, {.rate_hz = 2.0, .interpolation = Interpolation::kLinear, .channels = {}}, &report);
   EXPECT_EQ(report.channels.at(0).gaps, 1);
   for (Eigen::Index k = 0; k < out.rows(); ++k) {
     const double t = out.t()(k);

@@ -44,7 +44,9 @@ class VesselConformanceTest : public ::testing::Test {
              0.3 * d(rng) * (V::kInputMax[i] - V::kInputMin[i]);
     if (V::kName != std::string_view("msd")) x[3] += 5.0;  // a forward speed
     // A rate of turn the hull can have: r L / U of order one (a 320 m tanker turns slowly).
-    if constexpr (requires { V::kLength; }) x[V::kRateState] *= std::min(1.0, 20.0 / V::kLength);
+    // (A vessel file's kLength names its length parameter, not the length: below.)
+    if constexpr (requires { V::kLength; } && !std::is_same_v<V, Mmg>)
+      x[V::kRateState] *= std::min(1.0, 20.0 / V::kLength);
     // A vessel file's length is a parameter (its defaults are kvlcc2's).
     if constexpr (std::is_same_v<V, Mmg>)
       x[V::kRateState] *= 20.0 / V::kDefaultParams[Mmg::kLength];
