@@ -10,29 +10,25 @@ namespace usvid {
 
 namespace {
 
-// The rudder-inflow columns of LibraryOptions::rudder_inflow, named by their expressions.
-std::vector<NamedSignal> RudderInflowColumns(const std::vector<NamedSignal>& states,
-                                             const std::vector<NamedSignal>& inputs,
-                                             const LibraryOptions& options) {
-  std::vector<NamedSignal> columns;
-  if (!options.rudder_inflow) return columns;
-  std::vector<const NamedSignal*> signals;
-  std::vector<std::string> names;
+// The states and inputs, in that order.
+std::vector<const NamedSignal*> AllSignals(const std::vector<NamedSignal>& states,
+                                           const std::vector<NamedSignal>& inputs) {
+  std::vector<const NamedSignal*> all;
   for (const auto* list : {&states, &inputs})
-    for (const NamedSignal& s : *list) {
-      signals.push_back(&s);
-      names.push_back(s.name);
-    }
-  for (const RudderInflowTerm& term : RudderInflowTerms(names)) {
-    const Expression e = Expression::Parse(term.expression, "rudder inflow");
-    std::vector<const double*> columns_of;
-    for (const std::string& v : e.Variables())
-      columns_of.push_back(signals[std::ranges::find(names, v) - names.begin()]->values.data());
-    NamedSignal column{term.expression, Eigen::VectorXd(signals.front()->values.size())};
-    e.EvaluateColumns(columns_of, column.values.size(), column.values.data());
-    columns.push_back(std::move(column));
-  }
-  return columns;
+    for (const NamedSignal& s : *list) all.push_back(&s);
+  return all;
+}
+
+// `expression`, in the signals' names, evaluated at every row into `out`.
+void EvaluateInto(const std::string& expression, const std::vector<const NamedSignal*>& signals,
+                  double* out) {
+  const Expression e = Expression::Parse(expression, "rudder inflow");
+  std::vector<const double*> columns;
+  for (const std::string& v : e.Variables())
+    columns.push_back((*std::ranges::find(signals, v, [](const NamedSignal* s) {
+                        return s->name;
+                      }))->values.data());
+  e.EvaluateColumns(columns, signals.front()->values.size(), out);
 }
 
 }  // namespace
@@ -64,8 +60,14 @@ RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
     for (const NamedSignal& u : inputs) names.push_back("abs(" + u.name + ")*" + u.name);
   }
 
-  const std::vector<NamedSignal> inflow = RudderInflowColumns(states, inputs, options);
-  for (const NamedSignal& col : inflow) names.push_back(col.name);
+  const std::vector<const NamedSignal*> signals = AllSignals(states, inputs);
+  std::vector<RudderInflowTerm> inflow;
+  if (options.rudder_inflow) {
+    std::vector<std::string> channels;
+    for (const NamedSignal* s : signals) channels.push_back(s->name);
+    inflow = RudderInflowTerms(channels);
+  }
+  for (const RudderInflowTerm& term : inflow) names.push_back(term.expression);
 
   RegressorLibrary lib{names, Eigen::MatrixXd(n, static_cast<Eigen::Index>(names.size()))};
   Eigen::Index c = 0;
@@ -88,7 +90,8 @@ RegressorLibrary BuildLibrary(const std::vector<NamedSignal>& states,
     for (const NamedSignal& u : inputs)
       lib.columns.col(c++) = u.values.cwiseAbs().cwiseProduct(u.values);
   }
-  for (const NamedSignal& col : inflow) lib.columns.col(c++) = col.values;
+  for (const RudderInflowTerm& term : inflow)
+    EvaluateInto(term.expression, signals, lib.columns.col(c++).data());
   return lib;
 }
 
