@@ -10,6 +10,7 @@
 #include "core/angles.h"
 #include "core/error.h"
 #include "core/nan.h"
+#include "metrics/criteria_smoothing.h"
 #include "metrics/maneuver_execute.h"
 
 namespace usvid {
@@ -29,6 +30,17 @@ Samples Sampled(const Eigen::VectorXd& t, const Eigen::VectorXd& x) {
     s.t.push_back(t(k));
     s.x.push_back(x(k));
   }
+  return s;
+}
+
+// A channel's samples, smoothed when they lie on a uniform grid (criteria_smoothing.h).
+Samples SmoothedSamples(const Eigen::VectorXd& t, const Eigen::VectorXd& x) {
+  Samples s = Sampled(t, x);
+  const Eigen::Index n = static_cast<Eigen::Index>(s.x.size());
+  const Eigen::VectorXd smoothed =
+      SmoothedForCriteria(Eigen::Map<const Eigen::VectorXd>(s.t.data(), n),
+                          Eigen::Map<const Eigen::VectorXd>(s.x.data(), n));
+  Eigen::Map<Eigen::VectorXd>(s.x.data(), n) = smoothed;
   return s;
 }
 
@@ -103,7 +115,8 @@ TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
   double largest = 0.0;
   for (double d : delta.x) largest = std::max(largest, std::abs(d));
   const double moved = largest <= std::numbers::pi / 2 ? kDeg : 0.01 * largest;
-  const Samples psi = Sampled(t, UnwrappedAngle(data[heading]));  // a log's heading may wrap
+  // a log's heading may wrap; a noisy one is smoothed, as are the positions
+  const Samples psi = SmoothedSamples(t, UnwrappedAngle(data[heading]));
   std::vector<double> heading_at(delta.t.size());
   for (size_t k = 0; k < delta.t.size(); ++k) heading_at[k] = At(psi, delta.t[k]);
   const long first = find_execute ? FindExecute(delta.x, heading_at, moved, 90.0 * kDeg,
@@ -120,7 +133,7 @@ TurningResponse AnalyseTurning(const Dataset& data, const std::string& heading,
   z.execute_s = execute;
   z.advance_m = z.transfer_m = z.tactical_diameter_m = kNaN;
   z.steady_rate_deg_s = z.steady_radius_m = kNaN;
-  const Samples n = Sampled(t, data[north]), e = Sampled(t, data[east]);
+  const Samples n = SmoothedSamples(t, data[north]), e = SmoothedSamples(t, data[east]);
   const double psi0 = At(psi, execute), n0 = At(n, execute), e0 = At(e, execute);
   if (std::isnan(psi0)) return z;
 

@@ -20,8 +20,8 @@
 // (U / r on a steady turn in calm water).
 //
 // The heading is in radians; one that wraps at +-pi, as logs write it, is unwrapped first
-// (core/angles.h). Unsampled values (NaN) are skipped: each channel is interpolated over its own
-// samples.
+// (core/angles.h). Noisy heading and positions are smoothed (metrics/criteria_smoothing.h).
+// Unsampled values (NaN) are skipped: each channel is interpolated over its own samples.
 #pragma once
 
 #include <string>

@@ -5,6 +5,7 @@
 
 #include "core/angles.h"
 #include "core/error.h"
+#include "metrics/criteria_smoothing.h"
 #include "metrics/maneuver_execute.h"
 
 namespace usvid {
@@ -17,9 +18,10 @@ ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const st
       data.CheckNotText(c);
       throw InputError(data.SourcePrefix() + "zig-zag: no channel '" + c + "'");
     }
-  const Eigen::VectorXd psi = UnwrappedAngle(data[heading]);  // a log's heading may wrap
-  const Eigen::VectorXd& delta = data[rudder];
   const Eigen::VectorXd& t = data.t();
+  // a log's heading may wrap; a noisy one is smoothed (criteria_smoothing.h)
+  const Eigen::VectorXd psi = SmoothedForCriteria(t, UnwrappedAngle(data[heading]));
+  const Eigen::VectorXd& delta = data[rudder];
   const Eigen::Index n = data.rows();
   Eigen::Index execute =
       rudder_deg < 0

@@ -6,7 +6,8 @@
 // after each reversal is how far the heading goes beyond the threshold B (from psi0) in the
 // direction it was turning at the reversal, before the next one. Works with either rudder sign
 // convention (the turning direction is read from the heading). A heading that wraps at +-pi, as
-// logs write it, is unwrapped first (core/angles.h).
+// logs write it, is unwrapped first (core/angles.h), and a noisy one smoothed
+// (metrics/criteria_smoothing.h): the furthest raw sample would be a noise peak.
 #pragma once
 
 #include <string>

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,39 @@ TEST(ZigzagResponseTest, NomotoZigzagOvershootsAndReversals) {
     ASSERT_GT(k, 0);
     EXPECT_LT(delta(k) * delta(k - 1), 0.0) << "t=" << ts;
   }
+}
+
+// Noise on the heading, 2 % of its standard deviation (as `usvid simulate --noise 0.02` adds it,
+// 0.3 deg here). The furthest noisy sample lies beyond the true peak by about twice the noise, so
+// an overshoot read from the raw heading grows with the noise, and the heading at the execute,
+// every overshoot's origin, is one noisy sample. Read from the smoothed heading
+// (metrics/criteria_smoothing.h), no overshoot moves by more than 0.1 deg (the last, which the
+// record's end cuts short, aside); read from the raw heading, they were up to 0.9 deg high.
+TEST(ZigzagResponseTest, NoiseOnTheHeadingDoesNotRaiseTheOvershoots) {
+  const ZigzagRecord rec = SimulateNomotoZigzag(+1);
+  Eigen::VectorXd psi = rec.data["psi"];
+  const double sd = 0.02 * std::sqrt((psi.array() - psi.mean()).square().mean());
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, sd);
+  for (double& p : psi) p += noise(rng);
+  Dataset noisy = rec.data;
+  noisy.Set("psi", psi);
+
+  // The premise: read from the raw samples, the first overshoot would be 0.25 deg high or more.
+  const ZigzagResponse clean = AnalyseZigzag(rec.data, 20.0);
+  const Eigen::VectorXd& t = rec.data.t();
+  const double psi0 = rec.data["psi"](std::lround(clean.execute_s / 0.1));
+  double furthest = -INFINITY;
+  for (Eigen::Index k = 0; k < t.size(); ++k)
+    if (t(k) >= clean.reversal_s[0] && t(k) < clean.reversal_s[1])
+      furthest = std::max(furthest, psi(k) - psi0);
+  EXPECT_GT(furthest / kDeg - 20.0, rec.overshoot_deg[0] + 0.25);
+
+  const ZigzagResponse z = AnalyseZigzag(noisy, 20.0);
+  EXPECT_NEAR(z.execute_s, rec.execute_s, 1e-9);
+  ASSERT_EQ(z.overshoot_deg.size(), rec.overshoot_deg.size());
+  for (size_t i = 0; i + 1 < rec.overshoot_deg.size(); ++i)
+    EXPECT_NEAR(z.overshoot_deg[i], rec.overshoot_deg[i], 0.1) << "overshoot " << i;
 }
 
 TEST(ZigzagResponseTest, PortFirstTurnIsReadFromHeading) {
