@@ -29,15 +29,25 @@ nlohmann::json Identify(const Method& method, Dataset data, const IdentifyReques
   if (!model.contains("options")) model["options"] = options.Json();  // a preset may say more
   if (model.contains("equations") && model["equations"].is_object()) {
     const std::map<std::string, double> damping = SelfDamping(model["equations"], data);
+    const std::map<std::string, double> straight = StraightRunningDamping(model["equations"], data);
     nlohmann::json undamped = nlohmann::json::array();
-    for (const auto& [state, d] : damping)
-      if (!(d < 0)) {
-        undamped.push_back(state);
-        if (log)
-          log("warning: " + state + "' has no damping: d(" + state + "')/d" + state + " averages " +
-              FormatNumber(d) + " 1/s on the training data, so a free run can drift or diverge");
-      }
+    for (const auto& [state, d] : damping) {
+      const auto at = straight.find(state);
+      const bool straight_damped = at == straight.end() || at->second < 0;
+      if (d < 0 && straight_damped) continue;
+      undamped.push_back(state);
+      if (!log) continue;
+      if (!(d < 0))
+        log("warning: " + state + "' has no damping: d(" + state + "')/d" + state + " averages " +
+            FormatNumber(d) + " 1/s on the training data, so a free run can drift or diverge");
+      else
+        log("warning: " + state + "' has no damping running straight: d(" + state + "')/d" + state +
+            " is " + FormatNumber(at->second) +
+            " 1/s with the lateral motions and the rudder at zero, so a free run can drift or "
+            "diverge there");
+    }
     model["self_damping"] = damping;
+    model["self_damping_straight_running"] = straight;
     model["undamped"] = undamped;
   }
   return model;

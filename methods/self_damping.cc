@@ -2,62 +2,110 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/expression.h"
+#include "methods/straight_running.h"
 
 namespace usvid {
 namespace {
 
 constexpr Eigen::Index kMaxRows = 20000;  // a long log's mean from evenly strided rows
 
+// A state's equation and the data's channels of its variables, in the expression's order.
+struct Equation {
+  Expression f;
+  std::vector<const Channel*> channels;
+  int self = -1;  // the state among them; -1: the equation does not read it
+};
+
+// The state's equation when the data hold its state and every variable it reads.
+std::optional<Equation> Resolve(const std::string& state, const nlohmann::json& text,
+                                const Dataset& data) {
+  if (!text.is_string() || !data.Has(state)) return std::nullopt;
+  Equation e{Expression::Parse(text.get<std::string>(), "equations." + state), {}, -1};
+  for (const std::string& name : e.f.Variables()) {
+    const Channel* c = data.Find(name);
+    if (c == nullptr) return std::nullopt;
+    if (name == state) e.self = static_cast<int>(e.channels.size());
+    e.channels.push_back(c);
+  }
+  return e;
+}
+
+double Rms(const Channel& x) {
+  return std::sqrt(x.values().array().isNaN().select(0.0, x.values().array()).square().mean());
+}
+
+// d f / d vars[self] at `vars`, by central differences of step 1e-6 (|x| + rms).
+double Slope(const Expression& f, std::vector<double> vars, size_t self, double rms) {
+  const double x0 = vars[self];
+  const double h = 1e-6 * (std::abs(x0) + rms + 1e-12);
+  vars[self] = x0 + h;
+  const double up = f.Evaluate(vars);
+  vars[self] = x0 - h;
+  return (up - f.Evaluate(vars)) / (2.0 * h);
+}
+
 }  // namespace
 
 std::map<std::string, double> SelfDamping(const nlohmann::json& equations, const Dataset& data) {
   std::map<std::string, double> out;
   for (const auto& [state, text] : equations.items()) {
-    if (!text.is_string() || !data.Has(state)) continue;
-    const Expression f = Expression::Parse(text.get<std::string>(), "equations." + state);
-    const std::vector<std::string>& names = f.Variables();
-    std::vector<const Channel*> channels;
-    int self = -1;
-    for (const std::string& name : names) {
-      const Channel* c = data.Find(name);
-      if (c == nullptr) break;
-      if (name == state) self = static_cast<int>(channels.size());
-      channels.push_back(c);
-    }
-    if (channels.size() != names.size()) continue;
-    if (self < 0) {  // the equation does not read its state: no damping at all
+    const std::optional<Equation> e = Resolve(state, text, data);
+    if (!e) continue;
+    if (e->self < 0) {  // the equation does not read its state: no damping at all
       out[state] = 0.0;
       continue;
     }
-    const Channel& x = *channels[static_cast<size_t>(self)];
-    const double rms =
-        std::sqrt(x.values().array().isNaN().select(0.0, x.values().array()).square().mean());
-    std::vector<double> vars(names.size());
+    const size_t self = static_cast<size_t>(e->self);
+    const double rms = Rms(*e->channels[self]);
+    std::vector<double> vars(e->channels.size());
     double sum = 0.0;
     long rows = 0;
     const Eigen::Index stride = std::max<Eigen::Index>(1, data.rows() / kMaxRows);
     for (Eigen::Index i = 0; i < data.rows(); i += stride) {
       bool sampled = true;
-      for (size_t k = 0; k < channels.size() && sampled; ++k) {
-        sampled = channels[k]->IsSampled(i);
-        vars[k] = channels[k]->Value(i);
+      for (size_t k = 0; k < e->channels.size() && sampled; ++k) {
+        sampled = e->channels[k]->IsSampled(i);
+        vars[k] = e->channels[k]->Value(i);
       }
       if (!sampled) continue;
-      const double x0 = vars[static_cast<size_t>(self)];
-      const double h = 1e-6 * (std::abs(x0) + rms + 1e-12);
-      vars[static_cast<size_t>(self)] = x0 + h;
-      const double up = f.Evaluate(vars);
-      vars[static_cast<size_t>(self)] = x0 - h;
-      const double down = f.Evaluate(vars);
-      const double d = (up - down) / (2.0 * h);
+      const double d = Slope(e->f, vars, self, rms);
       if (!std::isfinite(d)) continue;
       sum += d;
       ++rows;
     }
     if (rows > 0) out[state] = sum / static_cast<double>(rows);
+  }
+  return out;
+}
+
+std::map<std::string, double> StraightRunningDamping(const nlohmann::json& equations,
+                                                     const Dataset& data) {
+  std::map<std::string, double> out;
+  for (const auto& [state, text] : equations.items()) {
+    const std::optional<Equation> e = Resolve(state, text, data);
+    if (!e) continue;
+    if (e->self < 0) {
+      out[state] = 0.0;
+      continue;
+    }
+    std::vector<ChannelLevel> levels;
+    for (const Channel* c : e->channels) {
+      std::vector<double> samples;
+      for (Eigen::Index i = 0; i < data.rows(); ++i)
+        if (c->IsSampled(i)) samples.push_back(c->Value(i));
+      levels.push_back(LevelOf(std::move(samples)));
+    }
+    const size_t self = static_cast<size_t>(e->self);
+    const std::vector<std::vector<double>> points =
+        StraightRunningPoints(e->f.Variables(), levels, self);
+    double sum = 0.0;
+    for (const std::vector<double>& p : points) sum += Slope(e->f, p, self, levels[self].rms);
+    const double d = sum / static_cast<double>(points.size());
+    if (std::isfinite(d)) out[state] = d;
   }
   return out;
 }

@@ -15,6 +15,7 @@
 #include "methods/gp/term_completion.h"
 #include "methods/gp/tree.h"
 #include "methods/gp/validation_split.h"
+#include "methods/straight_running.h"
 
 namespace usvid::gp {
 
@@ -237,13 +238,44 @@ SimulationRefit RefineBySimulation(const PreparedData& prepared,
   return RefitBySimulation(lent.data(), state_vars, *bests, {horizon_s, 30, train_rows});
 }
 
+// d(x')/dx of `model` for the state `var` at straight running (methods/straight_running.h), the
+// derived variables (regime features, the rudder's inflow) recomputed from the point's channels.
+double StraightRunningSlope(const Model& model, int var, const GpProblem& all,
+                            const std::vector<DerivedColumn>& derived) {
+  std::vector<ChannelLevel> levels;
+  for (const Eigen::VectorXd& column : all.variables)
+    levels.push_back(LevelOf(std::vector<double>(column.begin(), column.end())));
+  const std::vector<std::vector<double>> points =
+      StraightRunningPoints(all.names, levels, static_cast<size_t>(var));
+  const Eigen::Index n = static_cast<Eigen::Index>(points.size());
+  std::vector<Eigen::VectorXd> at(all.names.size(), Eigen::VectorXd(n));
+  for (Eigen::Index p = 0; p < n; ++p) {
+    for (size_t i = 0; i < at.size(); ++i) at[i](p) = points[static_cast<size_t>(p)][i];
+    for (const DerivedColumn& d : derived) {
+      std::vector<double> args;
+      for (int a : d.arguments) args.push_back(at[static_cast<size_t>(a)](p));
+      at[static_cast<size_t>(d.index)](p) = d.expression.Evaluate(args);
+    }
+  }
+  Eigen::VectorXd& x = at[static_cast<size_t>(var)];
+  const double h = 1e-6 * (std::abs(x(0)) + levels[static_cast<size_t>(var)].rms + 1e-12);
+  x.array() += h;
+  const Eigen::VectorXd up = Predict(model, at);
+  x.array() -= 2 * h;
+  return ((up - Predict(model, at)) / (2 * h)).mean();
+}
+
 // Whether `model` of the state `var` damps or restores its own state, by d(x')/dx (central
 // differences) over the rows of `t`: below 0 on average over each stretch between gaps (each
 // record of a joint fit; kUndamped), or at every row (kEveryRow), where an equation whose
 // damping comes and goes with other states fails (v' = c r u |v| damps in one turn and drives
-// in the other, or in reverse).
-bool Damps(const Model& model, int var, std::vector<Eigen::VectorXd> variables,
-           const Eigen::VectorXd& t, DampingOffer rule) {
+// in the other, or in reverse); and, by either rule, below 0 at straight running, where an
+// equation damped only through another state is not (u' = c - k |v u|;
+// methods/straight_running.h).
+bool Damps(const Model& model, int var, const GpProblem& all,
+           const std::vector<DerivedColumn>& derived, const Eigen::VectorXd& t, DampingOffer rule) {
+  if (!(StraightRunningSlope(model, var, all, derived) < 0)) return false;
+  std::vector<Eigen::VectorXd> variables = all.variables;
   Eigen::VectorXd& x = variables[static_cast<size_t>(var)];
   const double h = 1e-6 * (std::sqrt(x.squaredNorm() / std::max<double>(1, x.size())) + 1e-12);
   x.array() += h;
@@ -284,7 +316,7 @@ SimulationRefit RefineWithDamping(const PreparedData& prepared,
   for (size_t i = 0; i < states.size(); ++i) {
     const int var = Index(*all, states[i]);
     if (rule == DampingOffer::kNone ||
-        Damps(offered[i], var, all->variables, prepared.data.t(), rule))
+        Damps(offered[i], var, *all, derived, prepared.data.t(), rule))
       continue;
     offered[i] = WithTerm(offered[i], var);
     names.push_back(states[i]);
