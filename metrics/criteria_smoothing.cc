@@ -22,7 +22,9 @@ Eigen::VectorXd SmoothedForCriteria(const Eigen::Ref<const Eigen::VectorXd>& t,
   if (!(median > 0)) return x;
   for (double d : dt)
     if (std::abs(d - median) > kJitter * median) return x;
-  return SmoothingSpline(x, median).value;
+  // A replay that ran far out (finite, but past what the spline's sums hold) is read as it is.
+  Eigen::VectorXd smoothed = SmoothingSpline(x, median).value;
+  return smoothed.allFinite() ? smoothed : Eigen::VectorXd(x);
 }
 
 }  // namespace usvid
