@@ -238,6 +238,15 @@ SimulationRefit RefineBySimulation(const PreparedData& prepared,
   return RefitBySimulation(lent.data(), state_vars, *bests, {horizon_s, 30, train_rows});
 }
 
+// d(x')/dx of `model` for the state `var` at each row of `at`, by central differences of step h.
+Eigen::VectorXd OwnSlope(const Model& model, int var, std::vector<Eigen::VectorXd> at, double h) {
+  Eigen::VectorXd& x = at[static_cast<size_t>(var)];
+  x.array() += h;
+  const Eigen::VectorXd up = Predict(model, at);
+  x.array() -= 2 * h;
+  return (up - Predict(model, at)) / (2 * h);
+}
+
 // d(x')/dx of `model` for the state `var` at straight running (methods/straight_running.h), the
 // derived variables (regime features, the rudder's inflow) recomputed from the point's channels.
 double StraightRunningSlope(const Model& model, int var, const GpProblem& all,
@@ -257,12 +266,9 @@ double StraightRunningSlope(const Model& model, int var, const GpProblem& all,
       at[static_cast<size_t>(d.index)](p) = d.expression.Evaluate(args);
     }
   }
-  Eigen::VectorXd& x = at[static_cast<size_t>(var)];
-  const double h = 1e-6 * (std::abs(x(0)) + levels[static_cast<size_t>(var)].rms + 1e-12);
-  x.array() += h;
-  const Eigen::VectorXd up = Predict(model, at);
-  x.array() -= 2 * h;
-  return ((up - Predict(model, at)) / (2 * h)).mean();
+  const double h = 1e-6 * (std::abs(at[static_cast<size_t>(var)](0)) +
+                           levels[static_cast<size_t>(var)].rms + 1e-12);
+  return OwnSlope(model, var, std::move(at), h).mean();
 }
 
 // Whether `model` of the state `var` damps or restores its own state, by d(x')/dx (central
@@ -275,13 +281,9 @@ double StraightRunningSlope(const Model& model, int var, const GpProblem& all,
 bool Damps(const Model& model, int var, const GpProblem& all,
            const std::vector<DerivedColumn>& derived, const Eigen::VectorXd& t, DampingOffer rule) {
   if (!(StraightRunningSlope(model, var, all, derived) < 0)) return false;
-  std::vector<Eigen::VectorXd> variables = all.variables;
-  Eigen::VectorXd& x = variables[static_cast<size_t>(var)];
+  const Eigen::VectorXd& x = all.variables[static_cast<size_t>(var)];
   const double h = 1e-6 * (std::sqrt(x.squaredNorm() / std::max<double>(1, x.size())) + 1e-12);
-  x.array() += h;
-  const Eigen::VectorXd up = Predict(model, variables);
-  x.array() -= 2 * h;
-  const Eigen::VectorXd slope = (up - Predict(model, variables)) / (2 * h);
+  const Eigen::VectorXd slope = OwnSlope(model, var, all.variables, h);
   if (rule == DampingOffer::kEveryRow) return (slope.array() < 0).all();
   for (const Stretch& s : Stretches(t, kGridGapFactor))
     if (!(slope.segment(s.first, s.rows()).mean() < 0)) return false;
