@@ -179,21 +179,31 @@ bool AllAmong(const std::vector<std::string>& states, const std::vector<std::str
 
 // The chosen terms of each state refitted on every row by equation error; with `surge` >= 0
 // their damping first written with |u| (astern_symmetry.h), the states so changed appended to
-// `symmetric`.
+// `symmetric`. With `keep_terms` (a candidate chosen by simulation) every term stays: the term
+// selection, run again on every row, could cut a term the simulation chose it for, such as
+// the only linear damping of a yaw whose other damping vanishes with the drift. Without it (the
+// search's best, unvalidated) the terms are selected again as the search did.
 std::vector<Model> FitChosen(const PreparedData& prepared, const std::vector<std::string>& states,
                              const std::vector<StateCandidates>& candidates,
-                             const Selection& selection, const GpOptions& search, int surge,
-                             GpProblem* all, std::vector<std::string>* symmetric) {
+                             const Selection& selection, const GpOptions& search, bool keep_terms,
+                             int surge, GpProblem* all, std::vector<std::string>* symmetric) {
   std::vector<Model> bests;
   for (size_t i = 0; i < states.size(); ++i) {
     all->target = prepared.data[states[i] + "_dot"];
-    Tree tree = candidates[i].models[selection.chosen[i]].tree;
+    const Model& chosen = candidates[i].models[selection.chosen[i]];
+    Tree tree = chosen.tree;
     if (surge >= 0) {
       const size_t size = tree.size();
       tree = AsternSymmetric(tree, surge, Index(*all, states[i]));
       if (tree.size() != size) symmetric->push_back(states[i]);
     }
-    bests.push_back(FitTree(tree, *all, search));
+    if (!keep_terms) {
+      bests.push_back(FitTree(tree, *all, search));
+      continue;
+    }
+    Model best = FitTerms(tree, *all);
+    best.r2_heldout = chosen.r2_heldout;  // on the search part's held-out blocks
+    bests.push_back(std::move(best));
   }
   return bests;
 }
@@ -457,8 +467,8 @@ GpIdentification IdentifyWithGp(
   // The chosen terms refitted on every row by equation error, then (when asked) by simulation.
   const int surge = AsternSurge(states, all);
   std::vector<std::string> symmetric;  // the states whose damping was written with |u|
-  std::vector<Model> bests =
-      FitChosen(prepared, states, candidates, selection, options.search, surge, &all, &symmetric);
+  std::vector<Model> bests = FitChosen(prepared, states, candidates, selection, options.search,
+                                       select, surge, &all, &symmetric);
   SimulationRefit refit;
   const bool refine = select && options.weight_fit == WeightFit::kSimulation;
   std::vector<std::string> damped;

@@ -340,6 +340,12 @@ Model FitTree(const Tree& tree, const GpProblem& problem, const GpOptions& optio
   return Score(tree, data, interp, options);
 }
 
+Model FitTerms(const Tree& tree, const GpProblem& problem) {
+  GpOptions every_term;
+  every_term.ols_threshold = 0.0;  // no error reduction ratio is below 0
+  return FitTree(tree, problem, every_term);
+}
+
 GpOptions ReportOptions() {
   GpOptions o;
   o.mutation = 0.1;

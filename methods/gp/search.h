@@ -117,6 +117,11 @@ GpResult RunGp(const GpProblem& problem, const GpOptions& options,
 // Scores one tree on all rows in double precision, with OLS pruning as `options` say.
 Model FitTree(const Tree& tree, const GpProblem& problem, const GpOptions& options);
 
+// Every term of `tree` weighted by least squares on all rows in double precision, none cut
+// (but a term that depends linearly on those before it): the refit of a candidate whose terms
+// are chosen already, as model_selection.h chooses them by simulation.
+Model FitTerms(const Tree& tree, const GpProblem& problem);
+
 // The model's value bias + sum w_i term_i at every row of the variables (in `names` order).
 Eigen::VectorXd Predict(const Model& model, const std::vector<Eigen::VectorXd>& variables);
 
