@@ -21,6 +21,7 @@
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
 #include "metrics/structure.h"
+#include "metrics/yaw_bias_calibration.h"
 #include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
 #include "sensors/sample_rates.h"
@@ -253,8 +254,9 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
         suite.Measured() ? nullptr
                          : simulated.Get(job.vessel, job.train_maneuver, suite.train_seconds,
                                          job.noise, job.seed);
-    model = Identify(FindSuiteMethod(job.method.method),
-                     train ? *train : train_sets.at(job.train_maneuver), RequestFor(suite, job));
+    const Dataset& train_data = train ? *train : train_sets.at(job.train_maneuver);
+    model = Identify(FindSuiteMethod(job.method.method), train_data, RequestFor(suite, job));
+    CalibrateRequested(model, train_data, job.vessel);
   } catch (const std::exception& e) {
     failure = std::string("failed: ") + e.what();
   }

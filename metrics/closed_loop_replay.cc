@@ -583,39 +583,35 @@ std::string RecordedManeuverSpec(const std::string& spec, const std::string& ves
   return read.empty() ? spec : read;
 }
 
-nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
-                               const std::string& spec, const Dataset& recorded_data) {
-  nlohmann::json out = {{"maneuver", spec}};
-  if (spec.empty()) {
-    out["status"] = "not replayable: recorded inputs only (the test data name no maneuver)";
-    return out;
-  }
-  if (!HasManeuverCriteria(spec)) {
-    out["status"] = "not replayable: " + spec + " is open-loop, scored on its recorded inputs";
-    return out;
-  }
-  if (vessel.empty()) {
-    out["status"] = "not replayable: no vessel to take the actuators and limits from";
-    return out;
-  }
+ManeuverScorer::ManeuverScorer(const std::string& vessel, const std::string& spec,
+                               const Dataset& recorded_data)
+    : vessel_(vessel), spec_(spec) {
   Dataset full = recorded_data;
   AddDerivedChannels(full);
   const Actuation& act = FindVessel(vessel).Info().actuation;
-  const std::string rudder = act.input_names.at(act.yaw_input);
+  rudder_ = act.input_names.at(act.yaw_input);
   // A real log's test starts after its approach: replay from the lead-in before the execute.
-  const Dataset recorded = FromLeadIn(spec, full, full.Has("psi") ? "psi" : "chi", rudder);
-  CheckFirstTurn(spec, full, full.Has("psi") ? "psi" : "chi", rudder);
-  const bool cut = recorded.rows() < full.rows();
-  if (cut) out["replayed_from_s"] = full.t()(full.rows() - recorded.rows());
+  recorded_ = FromLeadIn(spec, full, full.Has("psi") ? "psi" : "chi", rudder_);
+  CheckFirstTurn(spec, full, full.Has("psi") ? "psi" : "chi", rudder_);
+  if (recorded_.rows() < full.rows()) replayed_from_s_ = full.t()(full.rows() - recorded_.rows());
+}
+
+nlohmann::json ManeuverScorer::Score(const nlohmann::json& model) const {
+  nlohmann::json out = {{"maneuver", spec_}};
+  const bool cut = replayed_from_s_.has_value();
+  if (cut) out["replayed_from_s"] = *replayed_from_s_;
   ClosedLoopReplay replay;
   try {
-    replay = ReplayManeuver(model, vessel, spec, recorded, cut);
+    replay = ReplayManeuver(model, vessel_, spec_, recorded_, cut);
   } catch (const InputError& e) {
     out["status"] = std::string("not replayable: ") + e.what();
     return out;
   }
+  // The record's criteria, read from the heading the replay has (once for each).
   const std::string heading = replay.run.Has("psi") ? "psi" : "chi";
-  out["measured"] = ManeuverCriteria(spec, recorded, heading, rudder);
+  if (!measured_.contains(heading))
+    measured_[heading] = ManeuverCriteria(spec_, recorded_, heading, rudder_);
+  out["measured"] = measured_[heading];
   nlohmann::json model_criteria;
   for (const auto& [name, _] : out["measured"].items()) model_criteria[name] = nullptr;
   if (replay.diverged) {
@@ -624,7 +620,7 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& v
   } else {
     out["status"] = "ok";
     try {
-      model_criteria = ManeuverCriteria(spec, replay.run, heading, rudder, true);
+      model_criteria = ManeuverCriteria(spec_, replay.run, heading, rudder_, true);
       bool any = false;
       for (const auto& [_, v] : model_criteria.items()) any = any || v.is_number();
       if (!any) out["status"] = "incomplete: the model never turned far enough for the criteria";
@@ -640,6 +636,24 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& v
                               : nlohmann::json();
   }
   return out;
+}
+
+nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
+                               const std::string& spec, const Dataset& recorded_data) {
+  nlohmann::json out = {{"maneuver", spec}};
+  if (spec.empty()) {
+    out["status"] = "not replayable: recorded inputs only (the test data name no maneuver)";
+    return out;
+  }
+  if (!HasManeuverCriteria(spec)) {
+    out["status"] = "not replayable: " + spec + " is open-loop, scored on its recorded inputs";
+    return out;
+  }
+  if (vessel.empty()) {
+    out["status"] = "not replayable: no vessel to take the actuators and limits from";
+    return out;
+  }
+  return ManeuverScorer(vessel, spec, recorded_data).Score(model);
 }
 
 }  // namespace usvid

@@ -21,7 +21,9 @@
 // its simulator, from steady state under the record's first commands.
 #pragma once
 
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "core/dataset.h"
@@ -68,6 +70,24 @@ Dataset FromLeadIn(const std::string& spec, const Dataset& recorded, const std::
 nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
                                 const std::string& heading, const std::string& rudder,
                                 bool replay = false);
+
+// A record prepared for the closed-loop scores of many models (a calibration's scan,
+// yaw_bias_calibration.h): cut from its lead-in once, its criteria read once. Score(model) is
+// ClosedLoopScore's object for a replayable spec and a vessel. Not for concurrent use: the
+// record's criteria are read on a model's first score.
+class ManeuverScorer {
+ public:
+  // Throws InputError as ClosedLoopScore does for a record without the maneuver's channels, or
+  // whose first turn goes the other way than `spec`'s.
+  ManeuverScorer(const std::string& vessel, const std::string& spec, const Dataset& recorded);
+  nlohmann::json Score(const nlohmann::json& model) const;
+
+ private:
+  std::string vessel_, spec_, rudder_;
+  Dataset recorded_;                                        // from the lead-in on
+  std::optional<double> replayed_from_s_;                   // where it was cut, if it was
+  mutable std::map<std::string, nlohmann::json> measured_;  // by heading channel
+};
 
 // A row's "closed_loop" object: {"maneuver", "status", "measured": {criteria}, "model":
 // {criteria}, and per criterion "<name>_error_<unit>" = model - measured (null when either is)}.

@@ -6,10 +6,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
-
-#include <chrono>
 
 #include "core/error.h"
 #include "core/json_file.h"
@@ -25,6 +24,7 @@
 #include "methods/identify.h"
 #include "methods/registry.h"
 #include "metrics/evaluation.h"
+#include "metrics/yaw_bias_calibration.h"
 #include "python/python_data.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
@@ -121,7 +121,8 @@ py::dict Identify(const py::object& data, const std::string& method, const py::o
   nlohmann::json model;
   {
     py::gil_scoped_release release;
-    model = usvid::Identify(std::move(d), request);
+    model = usvid::Identify(d, request);
+    CalibrateRequested(model, d, vessel_name);
   }
   return FromJson(model);
 }

@@ -16,8 +16,10 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/parse_number.h"
 #include "methods/identify.h"
 #include "methods/registry.h"
+#include "metrics/yaw_bias_calibration.h"
 #include "preprocessing/waterjet_forces.h"
 #include "simulation/vessel_simulator.h"
 
@@ -87,9 +89,18 @@ void RunIdentify(const IdentifyOptions& o) {
   Dataset data = ReadDataFiles(o.data, "usvid identify", required, [&](Dataset& record) {
     SimulateMissingActuators(record, o.pre.actuators);
   });
-  const nlohmann::json model = Identify(std::move(data), r, [](const std::string& line) {
-    std::cerr << "usvid identify: " << line << '\n';
-  });
+  nlohmann::json model = Identify(
+      data, r, [](const std::string& line) { std::cerr << "usvid identify: " << line << '\n'; });
+  CalibrateRequested(model, data, r.vessel);  // a closed-loop replay: metrics/, not the method's
+  if (model.contains("calibration") && model["calibration"].contains("yaw_bias")) {
+    const nlohmann::json& c = model["calibration"]["yaw_bias"];
+    std::cerr << "usvid identify: r's constant from the training zig-zags' overshoots: "
+              << (c.value("applied", false)
+                      ? FormatNumber(c["constant_before"].get<double>()) + " -> " +
+                            FormatNumber(c["constant_after"].get<double>())
+                      : "kept, " + c.value("reason", std::string()))
+              << '\n';
+  }
   WriteJsonFile(o.out, model);
   if (model.contains("equations"))
     for (const auto& [state, eq] : model.at("equations").items())

@@ -58,6 +58,12 @@ std::vector<OptionSpec> GpOptionSpecs() {
                    "which chosen equations the simulation refit offers a linear damping term in "
                    "their own state, kept if the refit is: those that do not damp it on average "
                    "over some record (undamped), or at every row (every-row), or none"),
+      ChoiceOption("yaw_bias", "equation", {"equation", "zigzag"},
+                   "r's constant as the fit left it (equation), or set so that the model, "
+                   "replayed closed-loop on each zig-zag among the training records, has their "
+                   "first and second overshoots (zigzag; metrics/yaw_bias_calibration.h, needs a "
+                   "vessel for the replay's rudder): closer overshoots, a heading that drifts in "
+                   "a free run under the recorded rudder"),
       IntegerOption("fit_rows", d.fit_rows, 0, kUnbounded,
                     "rows the search scores on, spread over the record (0: all)"),
       RegimeFeaturesOption(kGpFroudeHinges),
@@ -201,6 +207,10 @@ nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& reque
   fit.model["equations"] = gp.equations;
   fit.model["gp"] = GpDetails(o, gpo, gp, features);
   fit.model["options"] = UsedOptions(o, gpo);
+  // r's constant from the training zig-zags' overshoots: a closed-loop replay, which the caller
+  // runs (metrics/yaw_bias_calibration.h, CalibrateRequested), since it is the metrics' own.
+  if (o.Text("yaw_bias") == "zigzag" && gp.equations.contains("r"))
+    fit.model["calibration"] = {{"yaw_bias", "zigzag"}};
   SetTrain(fit, request);
   return fit.model;
 }

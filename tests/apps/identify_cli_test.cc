@@ -245,6 +245,40 @@ TEST_F(IdentifyCliTest, GpTakesTheRudderInflowAndAFreeRunRecomputesIt) {
   EXPECT_TRUE(on_a_jet.empty()) << "a waterjet took " << on_a_jet.dump();
 }
 
+// GP's yaw constant from the training zig-zag (--yaw-bias zigzag,
+// metrics/yaw_bias_calibration.h): model.json reports the zig-zag it was read from, the
+// constant before and after and the overshoot errors that chose it, and stderr says what was
+// done. Without the flag the model has no calibration; without a vessel it says why none ran.
+TEST_F(IdentifyCliTest, GpSetsTheYawConstantFromTheTrainingZigzagWhenAsked) {
+  const auto train = (dir_ / "kv_z.csv").string();
+  ASSERT_EQ(
+      RunUsvid("simulate --vessel kvlcc2 --maneuver zigzag:-20/20 --duration 600 --out " + train)
+          .exit_code,
+      0);
+  const std::string common =
+      "identify --method gp --data " + train + " --population 100 --generations 3 --seed 1 ";
+  const auto asked = (dir_ / "z_asked.json").string(), not_asked = (dir_ / "z_not.json").string();
+  const auto r = RunUsvid(common + "--vessel kvlcc2 --yaw-bias zigzag --out " + asked);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("r's constant from the training zig-zags' overshoots"), std::string::npos)
+      << r.err;
+  const nlohmann::json report = ReadJsonFile(asked).at("calibration").at("yaw_bias");
+  EXPECT_EQ(report.at("maneuvers"), nlohmann::json::array({"zigzag:-20/20"})) << report.dump();
+  EXPECT_EQ(report.at("overshoot_errors_before").size(), 2u) << report.dump();
+  if (report.at("applied").get<bool>()) {
+    EXPECT_NE(report.at("constant_after"), report.at("constant_before"));
+  }
+  ASSERT_EQ(RunUsvid(common + "--vessel kvlcc2 --out " + not_asked).exit_code, 0);
+  EXPECT_FALSE(ReadJsonFile(not_asked).contains("calibration"));
+  const auto vesselless = (dir_ / "z_no_vessel.json").string();
+  ASSERT_EQ(
+      RunUsvid(common + "--states u,v,r --inputs delta,rev --yaw-bias zigzag --out " + vesselless)
+          .exit_code,
+      0);
+  EXPECT_EQ(ReadJsonFile(vesselless).at("calibration").at("yaw_bias").at("reason"),
+            "no vessel to take the replay's rudder from");
+}
+
 // A log of the commands alone (issue 19): `usvid actuators` identifies throttle -> rpm and
 // nozzle -> nozzle_angle (delay 0.2 s, time constants 0.6 and 0.1 s) on a log that records
 // both, leaves the held bucket out, and `--actuators` then rebuilds the jets' forces of a log

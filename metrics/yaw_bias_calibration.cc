@@ -1,0 +1,207 @@
+#include "metrics/yaw_bias_calibration.h"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/derived_channels.h"
+#include "core/error.h"
+#include "core/expression.h"
+#include "core/parse_number.h"
+#include "core/records.h"
+#include "metrics/closed_loop_replay.h"
+
+namespace usvid {
+namespace {
+
+constexpr int kScanSteps = 10;      // each side of 0: 21 points
+constexpr double kScanShare = 0.5;  // of the r equation's spread over the training rows
+constexpr int kGoldenIterations = 14;
+
+// An equation as its leading constant and the rest: "c - w*x" is (c, " - w*x"); an equation
+// that does not begin with a number is (0, " + (equation)").
+struct ConstantAndRest {
+  double constant = 0.0;
+  std::string rest;
+};
+
+ConstantAndRest SplitConstant(const std::string& equation) {
+  const size_t space = equation.find(' ');
+  const std::string head = equation.substr(0, space);
+  const ParsedNumber n = ParseNumber(head);
+  const std::string tail = space == std::string::npos ? "" : equation.substr(space);
+  if (n.status == NumberStatus::kOk &&
+      (tail.empty() || tail.starts_with(" + ") || tail.starts_with(" - ")))
+    return {n.value, tail};
+  return {0.0, " + (" + equation + ")"};
+}
+
+struct ZigzagRecord {
+  std::string spec;
+  ManeuverScorer scorer;
+};
+
+// The records of `train` that hold a zig-zag, each with its time from 0.
+std::vector<ZigzagRecord> ZigzagRecords(const Dataset& train, const std::string& vessel) {
+  std::vector<ZigzagRecord> out;
+  const std::vector<long> starts = RecordStarts(train.t());
+  for (size_t i = 0; i < starts.size(); ++i) {
+    const long end = i + 1 < starts.size() ? starts[i + 1] : static_cast<long>(train.rows());
+    Dataset record = train.Rows(starts[i], end - starts[i]);
+    record.SetTime(record.t().array() - record.t()(0));
+    try {
+      const std::string spec = RecordedManeuverSpec("zigzag", vessel, record);
+      if (spec.starts_with("zigzag:")) out.push_back({spec, ManeuverScorer(vessel, spec, record)});
+    } catch (const InputError&) {
+      continue;  // no heading or rudder: no zig-zag to read
+    }
+  }
+  return out;
+}
+
+// The spread (standard deviation) of the r equation over the rows where it is defined.
+double EquationSpread(const std::string& equation, const Dataset& train) {
+  Dataset data = train;
+  AddDerivedChannels(data);
+  const Eigen::VectorXd value = Expression::Parse(equation, "equation of r").Evaluate(data);
+  double sum = 0.0, sum2 = 0.0;
+  long n = 0;
+  for (double x : value)
+    if (std::isfinite(x)) {
+      sum += x;
+      sum2 += x * x;
+      ++n;
+    }
+  if (n < 2) return 0.0;
+  const double mean = sum / static_cast<double>(n);
+  return std::sqrt(std::max(0.0, sum2 / static_cast<double>(n) - mean * mean));
+}
+
+struct CriteriaCost {
+  double cost = std::numeric_limits<double>::infinity();
+  std::vector<double> errors;  // each zig-zag's first and second overshoot error
+  std::string status;          // the first replay that was not ok
+};
+
+}  // namespace
+
+nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
+                                const std::string& vessel_given) {
+  nlohmann::json report = {{"applied", false}};
+  const std::string vessel =
+      !vessel_given.empty() ? vessel_given : model.value("vessel", std::string());
+  if (!model.contains("equations") || !model["equations"].contains("r")) {
+    report["reason"] = "the model has no equation of r";
+    return report;
+  }
+  if (vessel.empty()) {
+    report["reason"] = "no vessel to take the replay's rudder from";
+    return report;
+  }
+  const std::vector<ZigzagRecord> zigzags = ZigzagRecords(train, vessel);
+  if (zigzags.empty()) {
+    report["reason"] = "no zig-zag among the training records";
+    return report;
+  }
+  for (const ZigzagRecord& z : zigzags) report["maneuvers"].push_back(z.spec);
+
+  const std::string equation = model["equations"]["r"].get<std::string>();
+  const ConstantAndRest split = SplitConstant(equation);
+  auto with_constant = [&](double c) { return FormatNumber(c) + split.rest; };
+  nlohmann::json trial = model;
+  auto evaluate = [&](double shift) {
+    trial["equations"]["r"] = with_constant(split.constant + shift);
+    CriteriaCost e;
+    double cost = 0.0;
+    for (const ZigzagRecord& z : zigzags) {
+      const nlohmann::json score = z.scorer.Score(trial);
+      const nlohmann::json& first = score["first_overshoot_error_deg"];
+      const nlohmann::json& second = score["second_overshoot_error_deg"];
+      if (score["status"] != "ok" || !first.is_number() || !second.is_number()) {
+        e.status = z.spec + ": " +
+                   (score["status"] != "ok" ? score["status"].get<std::string>()
+                                            : "the replay or the record has no second overshoot");
+        return e;
+      }
+      e.errors.push_back(first.get<double>());
+      e.errors.push_back(second.get<double>());
+      cost +=
+          first.get<double>() * first.get<double>() + second.get<double>() * second.get<double>();
+    }
+    e.cost = cost;
+    return e;
+  };
+
+  const CriteriaCost before = evaluate(0.0);
+  report["constant_before"] = split.constant;
+  report["overshoot_errors_before"] = before.errors;
+  if (!before.status.empty()) report["status_before"] = before.status;
+  const double step = kScanShare * EquationSpread(equation, train) / kScanSteps;
+  if (!(step > 0.0) || !std::isfinite(step)) {
+    report["reason"] = "the r equation does not vary over the training rows";
+    return report;
+  }
+  // The scan, then golden-section search between the best point's neighbours.
+  double best_shift = 0.0;
+  CriteriaCost best = before;
+  for (int k = -kScanSteps; k <= kScanSteps; ++k) {
+    if (k == 0) continue;
+    const CriteriaCost e = evaluate(k * step);
+    if (e.cost < best.cost) {
+      best = e;
+      best_shift = k * step;
+    }
+  }
+  if (std::isfinite(best.cost)) {
+    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+    double a = best_shift - step, b = best_shift + step;
+    double c = b - g * (b - a), d = a + g * (b - a);
+    CriteriaCost fc = evaluate(c), fd = evaluate(d);
+    for (int i = 0; i < kGoldenIterations; ++i) {
+      if (fc.cost < fd.cost) {
+        b = d;
+        d = c;
+        fd = fc;
+        c = b - g * (b - a);
+        fc = evaluate(c);
+      } else {
+        a = c;
+        c = d;
+        fc = fd;
+        d = a + g * (b - a);
+        fd = evaluate(d);
+      }
+    }
+    for (const auto& [shift, e] : {std::pair{c, fc}, std::pair{d, fd}})
+      if (e.cost < best.cost) {
+        best = e;
+        best_shift = shift;
+      }
+  }
+  if (!(best.cost < before.cost)) {
+    report["reason"] = std::isfinite(before.cost)
+                           ? "no other constant gives the training zig-zags' overshoots closer"
+                           : "no constant lets the model replay its training zig-zags";
+    return report;
+  }
+  const double constant = split.constant + best_shift;
+  model["equations"]["r"] = with_constant(constant);
+  if (model.contains("parameters") && model["parameters"].contains("r.bias"))
+    model["parameters"]["r.bias"] = constant;
+  report["applied"] = true;
+  report["reason"] =
+      "the constant that gives the model the training zig-zags' overshoots, replayed closed-loop";
+  report["shift"] = best_shift;
+  report["constant_after"] = constant;
+  report["overshoot_errors_after"] = best.errors;
+  return report;
+}
+
+void CalibrateRequested(nlohmann::json& model, const Dataset& train, const std::string& vessel) {
+  if (!model.contains("calibration") || !model["calibration"].is_object()) return;
+  if (model["calibration"].value("yaw_bias", nlohmann::json()) != "zigzag") return;
+  nlohmann::json report = CalibrateYawBias(model, train, vessel);
+  model["calibration"]["yaw_bias"] = std::move(report);
+}
+
+}  // namespace usvid
