@@ -7,8 +7,8 @@
 // (MARIN's KVLCC2: 15.7 deg to port first, 12.6 deg to starboard first). In an equation model
 // that asymmetry rides on the yaw equation's constant. Fitted by equation error, that constant is
 // a small number among the derivative's noise and the gyro's offset, and the model carries the
-// trained side's overshoot to the other side (docs/real-data.md#kvlcc2). The training zig-zag
-// itself holds both sides: its first overshoot falls to one, its second to the other. The
+// trained side's overshoot to the other side (docs/real-data.md#kvlcc2-yaw-bias). The training
+// zig-zag itself holds both sides: its first overshoot falls to one, its second to the other. The
 // constant that gives the model both, replayed by the maneuver's own rule from the record's
 // approach, is the one the record measures. One number is fitted to two criteria or more, so it
 // cannot follow the noise of one.
@@ -26,9 +26,9 @@
 
 namespace usvid {
 
-// When `model` asks for it (model["calibration"]["yaw_bias"] == "zigzag", as GP writes at its
-// default), sets its r equation's constant as above, from the zig-zags among the records of
-// `train` (one record, or several joined: core/records.h), replayed on `vessel`'s rudder
+// When `model` asks for it (model["calibration"]["yaw_bias"] == "zigzag", as GP writes with
+// `--yaw-bias zigzag`), sets its r equation's constant as above, from the zig-zags among the
+// records of `train` (one record, or several joined: core/records.h), replayed on `vessel`'s rudder
 // (`vessel` empty: the model's). model["calibration"]["yaw_bias"] becomes the report:
 //   applied (bool), reason, maneuvers (each zig-zag's spec), shift (added to the constant),
 //   constant_before, constant_after, overshoot_errors_before / _after (deg, each zig-zag's
