@@ -123,9 +123,16 @@ std::string DerivativeMethod::Spec() const {
 std::vector<Eigen::Index> StepBreaks(const std::vector<Eigen::VectorXd>& inputs, double fraction) {
   std::vector<Eigen::Index> breaks;
   if (inputs.empty()) return breaks;
+  // An input whose range is within rounding of its size is constant: a held propeller's 91.7
+  // rpm comes out of resampling as 91.7 +- 1e-14, and a fraction of that range would make every
+  // rounding a step.
+  constexpr double kConstant = 1e-9;
   std::vector<double> threshold;
-  for (const Eigen::VectorXd& u : inputs)
-    threshold.push_back(fraction * (u.size() ? u.maxCoeff() - u.minCoeff() : 0.0));
+  for (const Eigen::VectorXd& u : inputs) {
+    const double range = u.size() ? u.maxCoeff() - u.minCoeff() : 0.0;
+    const double size = u.size() ? u.cwiseAbs().maxCoeff() : 0.0;
+    threshold.push_back(range > kConstant * size ? fraction * range : 0.0);
+  }
   for (Eigen::Index k = 1; k < inputs[0].size(); ++k)
     for (size_t i = 0; i < inputs.size(); ++i)
       if (std::abs(inputs[i](k) - inputs[i](k - 1)) > threshold[i] && threshold[i] > 0) {

@@ -7,6 +7,7 @@
 
 #include <functional>
 
+#include "preprocessing/derivative.h"
 #include "preprocessing/pipeline.h"
 
 namespace usvid {
@@ -47,6 +48,23 @@ TEST(StepBreaksTest, KeptForRampsBetweenLongHolds) {
                                     {"x"}, {"f"}, {});
   EXPECT_THAT(p.notes, Contains(HasSubstr("step breaks")));
   EXPECT_THAT(p.notes, ::testing::Not(Contains(HasSubstr("no step breaks"))));
+}
+
+// A held propeller beside the stepping input: 91.7 rpm, as resampling by a cubic spline gives it
+// back, off by rounding (up to 1.4e-14). Its range is rounding, so it has no steps; as a fraction
+// of that range every rounding was one, and the breaks cut the simulated KVLCC2's zig-zag into
+// 2 s pieces whose r' kept 4 % of the true derivative's variance (issue 38).
+TEST(StepBreaksTest, NoneForAnInputHeldConstantUpToRounding) {
+  Dataset d = Record([](int i) { return (i / 50) % 2 ? 1.0 : -1.0; });
+  Eigen::VectorXd rev(d.rows());
+  for (Eigen::Index i = 0; i < rev.size(); ++i)
+    rev(i) = 91.7 + 1.4e-14 * static_cast<double>(i % 3);
+  ASSERT_GT(rev.maxCoeff(), rev.minCoeff());
+  EXPECT_TRUE(StepBreaks({rev}).empty());
+  EXPECT_EQ(StepBreaks({d["f"], rev}).size(), 20u);
+  d.Set("rev", rev);
+  const PreparedData p = Preprocess(d, {"x"}, {"f", "rev"}, {});
+  EXPECT_THAT(p.notes, Contains(HasSubstr("with 20 step breaks")));
 }
 
 TEST(StepBreaksTest, DroppedAndSaidWhereTheInputChangesEverySample) {
