@@ -119,16 +119,12 @@ TEST(PipelineDerivativeTest, AZigzagUnderAHeldPropellerIsDifferentiatedWhole) {
   const Eigen::VectorXd& r = clean["r"];
   const Eigen::VectorXd& estimate = p.data["r_dot"];
   ASSERT_EQ(estimate.size(), r.size());
-  double error = 0.0, variance = 0.0, mean = 0.0;
   const Eigen::Index n = r.size();
   Eigen::VectorXd truth(n - 2);
   for (Eigen::Index k = 1; k + 1 < n; ++k)
     truth(k - 1) = (r(k + 1) - r(k - 1)) / (t(k + 1) - t(k - 1));
-  mean = truth.mean();
-  for (Eigen::Index k = 1; k + 1 < n; ++k) {
-    error += std::pow(estimate(k) - truth(k - 1), 2);
-    variance += std::pow(truth(k - 1) - mean, 2);
-  }
+  const double error = (estimate.segment(1, n - 2) - truth).squaredNorm();
+  const double variance = (truth.array() - truth.mean()).square().sum();
   EXPECT_GT(1.0 - error / variance, 0.99);
 }
 
