@@ -133,9 +133,17 @@ std::vector<Eigen::Index> StepBreaks(const std::vector<Eigen::VectorXd>& inputs,
     const double size = u.size() ? u.cwiseAbs().maxCoeff() : 0.0;
     threshold.push_back(range > kConstant * size ? fraction * range : 0.0);
   }
-  for (Eigen::Index k = 1; k < inputs[0].size(); ++k)
+  // A step is a change over one sample, between samples that do not change so: where the
+  // input moves over several samples in a row it ramps (a rudder or nozzle at its slew rate),
+  // and the state's derivative, which integrates it, does not jump.
+  const Eigen::Index n = inputs[0].size();
+  const auto moves = [&](size_t i, Eigen::Index k) {
+    return k >= 1 && k < n && threshold[i] > 0 &&
+           std::abs(inputs[i](k) - inputs[i](k - 1)) > threshold[i];
+  };
+  for (Eigen::Index k = 1; k < n; ++k)
     for (size_t i = 0; i < inputs.size(); ++i)
-      if (std::abs(inputs[i](k) - inputs[i](k - 1)) > threshold[i] && threshold[i] > 0) {
+      if (moves(i, k) && !moves(i, k - 1) && !moves(i, k + 1)) {
         breaks.push_back(k);
         break;
       }

@@ -41,8 +41,9 @@ SmoothedSignal SmoothAndDifferentiate(const Eigen::VectorXd& y, double dt,
                                       const std::vector<Eigen::Index>& breaks = {});
 
 // The samples at which any input steps: changes by more than `fraction` of its range from the
-// previous sample (a rate-limited or smooth input has none; a constant one, also one whose range
-// is rounding, none). Shift inputs by a known delay first.
+// previous sample, where the samples before and after do not (a smooth input has none; one that
+// ramps over several samples at its slew rate, none; a constant one, also one whose range is
+// rounding, none). Shift inputs by a known delay first.
 std::vector<Eigen::Index> StepBreaks(const std::vector<Eigen::VectorXd>& inputs,
                                      double fraction = 0.02);
 

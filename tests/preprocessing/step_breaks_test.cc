@@ -1,7 +1,7 @@
-// The spline's step breaks are kept where the inputs are piecewise constant, also where a
-// rate-limited input ramps between long holds, and dropped, and said, where they change every
-// few samples (a quantised rpm, a hand-steered rudder): there the breaks would cut the record
-// into pieces too short to differentiate (issue 38).
+// The spline's step breaks are kept where the inputs are piecewise constant; not made where an
+// input ramps over several samples at its slew rate, nor where it is held; and dropped, and
+// said, where they change every few samples (a quantised rpm, a hand-steered rudder): there the
+// breaks would cut the record into pieces too short to differentiate (issue 38).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -38,16 +38,29 @@ TEST(StepBreaksTest, KeptForPiecewiseConstantInputs) {
   EXPECT_THAT(p.notes, Contains(HasSubstr("with 20 step breaks")));
 }
 
-// A zig-zag's rudder: 0.5 s ramps (a break at every sample) between 9.5 s holds.
-TEST(StepBreaksTest, KeptForRampsBetweenLongHolds) {
-  const PreparedData p = Preprocess(Record([](int i) {
-                                      const int phase = i % 100;
-                                      const double sign = (i / 100) % 2 ? 1.0 : -1.0;
-                                      return phase < 5 ? sign * (-1.0 + 0.4 * phase) : sign;
-                                    }),
-                                    {"x"}, {"f"}, {});
-  EXPECT_THAT(p.notes, Contains(HasSubstr("step breaks")));
-  EXPECT_THAT(p.notes, ::testing::Not(Contains(HasSubstr("no step breaks"))));
+// A zig-zag's rudder: 0.5 s ramps between 9.5 s holds, the input changing by a fifth of its
+// range at each of five samples in a row. A ramp is continuous, and so is x' = f: no breaks, and
+// x' follows f. Breaking the spline at every sample of each ramp (before 2026-11-29) cut it into
+// one-sample pieces there; on odin-hs's step grid, whose nozzle slews so, v' kept R^2 0.67
+// against the noise-free record's, and now keeps 0.996 (docs/preprocessing.md).
+TEST(StepBreaksTest, NoneWhereTheInputRampsOverSeveralSamples) {
+  const auto rudder = [](int i) {
+    const int phase = i % 100;
+    const double sign = (i / 100) % 2 ? 1.0 : -1.0;
+    return phase < 5 ? sign * (-1.0 + 0.4 * phase) : sign;
+  };
+  const Dataset d = Record(rudder);
+  EXPECT_TRUE(StepBreaks({d["f"]}).empty());
+  const PreparedData p = Preprocess(d, {"x"}, {"f"}, {});
+  EXPECT_THAT(p.notes, Contains("derivatives by spline"));
+  // x(i) sums f before sample i, so x' at sample i is f half a sample earlier: f(i - 1) and
+  // f(i) averaged.
+  const Eigen::VectorXd& f = d["f"];
+  const Eigen::VectorXd& estimate = p.data["x_dot"];
+  double error = 0.0;
+  for (Eigen::Index i = 1; i < f.size(); ++i)
+    error = std::max(error, std::abs(estimate(i) - 0.5 * (f(i - 1) + f(i))));
+  EXPECT_LT(error, 0.1) << "the largest error of x' against f, whose range is 2";
 }
 
 // A held propeller beside the stepping input: 91.7 rpm, as resampling by a cubic spline gives it
@@ -67,10 +80,20 @@ TEST(StepBreaksTest, NoneForAnInputHeldConstantUpToRounding) {
   EXPECT_THAT(p.notes, Contains(HasSubstr("with 20 step breaks")));
 }
 
-TEST(StepBreaksTest, DroppedAndSaidWhereTheInputChangesEverySample) {
+// A quantised rpm that flips between two readings every third sample: each flip is a change over
+// one sample, so a step, and the steps leave 0.3 s stretches.
+TEST(StepBreaksTest, DroppedAndSaidWhereTheInputChangesEveryFewSamples) {
+  const PreparedData p =
+      Preprocess(Record([](int i) { return 91.7 + 0.1 * ((i / 3) % 2); }), {"x"}, {"f"}, {});
+  EXPECT_THAT(p.notes, Contains(HasSubstr("no step breaks: the inputs' 333 changes")));
+  EXPECT_THAT(p.notes, Contains("derivatives by spline"));
+}
+
+// A noisy or quantised input that changes at nearly every sample moves over several samples in
+// a row, as a ramp does: no step.
+TEST(StepBreaksTest, NoneWhereTheInputChangesAtEverySample) {
   const PreparedData p =
       Preprocess(Record([](int i) { return 91.7 + 0.1 * ((i * 7919) % 3 - 1); }), {"x"}, {"f"}, {});
-  EXPECT_THAT(p.notes, Contains(HasSubstr("no step breaks: the inputs' ")));
   EXPECT_THAT(p.notes, Contains("derivatives by spline"));
 }
 
