@@ -41,7 +41,7 @@ void ZigZag::Command(double t, std::span<const double> state, std::span<double> 
   }
   const double psi = state[act_.heading_state];
   if (!started_) {
-    psi0_ = psi;
+    psi0_ = psi + base_offset_;
     started_ = true;
   }
   const double heading = psi - psi0_;

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <memory>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -12,6 +14,7 @@
 #include "maneuvers/maneuver_factory.h"
 #include "maneuvers/maneuver_spec.h"
 #include "maneuvers/true_wind.h"
+#include "maneuvers/zigzag.h"
 #include "metrics/equation_model.h"
 #include "metrics/free_run.h"
 #include "metrics/maneuver_of_record.h"
@@ -521,8 +524,20 @@ ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& 
                                 const std::string& spec, const Dataset& recorded,
                                 bool from_recorded_state) {
   const VesselInfo& info = FindVessel(vessel).Info();
-  RecordedApproach maneuver(MakeManeuver(spec, info.actuation, recorded.duration(), 1),
-                            info.actuation, recorded);
+  std::unique_ptr<Maneuver> rule = MakeManeuver(spec, info.actuation, recorded.duration(), 1);
+  // A zig-zag reverses about the base course the record's test reversed about.
+  if (auto* zigzag = dynamic_cast<ZigZag*>(rule.get())) {
+    const Actuation& act = info.actuation;
+    const std::string heading = recorded.Has("psi") ? "psi" : "chi";
+    const std::string& rudder = act.input_names.at(act.yaw_input);
+    try {
+      zigzag->SetBaseCourseOffset(AnalyseZigzag(spec, recorded, heading, rudder).base_offset_deg *
+                                  std::numbers::pi / 180.0);
+    } catch (const InputError&) {
+      // No zig-zag in the record to read one from: about the heading at the execute.
+    }
+  }
+  RecordedApproach maneuver(std::move(rule), info.actuation, recorded);
   if (IsVesselModel(model))
     return ReplayVesselModel(model, maneuver, SampleRate(recorded), recorded, from_recorded_state);
   return ReplayEquationModel(model, info, maneuver, recorded);

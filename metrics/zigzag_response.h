@@ -3,8 +3,17 @@
 // has turned by B begins to move, more than 1 deg (metrics/maneuver_execute.h: a real log's
 // hand steering before the test is skipped), else where it first moves more than 1 deg from its
 // initial value (heading psi0 at the execute); it is reversed where it crosses zero; the overshoot
-// after each reversal is how far the heading goes beyond the threshold B (from psi0) in the
-// direction it was turning at the reversal, before the next one. Works with either rudder sign
+// after each reversal is how far the heading goes beyond the threshold B (from the base course)
+// in the direction it was turning at the reversal, before the next one.
+//
+// The base course is the heading the test's reversals were ordered about, read from the record:
+// each reversal is ordered where the rudder leaves its full angle, at base + B on one side and
+// base - B on the other, so the midpoint of two successive orders' headings is the base course
+// (the helm's reaction beyond B falls out, being the same both sides). It is not always the
+// heading at the execute: MARIN's KVLCC2 zig-zags reverse at +-20.6 deg about 0 deg, the ordered
+// course, while the execute found the ship 0.56 and 1.12 deg off it, and overshoots read from
+// there differ by twice that between port and starboard (docs/compare.md#the-base-course). With
+// fewer than two orders the base course is psi0. Works with either rudder sign
 // convention (the turning direction is read from the heading). A heading that wraps at +-pi, as
 // logs write it, is unwrapped first (core/angles.h), and a noisy one smoothed
 // (metrics/criteria_smoothing.h): the furthest raw sample would be a noise peak.
@@ -22,6 +31,7 @@ struct ZigzagResponse {
   int first_turn = 0;                 // +1 starboard (psi grows), -1 port
   std::vector<double> reversal_s;     // rudder zero crossings after the execution
   std::vector<double> overshoot_deg;  // after each reversal (the last may be cut short)
+  double base_offset_deg = 0.0;       // the base course less psi0
 };
 
 // Throws InputError (naming the data's file) when a channel is missing or the rudder never

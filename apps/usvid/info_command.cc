@@ -103,8 +103,10 @@ void RunInfo(const InfoOptions& o) {
     // The rudder angle A taken equal to B, as in the usual 10/10 and 20/20 tests: the execute is
     // the first order of at least about B held until the heading has turned by B.
     const ZigzagResponse z = AnalyseZigzag(d, o.zigzag_deg, o.heading, o.rudder, o.zigzag_deg);
-    std::printf("zig-zag (heading threshold %g deg): executed at %g s, first turn to %s\n",
-                o.zigzag_deg, z.execute_s, z.first_turn > 0 ? "starboard" : "port");
+    std::printf(
+        "zig-zag (heading threshold %g deg): executed at %g s, first turn to %s, reversed about a "
+        "base course %+.2f deg off the heading at the execute\n",
+        o.zigzag_deg, z.execute_s, z.first_turn > 0 ? "starboard" : "port", z.base_offset_deg);
     for (size_t i = 0; i < z.overshoot_deg.size(); ++i)
       std::printf("  reversal %zu at %8.2f s: overshoot %6.2f deg%s\n", i + 1, z.reversal_s[i],
                   z.overshoot_deg[i],

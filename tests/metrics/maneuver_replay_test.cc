@@ -1,13 +1,13 @@
 // Closed-loop replay (metrics/closed_loop_replay.h): a test zig-zag re-run on the model by the
 // maneuver's own rule, and its criteria against the record's.
-#include "metrics/closed_loop_replay.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "maneuvers/maneuver_factory.h"
+#include "maneuvers/zigzag.h"
+#include "metrics/closed_loop_replay.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -34,6 +34,29 @@ TEST(ManeuverReplayTest, TheTrueModelHasTheRecordsCriteria) {
     EXPECT_NEAR(score.at("second_overshoot_error_deg").get<double>(), 0.0, 0.05) << vessel;
     EXPECT_NEAR(score.at("second_execute_error_s").get<double>(), 0.0, 0.06) << vessel;
     EXPECT_GT(score.at("measured").at("first_overshoot_deg").get<double>(), 1.0) << vessel;
+  }
+}
+
+// A test steered about a base course off its heading at the execute (MARIN's KVLCC2 zig-zags:
+// 1.12 deg) is replayed about the same course, and its overshoots read about it. Replayed about
+// the model's own heading at the execute, the true model's first leg would turn 1.12 deg less
+// and its overshoots would be read 1.12 deg off on each side. (On KVLCC2, which turns 0.05 deg
+// between samples; odin3dof turns 4.6 deg, too coarse to read a base course of a degree or two
+// from: metrics/zigzag_response.h.)
+TEST(ManeuverReplayTest, TheReplayReversesAboutTheRecordsBaseCourse) {
+  for (const double offset_deg : {1.12, -2.0}) {
+    const VesselSimulator& sim = FindVessel("kvlcc2");
+    auto m = MakeManeuver("zigzag:20/20", sim.Info().actuation, 450.0, 1);
+    auto* zigzag = dynamic_cast<ZigZag*>(m.get());
+    ASSERT_NE(zigzag, nullptr);
+    zigzag->SetBaseCourseOffset(offset_deg * kDeg);
+    const Dataset record = sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
+    const nlohmann::json score =
+        ClosedLoopScore({{"vessel", "kvlcc2"}}, "kvlcc2", "zigzag:20/20", record);
+    ASSERT_EQ(score.at("status"), "ok") << score.dump();
+    EXPECT_NEAR(score.at("first_overshoot_error_deg").get<double>(), 0.0, 0.1) << offset_deg;
+    EXPECT_NEAR(score.at("second_overshoot_error_deg").get<double>(), 0.0, 0.1) << offset_deg;
+    EXPECT_NEAR(score.at("second_execute_error_s").get<double>(), 0.0, 0.06) << offset_deg;
   }
 }
 

@@ -2,8 +2,9 @@
 // first-order Nomoto ship, simulated exactly here, the analysis finds the execution, the
 // first turn's direction, the reversals at the rudder's zero crossings and the overshoots beyond
 // the threshold; the same record with the ITTC rudder sign (positive to port) gives the same
-// figures, since the direction is read from the heading; records without a rudder, or whose
-// rudder never moves, are refused.
+// figures, since the direction is read from the heading; a test that reversed about a base
+// course off the heading at its execute is read about that course; records without a rudder, or
+// whose rudder never moves, are refused.
 #include "metrics/zigzag_response.h"
 
 #include <gtest/gtest.h>
@@ -32,13 +33,17 @@ struct ZigzagRecord {
 
 // r' = (K delta - r) / T, psi' = r, K = 0.1 1/s, T = 10 s, initial heading psi0 = 0.3 rad, at
 // rest. The rudder is held at 0 for a 5 s approach, then put to first_sign * 20 deg; it is
-// reversed at the first 0.1 s tick at which psi - psi0 has passed +-20 deg in the direction of
-// the turn. Between ticks the model is solved exactly (the rudder is held), and the true
-// overshoots are taken on a 100 times finer grid than the record's.
-ZigzagRecord SimulateNomotoZigzag(int first_sign, double duration_s = 300.0) {
+// reversed at the first 0.1 s tick at which psi - base has passed +-20 deg in the direction of
+// the turn, base = psi0 + base_offset_deg (a test steered about its ordered course, which the
+// ship was that far off at the execute). Between ticks the model is solved exactly (the rudder
+// is held), and the true overshoots (beyond base +- 20 deg) are taken on a 100 times finer grid
+// than the record's.
+ZigzagRecord SimulateNomotoZigzag(int first_sign, double duration_s = 300.0,
+                                  double base_offset_deg = 0.0) {
   constexpr double kK = 0.1, kT = 10.0, kDt = 0.1, kLeadIn = 5.0, kPsi0 = 0.3;
   constexpr double kRudder = 20 * kDeg, kB = 20 * kDeg;
   constexpr int kSub = 100;
+  const double base = kPsi0 + base_offset_deg * kDeg;
   const int n = static_cast<int>(std::lround(duration_s / kDt)) + 1;
   Eigen::VectorXd t(n), psi(n), delta(n);
   ZigzagRecord rec;
@@ -50,7 +55,7 @@ ZigzagRecord SimulateNomotoZigzag(int first_sign, double duration_s = 300.0) {
     if (t(k) >= kLeadIn - 1e-9 && sign == 0) {
       sign = first_sign;
       rec.execute_s = t(k);
-    } else if (sign != 0 && sign * (p - kPsi0) >= kB) {
+    } else if (sign != 0 && sign * (p - base) >= kB) {
       sign = -sign;
       rec.reversal.push_back(t(k));
       beyond.push_back(-INFINITY);
@@ -65,8 +70,7 @@ ZigzagRecord SimulateNomotoZigzag(int first_sign, double duration_s = 300.0) {
       p += rs * h + (r - rs) * kT * (1 - decay);
       r = rs + (r - rs) * decay;
       // After a reversal to `sign`, the heading was turning the other way (-sign).
-      if (!beyond.empty() && k + 1 < n)
-        beyond.back() = std::max(beyond.back(), -sign * (p - kPsi0));
+      if (!beyond.empty() && k + 1 < n) beyond.back() = std::max(beyond.back(), -sign * (p - base));
     }
   }
   for (double b : beyond) rec.overshoot_deg.push_back((b - kB) / kDeg);
@@ -77,14 +81,15 @@ ZigzagRecord SimulateNomotoZigzag(int first_sign, double duration_s = 300.0) {
 }
 
 void ExpectSameFigures(const ZigzagResponse& z, const ZigzagRecord& rec, int first_turn,
-                       const std::string& what) {
+                       const std::string& what, double overshoot_tolerance_deg = 0.05) {
   EXPECT_NEAR(z.execute_s, rec.execute_s, 1e-9) << what;
   EXPECT_EQ(z.first_turn, first_turn) << what;
   ASSERT_EQ(z.reversal_s.size(), rec.reversal.size()) << what;
   ASSERT_EQ(z.overshoot_deg.size(), rec.overshoot_deg.size()) << what;
   for (size_t i = 0; i < rec.reversal.size(); ++i) {
     EXPECT_NEAR(z.reversal_s[i], rec.reversal[i], 1e-9) << what << " reversal " << i;
-    EXPECT_NEAR(z.overshoot_deg[i], rec.overshoot_deg[i], 0.05) << what << " overshoot " << i;
+    EXPECT_NEAR(z.overshoot_deg[i], rec.overshoot_deg[i], overshoot_tolerance_deg)
+        << what << " overshoot " << i;
   }
 }
 
@@ -157,6 +162,27 @@ TEST(ZigzagResponseTest, RudderSignConventionDoesNotMatter) {
   ExpectSameFigures(port_positive, rec, +1, "ITTC sign");
   EXPECT_EQ(port_positive.reversal_s, starboard_positive.reversal_s);
   EXPECT_EQ(port_positive.overshoot_deg, starboard_positive.overshoot_deg);
+}
+
+// MARIN's KVLCC2 zig-zags reversed about their ordered course, 0.56 and 1.12 deg off the heading
+// at the execute. Read about that heading, a symmetric ship's overshoots would differ by about
+// twice the offset between the sides. The analysis reads the base course from the headings at
+// which the reversals were ordered, and the overshoots about it. Each order falls between two
+// samples, 0.2 deg of heading apart at this ship's rate of turn, so the base course is read to
+// within 0.1 deg, and so are the overshoots.
+TEST(ZigzagResponseTest, OvershootsAreReadAboutTheCourseTheTestReversedAbout) {
+  EXPECT_NEAR(AnalyseZigzag(SimulateNomotoZigzag(+1).data, 20.0).base_offset_deg, 0.0, 0.1);
+  for (const double offset : {-1.12, 0.56, 3.0}) {
+    const ZigzagRecord rec = SimulateNomotoZigzag(+1, 300.0, offset);
+    const ZigzagResponse z = AnalyseZigzag(rec.data, 20.0);
+    EXPECT_NEAR(z.base_offset_deg, offset, 0.1) << offset;
+    ExpectSameFigures(z, rec, +1, "base course " + std::to_string(offset) + " deg", 0.1);
+    // The premise: about the heading at the execute, the second overshoot (the other side's)
+    // would be read the whole offset off the truth (and the first the other way).
+    const double about_execute =
+        z.overshoot_deg[1] - (z.first_turn > 0 ? 1 : -1) * z.base_offset_deg;
+    EXPECT_GT(std::abs(about_execute - rec.overshoot_deg[1]), 0.9 * std::abs(offset)) << offset;
+  }
 }
 
 TEST(ZigzagResponseTest, RudderThatNeverMovesIsRefused) {

@@ -56,31 +56,39 @@ class Kvlcc2MarinTest : public ::testing::Test {
   fs::path dir_;
 };
 
-// The measured 20/-20 zig-zags (ITTC sign: +20 turns to port first): first overshoot 15.7 deg to
-// port, 12.6 deg to starboard; the single-screw ship is not symmetric.
+// The measured 20/-20 zig-zags (ITTC sign: +20 turns to port first). Their reversals were ordered
+// about 0 deg, the course ordered, while the ship was 0.56 and 1.12 deg off it at the execute:
+// read about that course (metrics/zigzag_response.h), the first overshoot is 15.1 deg to port
+// and 13.7 deg to starboard; the single-screw ship turns further to port. (Read about the
+// heading at the execute they were 15.7 and 12.6 deg: docs/compare.md#the-base-course.)
 TEST_F(Kvlcc2MarinTest, MeasuredZigzagOvershoots) {
   const ZigzagResponse port = AnalyseZigzag(ReadDatasetCsv(Import("zz_20")), 20.0);
   EXPECT_EQ(port.first_turn, -1);
-  EXPECT_NEAR(port.overshoot_deg.at(0), 15.67, 0.05);
-  EXPECT_NEAR(port.overshoot_deg.at(1), 12.73, 0.05);
+  EXPECT_NEAR(port.base_offset_deg, -0.54, 0.05);
+  EXPECT_NEAR(port.overshoot_deg.at(0), 15.14, 0.05);
+  EXPECT_NEAR(port.overshoot_deg.at(1), 13.26, 0.05);
   const ZigzagResponse starboard = AnalyseZigzag(ReadDatasetCsv(Import("zz_-20")), 20.0);
   EXPECT_EQ(starboard.first_turn, 1);
-  EXPECT_NEAR(starboard.overshoot_deg.at(0), 12.58, 0.05);
-  EXPECT_NEAR(starboard.overshoot_deg.at(1), 16.02, 0.05);
+  EXPECT_NEAR(starboard.base_offset_deg, -1.10, 0.05);
+  EXPECT_NEAR(starboard.overshoot_deg.at(0), 13.67, 0.05);
+  EXPECT_NEAR(starboard.overshoot_deg.at(1), 14.93, 0.05);
 }
 
 // The nominal MMG model at the tests' 91.7 rpm runs at 13.5 kn instead of the measured 15.8 kn,
-// and its first overshoot is 2.5 deg low both ways (stated error: 2 to 3 deg low). The
-// diagnosis of zig-zag 20/-20 says why: the surge resistance is 0.57 of the model's
-// (explaining about three quarters of the error); with it the first overshoots come within
-// 1 deg of the measured ones. On the model so extended, two small further causes pass: the
-// propeller turning 3.6 rpm faster than logged (input_bias on rev alone) and a gyro-like
-// yaw-rate offset of 1.7e-4 rad/s (docs/real-data.md).
+// and its first overshoot is low both ways, 2.8 deg on the mean of the two sides (stated error:
+// 2 to 3 deg low). The diagnosis of zig-zag 20/-20 says why: the surge resistance is 0.57 of the
+// model's (explaining about three quarters of the error); with it the mean of the first
+// overshoots comes within 1 deg of the measured one. On the model so extended, two small further
+// causes pass: the propeller turning 3.6 rpm faster than logged (input_bias on rev alone) and a
+// gyro-like yaw-rate offset of 1.7e-4 rad/s (docs/real-data.md). The model's sides differ more
+// than the ship's: 3.2 deg between its first overshoots, against the ship's 1.5 (its flow
+// straightening, gamma_R 0.395 and 0.640 either side, is the asymmetry it has).
 TEST_F(Kvlcc2MarinTest, NominalFirstOvershootAndTheDiagnosisOfWhy) {
+  constexpr double kPort = 15.14, kStarboard = 13.67;  // measured, above
   const double nominal_port = SimulatedFirstOvershoot("zigzag:-20/20");
   const double nominal_starboard = SimulatedFirstOvershoot("zigzag:20/20");
-  EXPECT_NEAR(nominal_port - 15.67, -2.5, 0.5);
-  EXPECT_NEAR(nominal_starboard - 12.58, -2.5, 0.5);
+  EXPECT_NEAR((nominal_port + nominal_starboard) / 2 - (kPort + kStarboard) / 2, -2.8, 0.5);
+  EXPECT_GT(nominal_port - nominal_starboard, kPort - kStarboard + 1.0);
 
   const std::string out = (dir_ / "diagnosis").string();
   const auto r = RunUsvid("diagnose --data " + Import("zz_20") + " --vessel kvlcc2 --out " + out);
@@ -96,8 +104,10 @@ TEST_F(Kvlcc2MarinTest, NominalFirstOvershootAndTheDiagnosisOfWhy) {
   EXPECT_TRUE(d.at("unexplained_residual").get<bool>());  // 26 % is left: see docs
 
   const std::string effect = "--effect resistance=" + std::to_string(scale);
-  EXPECT_NEAR(SimulatedFirstOvershoot("zigzag:-20/20", effect), 15.67, 1.0);
-  EXPECT_NEAR(SimulatedFirstOvershoot("zigzag:20/20", effect), 12.58, 1.0);
+  EXPECT_NEAR((SimulatedFirstOvershoot("zigzag:-20/20", effect) +
+               SimulatedFirstOvershoot("zigzag:20/20", effect)) /
+                  2,
+              (kPort + kStarboard) / 2, 1.0);
 }
 
 // Fits of r and psi [%] per (method, test maneuver), over its cells (the seeds: gp has three).
@@ -149,7 +159,7 @@ TEST_F(Kvlcc2MarinTest, MethodsOnTheHeldOutManeuvers) {
   // Issue 38: u', logged to three digits, is noise to every candidate term in the derivatives;
   // SINDy falls back to the weak form over one hull length of travel, which keeps terms in all
   // three equations, and its closed-loop first overshoot on the held-out zig-zag is closer
-  // than the published MMG model's (0.17 against 2.53 deg; docs/real-data.md).
+  // than the published MMG model's (0.50 against 3.82 deg; docs/real-data.md).
   EXPECT_LT(first_overshoot_error.at({"sindy", "1"}), first_overshoot_error.at({"nominal", "1"}));
   // The hybrid (refit plus the u^2-scaled yaw moment it finds on zz_20) is above refit on both
   // held-out tests: 89.0 against 83.9 on the other zig-zag, 83.6 against 82.1 on the turning
