@@ -16,13 +16,19 @@ namespace {
 // orders' headings (zigzag_response.h). An order is the last sample of its leg at the leg's full
 // angle (within kOrderToleranceDeg: a log's rudder flickers in its last digit about the angle it
 // holds), and its heading the mean of that sample's and the next, to within half their
-// difference. 0 with fewer than two orders, or where the offset is within that resolution: a
-// test is taken to reverse about its heading at the execute (ITTC's base course) unless its
-// record shows otherwise. A fast vessel turns a degree between two samples, and would otherwise
-// read a different base course on every record.
+// difference. Two successive orders pair when their headings lie at least B apart, as a leg's
+// two ends do (base - B and base + B): a rudder that flickers through zero, or is put over for
+// a sample as the test stops, makes a crossing whose order is no leg's end. 0 without a pair,
+// where the offset is within the orders' resolution (a fast vessel turns a degree between two
+// samples, and would otherwise read a different base course on every record), or where the test
+// is not clean (zigzag_response.h): a test is taken to reverse about its heading at the execute,
+// ITTC's base course, unless its record shows another plainly.
 double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta,
-                        Eigen::Index execute, const std::vector<Eigen::Index>& reversals) {
+                        Eigen::Index execute, const std::vector<Eigen::Index>& reversals,
+                        double threshold_rad) {
   constexpr double kOrderToleranceRad = 1.0 * std::numbers::pi / 180.0;
+  constexpr double kOrderSpreadRad = 1.0 * std::numbers::pi / 180.0;
+  constexpr double kHelmLagRad = 2.0 * std::numbers::pi / 180.0;
   std::vector<double> ordered_at, half_width;
   Eigen::Index leg_start = execute;
   for (const Eigen::Index reversal : reversals) {
@@ -35,15 +41,28 @@ double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta
     half_width.push_back(0.5 * std::abs(psi(order + 1) - psi(order)));
     leg_start = reversal;
   }
-  if (ordered_at.size() < 2) return 0.0;
   double sum = 0.0, resolution = 0.0;
+  int pairs = 0;
   for (size_t i = 0; i + 1 < ordered_at.size(); ++i) {
+    if (std::abs(ordered_at[i + 1] - ordered_at[i]) < threshold_rad) continue;
     sum += 0.5 * (ordered_at[i] + ordered_at[i + 1]);
     resolution += 0.5 * (half_width[i] + half_width[i + 1]);
+    ++pairs;
   }
-  const auto pairs = static_cast<double>(ordered_at.size() - 1);
-  const double offset = sum / pairs - psi(execute);
-  return std::abs(offset) > resolution / pairs ? offset : 0.0;
+  if (pairs == 0) return 0.0;
+  const double base = sum / pairs, offset = base - psi(execute);
+  if (!(std::abs(offset) > resolution / pairs)) return 0.0;
+  // A clean test: every order as far from the base course as the others, and that B plus a
+  // helm's lag.
+  double nearest = INFINITY, furthest = 0.0;
+  for (const double at : ordered_at) {
+    nearest = std::min(nearest, std::abs(at - base));
+    furthest = std::max(furthest, std::abs(at - base));
+  }
+  const bool clean = furthest - nearest <= 2.0 * kOrderSpreadRad &&
+                     nearest >= threshold_rad - kOrderSpreadRad &&
+                     furthest <= threshold_rad + kHelmLagRad;
+  return clean ? offset : 0.0;
 }
 
 }  // namespace
@@ -75,7 +94,8 @@ ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const st
   std::vector<Eigen::Index> reversals;
   for (Eigen::Index k = execute + 1; k < n; ++k)
     if ((delta(k) > 0) != (delta(k - 1) > 0)) reversals.push_back(k);
-  const double base = psi(execute) + BaseCourseOffset(psi, delta, execute, reversals);
+  const double base =
+      psi(execute) + BaseCourseOffset(psi, delta, execute, reversals, threshold_deg * kDeg);
   z.base_offset_deg = (base - psi(execute)) / kDeg;
   for (size_t i = 0; i < reversals.size(); ++i) {
     const Eigen::Index a = reversals[i];

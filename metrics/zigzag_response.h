@@ -12,11 +12,16 @@
 // (the helm's reaction beyond B falls out, being the same both sides). It is not always the
 // heading at the execute: MARIN's KVLCC2 zig-zags reverse at +-20.6 deg about 0 deg, the ordered
 // course, while the execute found the ship 0.56 and 1.12 deg off it, and overshoots read from
-// there differ by twice that between port and starboard (docs/compare.md#the-base-course). With
-// fewer than two orders the base course is psi0. Works with either rudder sign
-// convention (the turning direction is read from the heading). A heading that wraps at +-pi, as
-// logs write it, is unwrapped first (core/angles.h), and a noisy one smoothed
-// (metrics/criteria_smoothing.h): the furthest raw sample would be a noise peak.
+// there differ by twice that between port and starboard (docs/compare.md#the-base-course). The
+// base course is psi0 (ITTC's) unless the orders give another clearly: at least one pair, an
+// offset beyond the orders' resolution (a sample's turn), and a clean test: the orders'
+// distances from the base course span at most 2 deg and lie between B - 1 and B + 2 deg (a helm
+// that reacts late, by as much each time). Reversals ordered by hand at scattered headings (the
+// Esso Osaka pond's, in wind: docs/real-data.md#kvlcc2-base-course) say no base course but the
+// execute's. Works with either rudder sign convention (the turning direction is read from the
+// heading). A heading that wraps at +-pi, as logs write it, is unwrapped first (core/angles.h), and
+// a noisy one smoothed (metrics/criteria_smoothing.h): the furthest raw sample would be a noise
+// peak.
 #pragma once
 
 #include <string>

@@ -35,11 +35,12 @@ struct ZigzagRecord {
 // rest. The rudder is held at 0 for a 5 s approach, then put to first_sign * 20 deg; it is
 // reversed at the first 0.1 s tick at which psi - base has passed +-20 deg in the direction of
 // the turn, base = psi0 + base_offset_deg (a test steered about its ordered course, which the
-// ship was that far off at the execute). Between ticks the model is solved exactly (the rudder
+// ship was that far off at the execute), the third reversal third_late_deg later (a helm
+// that reverses at scattered headings). Between ticks the model is solved exactly (the rudder
 // is held), and the true overshoots (beyond base +- 20 deg) are taken on a 100 times finer grid
 // than the record's.
 ZigzagRecord SimulateNomotoZigzag(int first_sign, double duration_s = 300.0,
-                                  double base_offset_deg = 0.0) {
+                                  double base_offset_deg = 0.0, double third_late_deg = 0.0) {
   constexpr double kK = 0.1, kT = 10.0, kDt = 0.1, kLeadIn = 5.0, kPsi0 = 0.3;
   constexpr double kRudder = 20 * kDeg, kB = 20 * kDeg;
   constexpr int kSub = 100;
@@ -55,7 +56,8 @@ ZigzagRecord SimulateNomotoZigzag(int first_sign, double duration_s = 300.0,
     if (t(k) >= kLeadIn - 1e-9 && sign == 0) {
       sign = first_sign;
       rec.execute_s = t(k);
-    } else if (sign != 0 && sign * (p - base) >= kB) {
+    } else if (sign != 0 &&
+               sign * (p - base) >= kB + (rec.reversal.size() == 2 ? third_late_deg : 0.0) * kDeg) {
       sign = -sign;
       rec.reversal.push_back(t(k));
       beyond.push_back(-INFINITY);
@@ -183,6 +185,20 @@ TEST(ZigzagResponseTest, OvershootsAreReadAboutTheCourseTheTestReversedAbout) {
         z.overshoot_deg[1] - (z.first_turn > 0 ? 1 : -1) * z.base_offset_deg;
     EXPECT_GT(std::abs(about_execute - rec.overshoot_deg[1]), 0.9 * std::abs(offset)) << offset;
   }
+}
+
+// Reversals ordered at scattered headings (the third 3 deg late, as a helm in a wind's gusts may
+// order it) say no base course: their midpoints move with the scatter (by 1.5 deg here). The
+// analysis keeps the heading at the execute. (A helm late by as much on every reversal to one
+// side is a base course moved half that way, and is read as one: the replay then reverses where
+// the record did.)
+TEST(ZigzagResponseTest, ScatteredReversalsKeepTheHeadingAtTheExecute) {
+  const ZigzagRecord rec = SimulateNomotoZigzag(+1, 300.0, 2.0, 3.0);
+  const ZigzagResponse z = AnalyseZigzag(rec.data, 20.0);
+  EXPECT_EQ(z.base_offset_deg, 0.0);
+  // The same offset with the reversals at one distance from it is read.
+  EXPECT_NEAR(AnalyseZigzag(SimulateNomotoZigzag(+1, 300.0, 2.0).data, 20.0).base_offset_deg, 2.0,
+              0.1);
 }
 
 TEST(ZigzagResponseTest, RudderThatNeverMovesIsRefused) {
