@@ -1,5 +1,6 @@
 #include "metrics/zigzag_response.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -14,7 +15,7 @@ namespace {
 
 // The base course less the heading at the execute [rad]: the mean midpoint of successive reversal
 // orders' headings (zigzag_response.h). An order is the last sample of its leg at the leg's full
-// angle (within kOrderToleranceDeg: a log's rudder flickers in its last digit about the angle it
+// angle (within kOrderToleranceRad: a log's rudder flickers in its last digit about the angle it
 // holds), and its heading the mean of that sample's and the next, to within half their
 // difference. Two successive orders pair when their headings lie at least B apart, as a leg's
 // two ends do (base - B and base + B): a rudder that flickers through zero, or is put over for
@@ -27,9 +28,10 @@ double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta
                         Eigen::Index execute, const std::vector<Eigen::Index>& reversals,
                         double threshold_rad) {
   constexpr double kOrderToleranceRad = 1.0 * std::numbers::pi / 180.0;
-  constexpr double kOrderSpreadRad = 1.0 * std::numbers::pi / 180.0;
+  constexpr double kOrderSpreadRad = 0.5 * std::numbers::pi / 180.0;
   constexpr double kHelmLagRad = 2.0 * std::numbers::pi / 180.0;
   std::vector<double> ordered_at, half_width;
+  std::vector<bool> paired;
   Eigen::Index leg_start = execute;
   for (const Eigen::Index reversal : reversals) {
     const double side = delta(reversal - 1) > 0 ? 1.0 : -1.0;
@@ -39,12 +41,14 @@ double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta
     while (order > leg_start && side * delta(order) < full - kOrderToleranceRad) --order;
     ordered_at.push_back(0.5 * (psi(order) + psi(order + 1)));
     half_width.push_back(0.5 * std::abs(psi(order + 1) - psi(order)));
+    paired.push_back(false);
     leg_start = reversal;
   }
   double sum = 0.0, resolution = 0.0;
   int pairs = 0;
   for (size_t i = 0; i + 1 < ordered_at.size(); ++i) {
     if (std::abs(ordered_at[i + 1] - ordered_at[i]) < threshold_rad) continue;
+    paired[i] = paired[i + 1] = true;
     sum += 0.5 * (ordered_at[i] + ordered_at[i + 1]);
     resolution += 0.5 * (half_width[i] + half_width[i + 1]);
     ++pairs;
@@ -52,12 +56,13 @@ double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta
   if (pairs == 0) return 0.0;
   const double base = sum / pairs, offset = base - psi(execute);
   if (!(std::abs(offset) > resolution / pairs)) return 0.0;
-  // A clean test: every order as far from the base course as the others, and that B plus a
-  // helm's lag.
+  // A clean test: every paired order as far from the base course as the others, and that B
+  // plus a helm's lag.
   double nearest = INFINITY, furthest = 0.0;
-  for (const double at : ordered_at) {
-    nearest = std::min(nearest, std::abs(at - base));
-    furthest = std::max(furthest, std::abs(at - base));
+  for (size_t i = 0; i < ordered_at.size(); ++i) {
+    if (!paired[i]) continue;
+    nearest = std::min(nearest, std::abs(ordered_at[i] - base));
+    furthest = std::max(furthest, std::abs(ordered_at[i] - base));
   }
   const bool clean = furthest - nearest <= 2.0 * kOrderSpreadRad &&
                      nearest >= threshold_rad - kOrderSpreadRad &&

@@ -15,13 +15,13 @@
 // there differ by twice that between port and starboard (docs/compare.md#the-base-course). The
 // base course is psi0 (ITTC's) unless the orders give another clearly: at least one pair, an
 // offset beyond the orders' resolution (a sample's turn), and a clean test: the orders'
-// distances from the base course span at most 2 deg and lie between B - 1 and B + 2 deg (a helm
-// that reacts late, by as much each time). Reversals ordered by hand at scattered headings (the
-// Esso Osaka pond's, in wind: docs/real-data.md#kvlcc2-base-course) say no base course but the
-// execute's. Works with either rudder sign convention (the turning direction is read from the
-// heading). A heading that wraps at +-pi, as logs write it, is unwrapped first (core/angles.h), and
-// a noisy one smoothed (metrics/criteria_smoothing.h): the furthest raw sample would be a noise
-// peak.
+// distances from the base course span at most 1 deg and lie between B - 0.5 and B + 2 deg (a
+// helm that reacts late, by as much each time; MARIN's span 0.1-0.2 deg). Reversals ordered by hand
+// at scattered headings (the Esso Osaka pond's, in wind: docs/real-data.md#kvlcc2-base-course) say
+// no base course but the execute's. Works with either rudder sign convention (the turning direction
+// is read from the heading). A heading that wraps at +-pi, as logs write it, is unwrapped first
+// (core/angles.h), and a noisy one smoothed (metrics/criteria_smoothing.h): the furthest raw sample
+// would be a noise peak.
 #pragma once
 
 #include <string>
