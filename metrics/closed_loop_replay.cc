@@ -522,21 +522,11 @@ bool HasManeuverCriteria(const std::string& spec) {
 
 ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
                                 const std::string& spec, const Dataset& recorded,
-                                bool from_recorded_state) {
+                                bool from_recorded_state, double base_course_offset_rad) {
   const VesselInfo& info = FindVessel(vessel).Info();
   std::unique_ptr<Maneuver> rule = MakeManeuver(spec, info.actuation, recorded.duration(), 1);
-  // A zig-zag reverses about the base course the record's test reversed about.
-  if (auto* zigzag = dynamic_cast<ZigZag*>(rule.get())) {
-    const Actuation& act = info.actuation;
-    const std::string heading = recorded.Has("psi") ? "psi" : "chi";
-    const std::string& rudder = act.input_names.at(act.yaw_input);
-    try {
-      zigzag->SetBaseCourseOffset(AnalyseZigzag(spec, recorded, heading, rudder).base_offset_deg *
-                                  std::numbers::pi / 180.0);
-    } catch (const InputError&) {
-      // No zig-zag in the record to read one from: about the heading at the execute.
-    }
-  }
+  if (auto* zigzag = dynamic_cast<ZigZag*>(rule.get()))
+    zigzag->SetBaseCourseOffset(base_course_offset_rad);
   RecordedApproach maneuver(std::move(rule), info.actuation, recorded);
   if (IsVesselModel(model))
     return ReplayVesselModel(model, maneuver, SampleRate(recorded), recorded, from_recorded_state);
@@ -609,6 +599,18 @@ ManeuverScorer::ManeuverScorer(const std::string& vessel, const std::string& spe
   recorded_ = FromLeadIn(spec, full, full.Has("psi") ? "psi" : "chi", rudder_);
   CheckFirstTurn(spec, full, full.Has("psi") ? "psi" : "chi", rudder_);
   if (recorded_.rows() < full.rows()) replayed_from_s_ = full.t()(full.rows() - recorded_.rows());
+  // A zig-zag is replayed about the base course the record's test reversed about: read once,
+  // for every model scored.
+  if (spec.starts_with("zigzag")) {
+    try {
+      base_course_offset_rad_ =
+          AnalyseZigzag(spec, recorded_, recorded_.Has("psi") ? "psi" : "chi", rudder_)
+              .base_offset_deg *
+          std::numbers::pi / 180.0;
+    } catch (const InputError&) {
+      // No zig-zag in the record to read one from: about the heading at the execute.
+    }
+  }
 }
 
 nlohmann::json ManeuverScorer::Score(const nlohmann::json& model) const {
@@ -617,7 +619,7 @@ nlohmann::json ManeuverScorer::Score(const nlohmann::json& model) const {
   if (cut) out["replayed_from_s"] = *replayed_from_s_;
   ClosedLoopReplay replay;
   try {
-    replay = ReplayManeuver(model, vessel_, spec_, recorded_, cut);
+    replay = ReplayManeuver(model, vessel_, spec_, recorded_, cut, base_course_offset_rad_);
   } catch (const InputError& e) {
     out["status"] = std::string("not replayable: ") + e.what();
     return out;

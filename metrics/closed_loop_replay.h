@@ -44,10 +44,13 @@ bool HasManeuverCriteria(const std::string& spec);
 // `recorded` lasts. Throws InputError saying why when the model cannot be replayed (an input
 // that is neither a command nor derived from one, an actuator the record cannot identify).
 // With `from_recorded_state`, a vessel model starts from the record's first row (its
-// velocities) instead of its own steady state.
+// velocities) instead of its own steady state. A zig-zag reverses about a base course
+// `base_course_offset_rad` off the model's heading at the execute: the record's, which
+// ManeuverScorer reads once (metrics/zigzag_response.h).
 ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
                                 const std::string& spec, const Dataset& recorded,
-                                bool from_recorded_state = false);
+                                bool from_recorded_state = false,
+                                double base_course_offset_rad = 0.0);
 
 // The execute time of maneuver `spec` (zigzag or turning) in a record
 // (metrics/maneuver_execute.h).
@@ -86,6 +89,7 @@ class ManeuverScorer {
   std::string vessel_, spec_, rudder_;
   Dataset recorded_;                                        // from the lead-in on
   std::optional<double> replayed_from_s_;                   // where it was cut, if it was
+  double base_course_offset_rad_ = 0.0;                     // a zig-zag's, read from the record
   mutable std::map<std::string, nlohmann::json> measured_;  // by heading channel
 };
 

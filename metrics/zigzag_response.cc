@@ -30,8 +30,11 @@ double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta
   constexpr double kOrderToleranceRad = 1.0 * std::numbers::pi / 180.0;
   constexpr double kOrderSpreadRad = 0.5 * std::numbers::pi / 180.0;
   constexpr double kHelmLagRad = 2.0 * std::numbers::pi / 180.0;
-  std::vector<double> ordered_at, half_width;
-  std::vector<bool> paired;
+  struct Order {
+    double heading, half_width;  // to within half_width
+    bool paired = false;
+  };
+  std::vector<Order> orders;
   Eigen::Index leg_start = execute;
   for (const Eigen::Index reversal : reversals) {
     const double side = delta(reversal - 1) > 0 ? 1.0 : -1.0;
@@ -39,18 +42,18 @@ double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta
     for (Eigen::Index k = leg_start; k < reversal; ++k) full = std::max(full, side * delta(k));
     Eigen::Index order = reversal - 1;
     while (order > leg_start && side * delta(order) < full - kOrderToleranceRad) --order;
-    ordered_at.push_back(0.5 * (psi(order) + psi(order + 1)));
-    half_width.push_back(0.5 * std::abs(psi(order + 1) - psi(order)));
-    paired.push_back(false);
+    orders.push_back(
+        {0.5 * (psi(order) + psi(order + 1)), 0.5 * std::abs(psi(order + 1) - psi(order))});
     leg_start = reversal;
   }
   double sum = 0.0, resolution = 0.0;
   int pairs = 0;
-  for (size_t i = 0; i + 1 < ordered_at.size(); ++i) {
-    if (std::abs(ordered_at[i + 1] - ordered_at[i]) < threshold_rad) continue;
-    paired[i] = paired[i + 1] = true;
-    sum += 0.5 * (ordered_at[i] + ordered_at[i + 1]);
-    resolution += 0.5 * (half_width[i] + half_width[i + 1]);
+  for (size_t i = 0; i + 1 < orders.size(); ++i) {
+    Order &a = orders[i], &b = orders[i + 1];
+    if (std::abs(b.heading - a.heading) < threshold_rad) continue;
+    a.paired = b.paired = true;
+    sum += 0.5 * (a.heading + b.heading);
+    resolution += 0.5 * (a.half_width + b.half_width);
     ++pairs;
   }
   if (pairs == 0) return 0.0;
@@ -59,10 +62,10 @@ double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta
   // A clean test: every paired order as far from the base course as the others, and that B
   // plus a helm's lag.
   double nearest = INFINITY, furthest = 0.0;
-  for (size_t i = 0; i < ordered_at.size(); ++i) {
-    if (!paired[i]) continue;
-    nearest = std::min(nearest, std::abs(ordered_at[i] - base));
-    furthest = std::max(furthest, std::abs(ordered_at[i] - base));
+  for (const Order& o : orders) {
+    if (!o.paired) continue;
+    nearest = std::min(nearest, std::abs(o.heading - base));
+    furthest = std::max(furthest, std::abs(o.heading - base));
   }
   const bool clean = furthest - nearest <= 2.0 * kOrderSpreadRad &&
                      nearest >= threshold_rad - kOrderSpreadRad &&
