@@ -73,7 +73,99 @@ double BaseCourseOffset(const Eigen::VectorXd& psi, const Eigen::VectorXd& delta
   return clean ? offset : 0.0;
 }
 
+// The reversals after the execute: where the rudder crosses zero on its way from one side's leg
+// to the other's. A crossing counts once the rudder has gone on to half its largest angle after
+// the execute on the new side: noise or a flicker about zero as the rudder is put over (a
+// disturbed record's), or the rudder set back to zero as the test stops, reverses nothing. The
+// reversal is the first sample of the run of samples on the new side that reaches it. Unit-free:
+// the yaw command may be a rudder angle, a nozzle angle or a moment.
+std::vector<Eigen::Index> Reversals(const Eigen::VectorXd& delta, Eigen::Index execute) {
+  const Eigen::Index n = delta.size();
+  double largest = 0.0;
+  for (Eigen::Index k = execute; k < n; ++k) largest = std::max(largest, std::abs(delta(k)));
+  const double half = 0.5 * largest;
+  std::vector<Eigen::Index> reversals;
+  int side = 0;  // the side of the last leg that reached half the angle
+  Eigen::Index run_start = execute;
+  for (Eigen::Index k = execute; k < n; ++k) {
+    if (k > execute && (delta(k) > 0) != (delta(k - 1) > 0)) run_start = k;
+    if (!(std::abs(delta(k)) >= half) || half <= 0) continue;
+    const int here = delta(k) > 0 ? 1 : -1;
+    if (side != 0 && here != side) reversals.push_back(std::max(run_start, execute + 1));
+    side = here;
+  }
+  return reversals;
+}
+
+// The heading check of a test whose orders lie `order_deg` from its base course, with rudder
+// angle `rudder_deg`: A itself within kCheckNearRudderDeg (10/10 and 20/20 are the usual
+// tests, and a hand-steered one orders a few degrees early or late), else the nearest preferred
+// check: 1 to 5 deg (a big ship's small zig-zags: HSVA's KVLCC2 10/1, 20/5), then every 5 deg.
+double NearestCheck(double order_deg, double rudder_deg) {
+  if (!(order_deg > 0.5)) return 0.0;
+  if (rudder_deg > 0 && std::abs(order_deg - rudder_deg) <= kCheckNearRudderDeg) return rudder_deg;
+  if (order_deg < 5.0) return std::max(1.0, std::round(order_deg));
+  return std::min(90.0, 5.0 * std::round(order_deg / 5.0));
+}
+
 }  // namespace
+
+ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& heading,
+                                   const std::string& rudder, double rudder_deg) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  for (const std::string& c : {heading, rudder})
+    if (!data.Has(c)) {
+      data.CheckNotText(c);
+      throw InputError(data.SourcePrefix() + "zig-zag: no channel '" + c + "'");
+    }
+  const Eigen::VectorXd psi =
+      SmoothedForCriteria(data.t(), UnwrappedAngle(data[heading]));
+  const Eigen::VectorXd& delta = data[rudder];
+  const Eigen::Index n = data.rows();
+  double full = rudder_deg > 0 ? rudder_deg * kDeg : delta.cwiseAbs().maxCoeff();
+  const double at_full = full - std::max(kDeg, 0.1 * full);
+  // The legs at full angle: (side, last sample).
+  std::vector<std::pair<int, Eigen::Index>> legs;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (!(std::abs(delta(k)) >= at_full) || full <= 0) continue;
+    const int side = delta(k) > 0 ? 1 : -1;
+    if (!legs.empty() && legs.back().first == side && legs.back().second == k - 1)
+      legs.back().second = k;
+    else
+      legs.emplace_back(side, k);
+  }
+  // An order: a leg's end followed by a leg to the other side. Its heading: the mean of its
+  // last sample's and the one before, which bracket the heading at which it was ordered when
+  // the helm answers at once (a simulated test reverses at the first sample past B).
+  auto order_heading = [&](Eigen::Index end) { return 0.5 * (psi(std::max<Eigen::Index>(end - 1, 0)) + psi(end)); };
+  std::vector<double> half_swings;
+  ZigzagCheckReading out;
+  for (size_t i = 0; i + 1 < legs.size(); ++i) {
+    if (legs[i].first == legs[i + 1].first) continue;
+    ++out.orders;
+    if (i + 2 < legs.size() && legs[i + 2].first != legs[i + 1].first)
+      half_swings.push_back(
+          0.5 * std::abs(order_heading(legs[i + 1].second) - order_heading(legs[i].second)));
+  }
+  if (!half_swings.empty()) {
+    std::nth_element(half_swings.begin(), half_swings.begin() + half_swings.size() / 2,
+                     half_swings.end());
+    out.order_deg = half_swings[half_swings.size() / 2] / kDeg;
+  } else if (out.orders == 1) {
+    // One reversal: its order's heading from the heading at the execute.
+    const long execute = FindExecute({delta.data(), static_cast<size_t>(n)},
+                                     {psi.data(), static_cast<size_t>(n)}, kDeg, 0.0, full);
+    if (execute >= 0) {
+      for (const auto& [side, end] : legs)
+        if (end > execute) {
+          out.order_deg = std::abs(order_heading(end) - psi(execute)) / kDeg;
+          break;
+        }
+    }
+  }
+  out.check_deg = NearestCheck(out.order_deg, rudder_deg > 0 ? rudder_deg : full / kDeg);
+  return out;
+}
 
 ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const std::string& heading,
                              const std::string& rudder, double rudder_deg) {
@@ -99,9 +191,7 @@ ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const st
   if (execute < 0) throw InputError(data.SourcePrefix() + "zig-zag: the rudder never moves");
   ZigzagResponse z;
   z.execute_s = t(execute);
-  std::vector<Eigen::Index> reversals;
-  for (Eigen::Index k = execute + 1; k < n; ++k)
-    if ((delta(k) > 0) != (delta(k - 1) > 0)) reversals.push_back(k);
+  const std::vector<Eigen::Index> reversals = Reversals(delta, execute);
   const double base =
       psi(execute) + BaseCourseOffset(psi, delta, execute, reversals, threshold_deg * kDeg);
   z.base_offset_deg = (base - psi(execute)) / kDeg;

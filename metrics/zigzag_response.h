@@ -2,7 +2,8 @@
 // simulated: the rudder is executed where the first full-angle order held until the heading
 // has turned by B begins to move, more than 1 deg (metrics/maneuver_execute.h: a real log's
 // hand steering before the test is skipped), else where it first moves more than 1 deg from its
-// initial value (heading psi0 at the execute); it is reversed where it crosses zero; the overshoot
+// initial value (heading psi0 at the execute); it is reversed where it crosses zero on its way to
+// the other side's leg (half its angle there: a flicker about zero reverses nothing); the overshoot
 // after each reversal is how far the heading goes beyond the threshold B (from the base course)
 // in the direction it was turning at the reversal, before the next one.
 //
@@ -38,6 +39,27 @@ struct ZigzagResponse {
   std::vector<double> overshoot_deg;  // after each reversal (the last may be cut short)
   double base_offset_deg = 0.0;       // the base course less psi0
 };
+
+// The heading check B of a zig-zag record, read from the record (B is not assumed equal to the
+// rudder angle A: HSVA's KVLCC2 tests run 20/10, 30/5 and 10/1). Each reversal is ordered as the
+// heading reaches base + B or base - B, at the last sample of a leg at full angle (the order);
+// half the heading swing between two successive orders is B plus the helm's lag past it, the
+// same both sides, whatever the base course. `order_deg` is the median of those half swings
+// (with a single reversal, its order's heading from the execute's). `check_deg` is A when the
+// orders lie within kCheckNearRudderDeg of it (the usual 10/10 and 20/20; a hand-steered test
+// orders a few degrees early or late: the Esso Osaka pond's 30/30 of 13:50 at 27.9 deg), else
+// the nearest preferred check (1, 2, 3, 4, 5, then every 5 deg): MARIN's KVLCC2 orders lie 0.6
+// deg past B = 20, a fast vessel's up to half a sample's turn (2.3 deg) past it. 0 when the record
+// holds no order. `rudder_deg`: A, for what counts as full angle (within max(1 deg, 10 %)); 0:
+// the record's largest.
+inline constexpr double kCheckNearRudderDeg = 3.0;
+struct ZigzagCheckReading {
+  double check_deg = 0.0;  // B read, or 0
+  double order_deg = 0.0;  // the orders' median half swing
+  int orders = 0;          // reversals ordered from full angle
+};
+ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& heading = "psi",
+                                   const std::string& rudder = "delta", double rudder_deg = 0.0);
 
 // Throws InputError (naming the data's file) when a channel is missing or the rudder never
 // moves.

@@ -1,8 +1,9 @@
 // usvid info --data F.csv: checks a data file against docs/data.md#data-files and summarises
 // it: rows, duration, and per channel the samples taken, the sampling rate and the range.
 // A propeller (n, rev or rpm) that stops before the record ends is reported with the seconds
-// that follow it (preprocessing/record_end.h). With --zigzag B: the zig-zag overshoots
-// (metrics/zigzag_response.h).
+// that follow it (preprocessing/record_end.h). With --zigzag [B]: the zig-zag test the record
+// holds (metrics/maneuver_of_record.h: A, B unless given, side, execute, base course) and its
+// overshoots (metrics/zigzag_response.h).
 
 #include <algorithm>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "apps/usvid/data_file.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
+#include "metrics/maneuver_of_record.h"
 #include "metrics/zigzag_response.h"
 #include "preprocessing/record_end.h"
 
@@ -77,7 +79,8 @@ void PrintPropellerStop(const Dataset& d) {
 
 struct InfoOptions {
   std::string data;
-  double zigzag_deg = 0.0;  // > 0: analyse as a zig-zag with this heading threshold
+  bool zigzag = false;      // analyse as a zig-zag
+  double zigzag_deg = 0.0;  // its heading check B; 0: read from the record
   std::string heading = "psi", rudder = "delta";
 };
 
@@ -99,14 +102,25 @@ void RunInfo(const InfoOptions& o) {
     std::printf("%-16s %9s\n", c.name.c_str(), "text");
   PrintHeldMemory(d);
   PrintPropellerStop(d);
-  if (o.zigzag_deg > 0) {
-    // The rudder angle A taken equal to B, as in the usual 10/10 and 20/20 tests: the execute is
-    // the first order of at least about B held until the heading has turned by B.
-    const ZigzagResponse z = AnalyseZigzag(d, o.zigzag_deg, o.heading, o.rudder, o.zigzag_deg);
+  if (o.zigzag) {
+    // The test read from the record (metrics/maneuver_of_record.h): A, B unless given, the side,
+    // the execute and the base course; a log's name of its maneuver checked against it.
+    const TestOfRecord test = ReadTestOfRecord(d, "zigzag", o.heading, o.rudder);
+    const double a = test.kind.empty() ? o.zigzag_deg : test.rudder_deg;
+    const double b = o.zigzag_deg > 0 ? o.zigzag_deg : test.check_deg;
+    if (!(b > 0))
+      throw InputError(path + ": --zigzag: no zig-zag to read its heading check B from (no "
+                       "rudder reversal from full angle); give B, --zigzag B");
+    const ZigzagResponse z = AnalyseZigzag(d, b, o.heading, o.rudder, a);
+    const std::string source = o.zigzag_deg > 0   ? "given"
+                               : test.named.empty() ? "read from the record"
+                                                    : "named by the log ('" + test.named +
+                                                          "', checked against the record)";
     std::printf(
-        "zig-zag (heading threshold %g deg): executed at %g s, first turn to %s, reversed about a "
-        "base course %+.2f deg off the heading at the execute\n",
-        o.zigzag_deg, z.execute_s, z.first_turn > 0 ? "starboard" : "port", z.base_offset_deg);
+        "zig-zag %g/%g (heading check B %s): executed at %g s, first turn to %s, reversed about "
+        "a base course %+.2f deg off the heading at the execute\n",
+        a, b, source.c_str(), z.execute_s, z.first_turn > 0 ? "starboard" : "port",
+        z.base_offset_deg);
     for (size_t i = 0; i < z.overshoot_deg.size(); ++i)
       std::printf("  reversal %zu at %8.2f s: overshoot %6.2f deg%s\n", i + 1, z.reversal_s[i],
                   z.overshoot_deg[i],
@@ -122,11 +136,13 @@ void AddInfoCommand(CLI::App& app) {
       "info", "Check a data CSV against the contract and summarise its channels and rates");
   cmd->add_option("--data", o->data, "The data CSV to check")->required();
   cmd->add_option("--zigzag", o->zigzag_deg,
-                  "Analyse it as a zig-zag with this heading threshold B [deg]: overshoots after "
-                  "each rudder reversal (ITTC)");
+                  "Analyse it as a zig-zag: overshoots after each rudder reversal (ITTC), with "
+                  "the heading check B [deg] given, or read from the record without a value")
+      ->expected(0, 1);
   cmd->add_option("--heading", o->heading, "Heading channel for --zigzag")->capture_default_str();
   cmd->add_option("--rudder", o->rudder, "Rudder channel for --zigzag")->capture_default_str();
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
+    o->zigzag = cmd->count("--zigzag") > 0;
     if (!(o->zigzag_deg >= 0)) throw InputError("--zigzag: must be a positive angle [deg]");
     RunInfo(*o);
   });

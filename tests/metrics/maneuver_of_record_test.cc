@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <numbers>
+#include <random>
 #include <string>
 
 #include "core/error.h"
@@ -18,6 +20,7 @@
 #include "importers/csv_log.h"
 #include "importers/marin_dat.h"
 #include "maneuvers/maneuver_factory.h"
+#include "metrics/zigzag_response.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -46,6 +49,62 @@ TEST(ManeuverOfRecordTest, ASimulatedTestGivesBackItsSpec) {
   EXPECT_EQ(ManeuverOfRecord(no_rudder, "zigzag"), "");
   EXPECT_THROW(ManeuverOfRecord(no_rudder, "zigzag", "psi", "flap"), InputError);
   EXPECT_THROW(ManeuverOfRecord(no_rudder, "stopping"), InputError);
+}
+
+TEST(ManeuverOfRecordTest, TheHeadingCheckIsReadFromTheRecordNotTakenToBeTheRudderAngle) {
+  // HSVA's KVLCC2 tests run B below A; the reversals are ordered at B, whatever A.
+  for (const char* spec : {"zigzag:20/10", "zigzag:-35/5", "zigzag:10/1", "zigzag:-15/5",
+                           "zigzag:20/20"})
+    EXPECT_EQ(ManeuverOfRecord(Simulated(spec, 900), "any"), spec);
+  // A fast vessel turns up to 4.6 deg between two samples past B: still read as B.
+  const VesselSimulator& hs = FindVessel("odin-hs");
+  auto zz = MakeManeuver("zigzag:-20/10", hs.Info().actuation, 120, 1);
+  const Dataset fast = hs.RunManeuver(*zz, hs.Info().default_params, {}, RunOptions{}).data;
+  EXPECT_EQ(ManeuverOfRecord(fast, "zigzag", "psi", "nozzle"), "zigzag:-20/10");
+}
+
+TEST(ManeuverOfRecordTest, ARudderThatFlickersAboutZeroReversesNothing) {
+  // A logged rudder that flickers about zero in its last digit (0.1 deg), at rest before the
+  // execute and as it passes zero at each reversal, and a heading with 0.2 deg of noise: the same
+  // test, execute and reversals as the clean record.
+  const Dataset clean = Simulated("zigzag:-20/10", 600);
+  Dataset d = clean;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> flicker(0.0, 0.1 * std::numbers::pi / 180.0);
+  Eigen::VectorXd delta = d["delta"], psi = d["psi"];
+  for (double& x : delta)
+    if (std::abs(x) < std::numbers::pi / 180.0) x += flicker(rng);
+  for (double& x : psi) x += 2.0 * flicker(rng);
+  d.Set("delta", delta);
+  d.Set("psi", psi);
+  const TestOfRecord read = ReadTestOfRecord(d, "any"), truth = ReadTestOfRecord(clean, "any");
+  EXPECT_EQ(read.Spec(), "zigzag:-20/10");
+  EXPECT_NEAR(read.execute_s, truth.execute_s, 0.5);
+  const ZigzagResponse a = AnalyseZigzag(clean, 10, "psi", "delta", 20);
+  const ZigzagResponse b = AnalyseZigzag(d, 10, "psi", "delta", 20);
+  ASSERT_EQ(b.reversal_s.size(), a.reversal_s.size());
+  for (size_t i = 0; i < a.reversal_s.size(); ++i)
+    EXPECT_NEAR(b.reversal_s[i], a.reversal_s[i], 0.5) << i;
+  EXPECT_EQ(b.first_turn, -1);
+}
+
+TEST(ManeuverOfRecordTest, TheLogsNameOfItsManeuverIsUsedAndCheckedAgainstTheRecord) {
+  Dataset d = Simulated("zigzag:20/10", 900);
+  d.metadata()["source"] = "HSVA_Z_20_10_S.dat";
+  d.metadata()["maneuver"] = "Z20°/10° starting to starboard";
+  TestOfRecord test = ReadTestOfRecord(d, "any");
+  EXPECT_EQ(test.Spec(), "zigzag:20/10");
+  EXPECT_EQ(test.named, "Z20°/10° starting to starboard");
+  d.metadata()["maneuver"] = "Z20°/10°";  // no side named: the record's
+  EXPECT_EQ(ManeuverOfRecord(d, "zigzag"), "zigzag:20/10");
+  // Names the record contradicts, and one usvid does not know: refused, naming the file.
+  for (const char* wrong : {"Z20°/10° starting to port", "Z20°/20°", "Z20°/1°", "Z15°/10°",
+                            "T20° to starboard", "Williamson turn"}) {
+    d.metadata()["maneuver"] = wrong;
+    EXPECT_THAT([&] { ReadTestOfRecord(d, "any"); },
+                testing::ThrowsMessage<InputError>(testing::HasSubstr("HSVA_Z_20_10_S.dat: ")))
+        << wrong;
+  }
 }
 
 TEST(ManeuverOfRecordTest, EachSharedEssoOsakaTestGivesTheStudysSpec) {
