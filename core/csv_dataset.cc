@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <set>
@@ -9,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/csv_tokenizer.h"
 #include "core/error.h"
+#include "core/json_file.h"
 #include "core/parse_number.h"
 
 namespace usvid {
@@ -170,7 +172,26 @@ Dataset ParseDatasetCsv(std::string_view text, const std::string& file) {
 
 Dataset ReadDatasetCsv(const std::string& path, const CsvReadOptions& options) {
   TextFileLines lines(path);
-  return ParseLines(lines, options);
+  Dataset data = ParseLines(lines, options);
+  const std::string record = RecordJsonPath(path);
+  std::error_code ec;
+  if (std::filesystem::exists(record, ec)) {
+    const nlohmann::json j = ReadJsonFile(record);
+    const auto maneuver = j.is_object() ? j.find("maneuver") : j.end();
+    if (!j.is_object() || maneuver == j.end() || !maneuver->is_string() ||
+        maneuver->get<std::string>().empty())
+      throw InputError(record + ": the record file of " + path +
+                       " must be a JSON object with a non-empty string \"maneuver\"");
+    data.metadata()["maneuver"] = maneuver->get<std::string>();
+  }
+  return data;
+}
+
+std::string RecordJsonPath(const std::string& data_path) {
+  const auto dot = data_path.rfind('.');
+  const auto slash = data_path.rfind('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (has_ext ? data_path.substr(0, dot) : data_path) + ".record.json";
 }
 
 std::string FormatDatasetCsv(const Dataset& data) {

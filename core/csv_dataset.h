@@ -23,8 +23,15 @@ struct CsvReadOptions {
 Dataset ParseDatasetCsv(std::string_view text, const std::string& file);
 // Streams the file a line at a time into columns sized once (a first pass counts the lines):
 // the data take their doubles and a byte per cell for the mask, and the text is never whole in
-// memory.
+// memory. When the record file RecordJsonPath(path) exists, its "maneuver" goes into metadata
+// "maneuver"; a record file that is not a JSON object with a non-empty string "maneuver" is an
+// InputError naming it.
 Dataset ReadDatasetCsv(const std::string& path, const CsvReadOptions& options = {});
+
+// The record file beside a data file, F.csv -> F.record.json (F -> F.record.json): what `usvid
+// import` knew of the record that its columns do not hold, such as the maneuver named in a log's
+// header (docs/data.md#the-records-maneuver-frecordjson).
+std::string RecordJsonPath(const std::string& data_path);
 
 // t first, then the channels in order; unsampled values as empty cells; numbers in their
 // shortest exact form, so reading the file back gives the same doubles.

@@ -56,6 +56,7 @@ Dataset JoinRecords(std::vector<Dataset> records, std::vector<std::string>* drop
                                [&](const Dataset::TextColumn& o) { return o.name == text.name; }))
         out.AddTextColumn(text);
   out.metadata() = records.front().metadata();
+  out.metadata().erase("maneuver");  // each record's, not the joined one's
   out.metadata()["records"] = std::to_string(records.size());
   out.metadata()["source"] = sources;
   return out;

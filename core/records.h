@@ -17,7 +17,8 @@ inline constexpr double kRecordGapS = 1000.0;
 
 // The records joined in order. Keeps the channels that every record has; those that only some
 // have are appended to `dropped` (may be null). Metadata: the first record's, with "records"
-// (how many) and "source" (each record's source, joined by ", "). One record comes back as it
+// (how many) and "source" (each record's source, joined by ", "), and without "maneuver" (a
+// record's own, F.record.json: no maneuver of the joined ones). One record comes back as it
 // is. Throws InputError for an empty list.
 Dataset JoinRecords(std::vector<Dataset> records, std::vector<std::string>* dropped = nullptr);
 

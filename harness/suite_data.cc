@@ -8,9 +8,12 @@
 
 #include "core/csv_dataset.h"
 #include "core/error.h"
+#include "core/parse_number.h"
 #include "core/records.h"
 #include "importers/column_map.h"
 #include "importers/csv_log.h"
+#include "importers/froude_scaling.h"
+#include "importers/hsva_dat.h"
 #include "importers/marin_dat.h"
 #include "preprocessing/heading_rate.h"
 #include "preprocessing/record_end.h"
@@ -25,11 +28,12 @@ std::string SuitePath(const std::string& base_dir, const std::string& file) {
 SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
                          const std::string& where) {
   if (!v.is_object()) throw InputError(where + ": each data entry is an object");
-  static const std::set<std::string> kFields = {
-      "name", "file", "format", "map", "rate_from", "end_at_stop", "from_s", "to_s", "maneuver"};
+  static const std::set<std::string> kFields = {"name",      "file",        "format", "map",
+                                                "rate_from", "end_at_stop", "from_s", "to_s",
+                                                "maneuver",  "scale"};
   for (const auto& [key, value] : v.items()) {
     if (!kFields.contains(key)) throw InputError(where + ": unknown field '" + key + "'");
-    const bool number = key == "from_s" || key == "to_s";
+    const bool number = key == "from_s" || key == "to_s" || key == "scale";
     if (key == "file" && value.is_array()) {
       if (value.empty() || !std::ranges::all_of(value, [](const auto& f) { return f.is_string(); }))
         throw InputError(where + ": 'file' must be a path or a non-empty list of paths");
@@ -46,8 +50,10 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
     d.files.push_back(SuitePath(base_dir, f.get<std::string>()));
   }
   d.format = v.value("format", d.format);
-  if (d.format != "csv" && d.format != "marin-dat" && d.format != "csv-log")
-    throw InputError(where + ": format '" + d.format + "' (known: csv, marin-dat, csv-log)");
+  if (d.format != "csv" && d.format != "marin-dat" && d.format != "hsva-dat" &&
+      d.format != "csv-log")
+    throw InputError(where + ": format '" + d.format +
+                     "' (known: csv, marin-dat, hsva-dat, csv-log)");
   d.map = v.value("map", std::string());
   if (!d.map.empty() && d.format != "csv-log")
     throw InputError(where + ": 'map' applies to format csv-log only");
@@ -60,6 +66,11 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
   d.from_s = v.value("from_s", d.from_s);
   d.to_s = v.value("to_s", d.to_s);
   if (!(d.from_s < d.to_s)) throw InputError(where + ": from_s must be before to_s");
+  d.scale = v.value("scale", d.scale);
+  if (!(std::isfinite(d.scale) && d.scale > 0))
+    throw InputError(where +
+                     ": 'scale' must be a Froude scale lambda > 0 (L_target / L_log), not " +
+                     FormatNumber(d.scale));
   return d;
 }
 
@@ -74,6 +85,7 @@ nlohmann::json SuiteDataToJson(const SuiteData& d) {
   if (!d.maneuver.empty()) j["maneuver"] = d.maneuver;
   if (std::isfinite(d.from_s)) j["from_s"] = d.from_s;
   if (std::isfinite(d.to_s)) j["to_s"] = d.to_s;
+  if (d.scale != 1.0) j["scale"] = d.scale;
   return j;
 }
 
@@ -85,6 +97,8 @@ Dataset LoadRecord(const SuiteData& d, const std::string& file) {
   Dataset data;
   if (d.format == "marin-dat") {
     data = ImportMarinDat(file, report);
+  } else if (d.format == "hsva-dat") {
+    data = ImportHsvaDat(file, report);
   } else if (d.format == "csv-log") {
     std::vector<std::string> items;
     std::stringstream s(d.map);
@@ -95,6 +109,13 @@ Dataset LoadRecord(const SuiteData& d, const std::string& file) {
   }
   if (!d.end_at_stop.empty()) EndAtStop(data, d.end_at_stop);
   if (!d.rate_from.empty()) data.Set("r", RateFromHeading(data, d.rate_from));
+  if (d.scale != 1.0) {
+    try {
+      FroudeScale(data, d.scale);
+    } catch (const InputError& e) {
+      throw InputError(file + ": 'scale': " + e.what());
+    }
+  }
   if (std::isfinite(d.from_s) || std::isfinite(d.to_s)) {
     std::vector<bool> keep(data.rows());
     for (Eigen::Index k = 0; k < data.rows(); ++k)

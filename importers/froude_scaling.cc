@@ -21,8 +21,9 @@ constexpr std::array<std::pair<std::string_view, Dimension>, 8> kNames = {{
     {"moment", Dimension::kMoment},
 }};
 
-// The contract's channel names (docs/data.md) by dimension.
-constexpr std::array<std::pair<std::string_view, Dimension>, 24> kChannels = {{
+// The contract's channel names (docs/data.md) by dimension, and the extras the importers give
+// (roll phi and its rate p, a propeller's thrust and torque).
+constexpr std::array<std::pair<std::string_view, Dimension>, 28> kChannels = {{
     {"north", Dimension::kLength},
     {"east", Dimension::kLength},
     {"x", Dimension::kLength},
@@ -35,10 +36,12 @@ constexpr std::array<std::pair<std::string_view, Dimension>, 24> kChannels = {{
     {"wind_speed", Dimension::kSpeed},
     {"wind_speed_true", Dimension::kSpeed},
     {"r", Dimension::kRate},
+    {"p", Dimension::kRate},
     {"n", Dimension::kRevolutions},
     {"rev", Dimension::kRevolutions},
     {"rpm", Dimension::kRevolutions},
     {"psi", Dimension::kAngle},
+    {"phi", Dimension::kAngle},
     {"delta", Dimension::kAngle},
     {"chi", Dimension::kAngle},
     {"nozzle", Dimension::kAngle},
@@ -46,7 +49,9 @@ constexpr std::array<std::pair<std::string_view, Dimension>, 24> kChannels = {{
     {"wind_direction_true", Dimension::kAngle},
     {"tau_x", Dimension::kForce},
     {"tau_y", Dimension::kForce},
+    {"thrust", Dimension::kForce},
     {"tau_n", Dimension::kMoment},
+    {"torque", Dimension::kMoment},
 }};
 
 double Factor(Dimension d, double lambda) {

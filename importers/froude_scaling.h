@@ -32,9 +32,10 @@ Dimension ParseDimension(const std::string& name);
 std::string DimensionName(Dimension d);
 
 // The dimension of a channel named by the data contract (docs/data.md): north, east, x, y are
-// lengths; u, v, U, vn, ve and wind speeds are speeds; r a rate; n, rev, rpm revolutions; psi,
-// delta, chi, nozzle and wind directions angles; tau_x, tau_y forces, tau_n a moment. `given`
-// comes first. Throws InputError naming a channel of no known dimension.
+// lengths; u, v, U, vn, ve and wind speeds are speeds; r (and roll rate p) a rate; n, rev, rpm
+// revolutions; psi, delta, chi, nozzle, wind directions (and roll phi) angles; tau_x, tau_y (and
+// a propeller's thrust) forces, tau_n (and torque) moments: the importers' extra channels scale
+// too. `given` comes first. Throws InputError naming a channel of no known dimension.
 Dimension DimensionOf(const std::string& channel, const std::map<std::string, Dimension>& given);
 
 // What was done to one channel, for the report: "u x1.732 (speed)". A derivative channel

@@ -1,18 +1,22 @@
-// usvid import --format marin-dat|csv --data LOG [--map NEW=OLD[:unit],...] [--end-at-stop CH]
-//   [--scale LAMBDA]
-//   --out F.csv
+// usvid import --format marin-dat|hsva-dat|csv --data LOG [--map NEW=OLD[:unit],...]
+//   [--end-at-stop CH] [--scale LAMBDA]
+//   --out F.csv     (and F.record.json beside it when the log names its maneuver)
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <sstream>
 
 #include "apps/usvid/commands.h"
+#include "core/atomic_file.h"
 #include "core/csv_dataset.h"
 #include "core/error.h"
+#include "core/json_file.h"
 #include "importers/csv_log.h"
 #include "importers/froude_scaling.h"
+#include "importers/hsva_dat.h"
 #include "importers/marin_dat.h"
 #include "preprocessing/heading_rate.h"
 #include "preprocessing/rate_calibration.h"
@@ -49,15 +53,43 @@ std::map<std::string, Dimension> ParseDimensions(const std::vector<std::string>&
   return out;
 }
 
+// F.record.json beside F.csv (docs/data.md#the-records-maneuver-frecordjson): the maneuver the
+// log names, or, when it names none, no record file left from an earlier import. Returns the
+// note for stderr, or "".
+std::string WriteRecordFile(const ImportOptions& o, const Dataset& data) {
+  const std::string record = RecordJsonPath(o.out);
+  std::error_code ec;
+  const auto maneuver = data.metadata().find("maneuver");
+  if (maneuver == data.metadata().end()) {
+    if (!std::filesystem::exists(record, ec)) return "";
+    if (!std::filesystem::remove(record, ec) || ec)
+      throw InputError(record +
+                       ": cannot remove the earlier import's record file: " + ec.message());
+    return "removed " + record + ", an earlier import's record file: this log names no maneuver";
+  }
+  const nlohmann::json j = {{"maneuver", maneuver->second},
+                            {"imported_from", o.data},
+                            {"format", o.format},
+                            {"scale", o.scale}};
+  try {
+    WriteJsonFile(record, j);
+  } catch (const InputError&) {
+    std::filesystem::remove(record, ec);  // not an earlier import's record beside the new data
+    throw;
+  }
+  return "the maneuver '" + maneuver->second + "' kept in " + record;
+}
+
 void RunImport(const ImportOptions& o) {
   const std::map<std::string, Dimension> dimensions = ParseDimensions(o.dimensions);
   if (!dimensions.empty() && o.scale == 1.0)
     throw InputError("--dimension: applies with --scale only");
+  CheckOutputFile(o.out);
   ImportReport report;
   Dataset data;
-  if (o.format == "marin-dat") {
+  if (o.format == "marin-dat" || o.format == "hsva-dat") {
     if (!o.map.empty()) throw InputError("--map: applies to --format csv only");
-    data = ImportMarinDat(o.data, report);
+    data = o.format == "marin-dat" ? ImportMarinDat(o.data, report) : ImportHsvaDat(o.data, report);
   } else {
     data = ImportCsvLog(o.data, ParseColumnMap(o.map), report);
   }
@@ -84,6 +116,8 @@ void RunImport(const ImportOptions& o) {
     report.notes.push_back(s.str());
   }
   WriteDatasetCsv(o.out, data);
+  if (std::string note = WriteRecordFile(o, data); !note.empty())
+    report.notes.push_back(std::move(note));
   for (const std::string& note : report.notes) std::cerr << "usvid import: " << note << '\n';
   std::cerr << "usvid import: wrote " << o.out << " (" << data.rows() << " rows, "
             << data.channels().size() << " channels, " << data.duration() << " s)\n";
@@ -97,9 +131,11 @@ void AddImportCommand(CLI::App& app) {
       "import",
       "Turn a foreign log into usvid's data CSV (units to SI, body velocities, time "
       "repaired and reported)");
-  cmd->add_option("--format", o->format, "Log format: marin-dat (MARIN .dat) or csv")
+  cmd->add_option("--format", o->format,
+                  "Log format: marin-dat (MARIN .dat), hsva-dat (HSVA .dat, its maneuver kept in "
+                  "F.record.json) or csv")
       ->required()
-      ->check(CLI::IsMember({"marin-dat", "csv"}));
+      ->check(CLI::IsMember({"marin-dat", "hsva-dat", "csv"}));
   cmd->add_option("--data", o->data, "The log to read")->required();
   cmd->add_option("--map", o->map,
                   "Column map for csv: NEW=OLD[:unit],... (units deg, deg/s, knots, km/h, rpm, "
@@ -125,7 +161,10 @@ void AddImportCommand(CLI::App& app) {
                   "With --scale, the dimension of a channel the data contract does not name: "
                   "CHANNEL=length|speed|rate|revolutions|angle|acceleration|force|moment,...")
       ->delimiter(',');
-  cmd->add_option("--out", o->out, "The data CSV to write")->required();
+  cmd->add_option(
+         "--out", o->out,
+         "The data CSV to write (and F.record.json beside it when the log names its maneuver)")
+      ->required();
   cmd->callback([o] { RunImport(*o); });
 }
 

@@ -207,6 +207,29 @@ TEST_F(CsvFileTest, StreamedFileReadsAsItsText) {
   EXPECT_THROW(ReadDatasetCsv(dir_.string()), InputError);
 }
 
+// F.record.json beside F.csv gives the record's maneuver (docs/data.md); a malformed one is
+// refused, naming it; a file without one has none.
+TEST_F(CsvFileTest, RecordFileGivesTheManeuver) {
+  EXPECT_EQ(RecordJsonPath("runs/zz.csv"), "runs/zz.record.json");
+  EXPECT_EQ(RecordJsonPath("runs.v2/zz"), "runs.v2/zz.record.json");
+  const std::string path = Write("zz.csv", "t,u\n0,1\n1,2\n");
+  EXPECT_FALSE(ReadDatasetCsv(path).metadata().contains("maneuver"));
+  Write("zz.record.json", R"({"maneuver": "Z20\u00b0/10\u00b0 starting to starboard",
+                              "imported_from": "a.dat", "format": "hsva-dat", "scale": 1})");
+  EXPECT_EQ(ReadDatasetCsv(path).metadata().at("maneuver"),
+            "Z20\xC2\xB0/10\xC2\xB0 starting to starboard");
+  const std::string record = (dir_ / "zz.record.json").string();
+  for (const std::string bad : {"{", "[]", R"({"maneuver": 3})", R"({"maneuver": ""})", "{}"}) {
+    Write("zz.record.json", bad);
+    try {
+      ReadDatasetCsv(path);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(record, 0), 0u) << e.what();
+    }
+  }
+}
+
 // A long read reports its progress, in order, ending with every row.
 TEST_F(CsvFileTest, ReportsProgressInOrder) {
   std::string text = "t,u\n";

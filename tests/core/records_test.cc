@@ -54,6 +54,16 @@ TEST(RecordsTest, OneRecordIsReturnedAsItIsAndNoneIsAnError) {
   EXPECT_THROW(JoinRecords({}), InputError);
 }
 
+// A record's maneuver (its F.record.json, docs/data.md) is the record's: one record keeps it, a
+// joined one is no one maneuver and has none.
+TEST(RecordsTest, OnlyALoneRecordKeepsItsManeuver) {
+  Dataset a = Record(0.0, 0.1, 12, 0.0, false, "a.csv");
+  a.metadata()["maneuver"] = "Z20/10";
+  EXPECT_EQ(JoinRecords({a}).metadata().at("maneuver"), "Z20/10");
+  const Dataset joined = JoinRecords({a, a});
+  EXPECT_FALSE(joined.metadata().contains("maneuver"));
+}
+
 TEST(RecordsTest, TheJoinIsAGapThatCutsTheSeriesIntoItsRecords) {
   const Dataset joined =
       JoinRecords({Record(0.0, 0.1, 30, 0.0, false, "a"), Record(0.0, 0.1, 20, 0.0, false, "b"),

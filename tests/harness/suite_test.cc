@@ -353,6 +353,67 @@ TEST_F(SuiteTest, AnEntryEndsEachRecordWhereItsPropellerStops) {
   std::filesystem::remove_all(dir);
 }
 
+// An HSVA log in a suite: "format": "hsva-dat" reads it as `usvid import` does, keeping its
+// header's maneuver; "scale" Froude-scales it as `import --scale` does (time x sqrt(lambda)),
+// before from_s and to_s cut it; the entry says so when written back; a scale of 0 or below is
+// refused naming the entry. A csv entry's F.record.json gives its maneuver too; a joined list
+// of files has none.
+TEST_F(SuiteTest, AnHsvaEntryKeepsItsManeuverAndScales) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "usvid_suite_hsva";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::string text = " HSVA\n KVLCC2\n Z20\xB0/10\xB0 starting to starboard\n Title\n";
+  for (int k = 0; k < 20; ++k)
+    text += std::to_string(0.05 * k) + " " + std::to_string(0.06 * k) +
+            " 0 0 1.2 0 0 0.1 -0.03 10.2295 41.0 1.1\n";
+  std::ofstream((dir / "z.dat").string(), std::ios::binary) << text;
+  const std::string maneuver = "Z20\xC2\xB0/10\xC2\xB0 starting to starboard";
+  nlohmann::json entry = {{"name", "z"}, {"file", "z.dat"}, {"format", "hsva-dat"}};
+  const Dataset model = LoadSuiteData(ParseSuiteData(entry, dir.string(), "s.json: data"));
+  EXPECT_EQ(model.metadata().at("maneuver"), maneuver);
+  EXPECT_EQ(model.rows(), 20);
+  EXPECT_FALSE(
+      SuiteDataToJson(ParseSuiteData(entry, dir.string(), "s.json: data")).contains("scale"));
+
+  entry["scale"] = 4;
+  entry["to_s"] = 1.0;  // ship time: the rows of the first 0.5 s of the log
+  const SuiteData d = ParseSuiteData(entry, dir.string(), "s.json: data");
+  EXPECT_EQ(d.scale, 4.0);
+  const Dataset ship = LoadSuiteData(d);
+  ASSERT_EQ(ship.rows(), 10);
+  EXPECT_NEAR(ship.t()(1), 0.1, 1e-12);
+  EXPECT_NEAR(ship["u"](0), 2.4, 1e-12);
+  EXPECT_NEAR(ship["rev"](0), 10.2295 * 60 / 2, 1e-9);
+  EXPECT_EQ(ship.metadata().at("maneuver"), maneuver);
+  const nlohmann::json back = SuiteDataToJson(d);
+  EXPECT_EQ(back.at("scale"), 4.0);
+  EXPECT_EQ(back.at("format"), "hsva-dat");
+  EXPECT_EQ(ParseSuiteData(back, "", "again").scale, 4.0);
+
+  for (const nlohmann::json& bad :
+       {nlohmann::json(0), nlohmann::json(-45.7), nlohmann::json("4")}) {
+    entry["scale"] = bad;
+    try {
+      ParseSuiteData(entry, dir.string(), "s.json: data.train[0]");
+      ADD_FAILURE() << "accepted scale " << bad;
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("s.json: data.train[0]: 'scale'"));
+    }
+  }
+
+  std::ofstream((dir / "c.csv").string()) << "t,u\n0,1\n0.1,1\n0.2,1\n0.3,1\n";
+  std::ofstream((dir / "c.record.json").string()) << R"({"maneuver": "Z10/10"})";
+  const nlohmann::json csv = {{"name", "c"}, {"file", "c.csv"}};
+  EXPECT_EQ(
+      LoadSuiteData(ParseSuiteData(csv, dir.string(), "s.json: data")).metadata().at("maneuver"),
+      "Z10/10");
+  const nlohmann::json both = {{"name", "c"}, {"file", {"c.csv", "c.csv"}}};
+  EXPECT_FALSE(LoadSuiteData(ParseSuiteData(both, dir.string(), "s.json: data"))
+                   .metadata()
+                   .contains("maneuver"));
+  std::filesystem::remove_all(dir);
+}
+
 // Trained and tested on files: the nominal vessel fits its own clean data exactly, every method
 // gives a row per test file with the heading scored too, only GP runs once per seed, and the
 // rows are the same at 1 and 2 threads.

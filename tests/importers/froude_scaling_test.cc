@@ -37,6 +37,20 @@ TEST(FroudeScalingTest, EachDimensionScalesByItsLaw) {
   EXPECT_EQ(scaled[7].dimension, "speed per second");
 }
 
+// The importers' extra channels scale without --dimension: MARIN's roll phi and roll rate p,
+// HSVA's roll, thrust and torque (so `usvid import --format marin-dat|hsva-dat --scale` works).
+TEST(FroudeScalingTest, ImportersExtrasHaveTheirDimensions) {
+  Dataset d(Eigen::Vector2d(0.0, 1.0));
+  for (const char* name : {"phi", "p", "thrust", "torque", "rev"})
+    d.Set(name, Eigen::Vector2d(1.0, 2.0));
+  FroudeScale(d, 4.0);
+  EXPECT_DOUBLE_EQ(d["phi"](1), 2.0);
+  EXPECT_DOUBLE_EQ(d["p"](1), 1.0);
+  EXPECT_DOUBLE_EQ(d["thrust"](1), 128.0);
+  EXPECT_DOUBLE_EQ(d["torque"](1), 512.0);
+  EXPECT_DOUBLE_EQ(d["rev"](1), 1.0);  // revolutions per time
+}
+
 // Scaling there and back restores the record.
 TEST(FroudeScalingTest, BackAndForthIsIdentity) {
   Dataset d = Record();
