@@ -100,11 +100,12 @@ std::vector<Eigen::Index> Reversals(const Eigen::VectorXd& delta, Eigen::Index e
 // The heading check of a test whose orders lie `order_deg` from its base course, with rudder
 // angle `rudder_deg`: A itself within kCheckNearRudderDeg (10/10 and 20/20 are the usual
 // tests, and a hand-steered one orders a few degrees early or late), else the nearest preferred
-// check: 1 to 5 deg (a big ship's small zig-zags: HSVA's KVLCC2 10/1, 20/5), then every 5 deg.
+// check: 1 deg (a big ship's smallest zig-zag, HSVA's KVLCC2 10/1 and 15/1, whose helm orders it
+// up to 1 deg late), then every 5 deg.
 double NearestCheck(double order_deg, double rudder_deg) {
   if (!(order_deg > 0.5)) return 0.0;
   if (rudder_deg > 0 && std::abs(order_deg - rudder_deg) <= kCheckNearRudderDeg) return rudder_deg;
-  if (order_deg < 5.0) return std::max(1.0, std::round(order_deg));
+  if (order_deg < 3.0) return 1.0;
   return std::min(90.0, 5.0 * std::round(order_deg / 5.0));
 }
 

@@ -48,7 +48,7 @@ struct ZigzagResponse {
 // (with a single reversal, its order's heading from the execute's). `check_deg` is A when the
 // orders lie within kCheckNearRudderDeg of it (the usual 10/10 and 20/20; a hand-steered test
 // orders a few degrees early or late: the Esso Osaka pond's 30/30 of 13:50 at 27.9 deg), else
-// the nearest preferred check (1, 2, 3, 4, 5, then every 5 deg): MARIN's KVLCC2 orders lie 0.6
+// the nearest preferred check (1, then every 5 deg): MARIN's KVLCC2 orders lie 0.6
 // deg past B = 20, a fast vessel's up to half a sample's turn (2.3 deg) past it. 0 when the record
 // holds no order. `rudder_deg`: A, for what counts as full angle (within max(1 deg, 10 %)); 0:
 // the record's largest.

@@ -18,8 +18,11 @@
 #include "core/error.h"
 #include "importers/column_map.h"
 #include "importers/csv_log.h"
+#include "importers/hsva_dat.h"
 #include "importers/marin_dat.h"
 #include "maneuvers/maneuver_factory.h"
+#include "metrics/closed_loop_replay.h"
+#include "metrics/maneuver_header.h"
 #include "metrics/zigzag_response.h"
 #include "simulation/vessel_simulator.h"
 
@@ -147,6 +150,52 @@ TEST(ManeuverOfRecordTest, MarinsKvlcc2TestsAreToldApartFromTheirRecords) {
     EXPECT_EQ(ManeuverOfRecord(ImportMarinDat((data / file).string(), report), "any"), spec)
         << file;
   }
+}
+
+// HSVA's nine KVLCC2 zig-zags: the header's A and B (and side, where it names one) are what the
+// record is read as, with the header and without it; and the first overshoot as the real suite
+// reads it (metrics/closed_loop_replay.h's criteria) lies within 0.3 deg of a plain reading made
+// here from the header's A and B: heading at the rudder's first movement, first and second zero
+// crossings of the rudder, the furthest heading beyond B between them.
+TEST(ManeuverOfRecordTest, HsvasZigzagsAreReadAsTheirHeadersSay) {
+  const std::filesystem::path data = std::string(USVID_SHARED_DATA_DIR) + "/kvlcc2-hsva";
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(data)) {
+    if (entry.path().extension() != ".dat") continue;
+    ++files;
+    const std::string file = entry.path().filename().string();
+    ImportReport report;
+    Dataset d = ImportHsvaDat(entry.path().string(), report);
+    const NamedManeuver named = ParseManeuverHeader(d.metadata().at("maneuver"), file);
+    const TestOfRecord test = ReadTestOfRecord(d, "any");
+    EXPECT_EQ(test.rudder_deg, named.rudder_deg) << file;
+    EXPECT_EQ(test.check_deg, named.check_deg) << file;
+    if (named.side != 0) EXPECT_EQ(test.first_turn, named.side) << file;
+    Dataset unnamed = d;
+    unnamed.metadata().erase("maneuver");
+    EXPECT_EQ(ManeuverOfRecord(unnamed, "any"), test.Spec()) << file << " without its header";
+    // The plain reading.
+    constexpr double kDeg = std::numbers::pi / 180.0;
+    const Eigen::VectorXd& psi = d["psi"];
+    const Eigen::VectorXd& delta = d["delta"];
+    Eigen::Index k = 0;
+    while (std::abs(delta(k) - delta(0)) <= kDeg) ++k;
+    const double psi0 = psi(k);
+    while (std::abs(delta(k)) < 0.5 * named.rudder_deg * kDeg) ++k;  // the first leg
+    std::vector<Eigen::Index> crossings;
+    for (Eigen::Index j = k + 1; j < d.rows() && crossings.size() < 2; ++j)
+      if ((delta(j) > 0) != (delta(j - 1) > 0)) crossings.push_back(j);
+    ASSERT_EQ(crossings.size(), 2u) << file;
+    const double side = psi(crossings[0]) > psi0 ? 1.0 : -1.0;
+    double furthest = -INFINITY;
+    for (Eigen::Index j = crossings[0]; j < crossings[1]; ++j)
+      furthest = std::max(furthest, side * (psi(j) - psi0));
+    const double plain = furthest / kDeg - named.check_deg;
+    const nlohmann::json criteria = ManeuverCriteria(test.Spec(), d, "psi", "delta");
+    EXPECT_NEAR(criteria.at("first_overshoot_deg").get<double>(), plain, 0.3) << file;
+  }
+  EXPECT_EQ(files, 9);
 }
 
 }  // namespace
