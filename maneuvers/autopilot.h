@@ -21,6 +21,8 @@
 // clipped.
 #pragma once
 
+#include <memory>
+
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +47,8 @@ class Autopilot : public Maneuver {
   std::vector<double> InitialCommand() const override;
   void Command(double t, std::span<const double> state, std::span<double> u) override;
   nlohmann::json Report() const override;
+
+  std::unique_ptr<Maneuver> Clone() const override { return std::make_unique<Autopilot>(*this); }
 
  private:
   Actuation act_;

@@ -2,6 +2,8 @@
 // the seed. Random steps, PRBS and multisine are schedules that differ in how they fill it.
 #pragma once
 
+#include <memory>
+
 #include <functional>
 
 #include "maneuvers/maneuver.h"
@@ -27,6 +29,8 @@ class InputSchedule : public Maneuver {
     return u;
   }
   void Command(double t, std::span<const double>, std::span<double> u) override { command_(t, u); }
+
+  std::unique_ptr<Maneuver> Clone() const override { return std::make_unique<InputSchedule>(*this); }
 
  private:
   std::string spec_;

@@ -75,6 +75,29 @@ class Maneuver {
   virtual bool Done() const { return false; }
   // What the maneuver measured of the run, for F.truth.json (e.g. zig-zag overshoots).
   virtual nlohmann::json Report() const { return nlohmann::json::object(); }
+  // A copy in the state this one is in: a closed-loop maneuver keeps state as it runs (a zig-zag
+  // its base course and side, a grid its step), so a second run, such as a saturation's probe
+  // of the peak command (simulation/typed_vessel_simulator.h), needs a fresh copy, not this one.
+  virtual std::unique_ptr<Maneuver> Clone() const = 0;
+};
+
+// The maneuver a wrapper runs inside (a replay's approach, a wind over a maneuver): owned, and
+// cloned with its wrapper, so that the wrapper's Clone is its copy.
+class InnerManeuver {
+ public:
+  explicit InnerManeuver(std::unique_ptr<Maneuver> m) : m_(std::move(m)) {}
+  InnerManeuver(const InnerManeuver& o) : m_(o.m_->Clone()) {}
+  InnerManeuver& operator=(const InnerManeuver& o) {
+    if (this != &o) m_ = o.m_->Clone();
+    return *this;
+  }
+  InnerManeuver(InnerManeuver&&) noexcept = default;
+  InnerManeuver& operator=(InnerManeuver&&) noexcept = default;
+  ~InnerManeuver() = default;
+  Maneuver* operator->() const { return m_.get(); }
+
+ private:
+  std::unique_ptr<Maneuver> m_;
 };
 
 }  // namespace usvid

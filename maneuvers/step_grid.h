@@ -8,6 +8,8 @@
 // max_hold_s. The report lists every step with its steady window and steady speed and rate.
 #pragma once
 
+#include <memory>
+
 #include <deque>
 
 #include "maneuvers/maneuver.h"
@@ -34,6 +36,8 @@ class StepGrid : public Maneuver {
   void Command(double t, std::span<const double> state, std::span<double> u) override;
   bool Done() const override { return step_ >= grid_.size(); }
   nlohmann::json Report() const override;
+
+  std::unique_ptr<Maneuver> Clone() const override { return std::make_unique<StepGrid>(*this); }
 
  private:
   struct Sample {

@@ -37,6 +37,7 @@ class UnderWind : public Maneuver {
     Set(t, state[act_.heading_state], state[act_.speed_state], state[act_.speed_state + 1], u);
   }
   bool Done() const override { return inner_->Done(); }
+  std::unique_ptr<Maneuver> Clone() const override { return std::make_unique<UnderWind>(*this); }
   nlohmann::json Report() const override {
     nlohmann::json r = inner_->Report();
     r["true_wind"] = {{"speed", wind_.speed},
@@ -52,7 +53,7 @@ class UnderWind : public Maneuver {
     u[speed_input_] = rel[0];
     u[direction_input_] = rel[1];
   }
-  std::unique_ptr<Maneuver> inner_;
+  InnerManeuver inner_;
   Actuation act_;
   TrueWind wind_;
   GustySpeed speed_;

@@ -5,6 +5,8 @@
 // speeds.
 #pragma once
 
+#include <memory>
+
 #include "maneuvers/maneuver.h"
 #include "maneuvers/slewed_yaw.h"
 
@@ -19,6 +21,8 @@ class Turning : public Maneuver {
   std::vector<double> InitialCommand() const override;
   void Command(double t, std::span<const double> state, std::span<double> u) override;
   nlohmann::json Report() const override;
+
+  std::unique_ptr<Maneuver> Clone() const override { return std::make_unique<Turning>(*this); }
 
  private:
   Actuation act_;

@@ -9,6 +9,8 @@
 // switch.
 #pragma once
 
+#include <memory>
+
 #include "maneuvers/maneuver.h"
 #include "maneuvers/slewed_yaw.h"
 
@@ -28,6 +30,8 @@ class ZigZag : public Maneuver {
   // Reverse about a base course `offset_rad` off the heading at the execute, as the record being
   // replayed did (metrics/zigzag_response.h), instead of about that heading.
   void SetBaseCourseOffset(double offset_rad) { base_offset_ = offset_rad; }
+
+  std::unique_ptr<Maneuver> Clone() const override { return std::make_unique<ZigZag>(*this); }
 
  private:
   Actuation act_;

@@ -117,6 +117,9 @@ class RecordedApproach : public Maneuver {
   }
   bool Done() const override { return inner_->Done(); }
   nlohmann::json Report() const override { return inner_->Report(); }
+  std::unique_ptr<Maneuver> Clone() const override {
+    return std::make_unique<RecordedApproach>(*this);
+  }
 
  private:
   template <typename U>
@@ -142,7 +145,7 @@ class RecordedApproach : public Maneuver {
       recorded_psi0_ = psi(k);
     air_ = AirTrack(recorded, (*air)[0], (*air)[1]);
   }
-  std::unique_ptr<Maneuver> inner_;
+  InnerManeuver inner_;
   Actuation act_;
   std::vector<double> held_;
   std::vector<InputTrack> followed_;  // per measured input, its record (one value each); else empty

@@ -27,10 +27,13 @@ class TypedVesselSimulator : public VesselSimulator {
                                     info_.actuation.heading_state};
     std::array<double, V::kInputs> limits = NoLimits();
     if (effects.saturation_fraction > 0.0) {
-      // The peak command comes from the same maneuver run without clipping.
+      // The peak command comes from the same maneuver run without clipping: a copy of it, so that
+      // the run itself starts where the maneuver does (a zig-zag at its approach, not reversed
+      // where the probe left it).
       EffectValues<double> free = effects;
       free.saturation_fraction = 0.0;
-      const ClosedLoopRun probe = RunClosedLoop<V>(maneuver, p, free, limits, kinematic, options);
+      const std::unique_ptr<Maneuver> fresh = maneuver.Clone();
+      const ClosedLoopRun probe = RunClosedLoop<V>(*fresh, p, free, limits, kinematic, options);
       limits = SaturationLimits<V::kInputs>(effects.saturation_fraction,
                                             ToArray<V::kInputs>(probe.commands.PeakAbs()),
                                             effects.saturation_inputs);

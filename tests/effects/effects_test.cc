@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "effects/effect.h"
 #include "effects/effect_values.h"
+#include "maneuvers/maneuver_factory.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -151,6 +152,34 @@ TEST_F(EffectsTest, SaturationClipsAtAFractionOfThePeak) {
   const Dataset clipped = Run("msd", in, {"saturation=0.5"});
   in.Set("f", in["f"].cwiseMax(-4.0).cwiseMin(4.0));  // peak 8 N
   EXPECT_LT(MaxDiff(clipped["x"], Run("msd", in)["x"]), 1e-12);
+}
+
+// A closed-loop maneuver under saturation: the probe that finds the peak command runs a copy, so
+// the run itself starts at the maneuver's beginning. The zig-zag rests at neutral through its
+// approach, turns to starboard first and, clipped at 80 % of the unclipped run's peak, reaches
+// its heading check later than the unclipped run; before, it started where the probe had left it, reversed, and turned to port first
+// (the realistic suite's zig-zags under saturation=0.8, refused by the replay's side check).
+TEST_F(EffectsTest, SaturationRunsAClosedLoopManeuverFromItsStart) {
+  const VesselSimulator& sim = FindVessel("odin3dof");
+  const VesselInfo& info = sim.Info();
+  auto run = [&](const std::vector<std::string>& effects) {
+    auto m = MakeManeuver("zigzag:20/20", info.actuation, 30, 1);
+    return sim.RunManeuver(*m, info.default_params,
+                           ValuesOf(ParseEffects(effects, 1), info.inputs, info.states),
+                           RunOptions{});
+  };
+  const SimulationResult free = run({}), clipped = run({"saturation=0.8"});
+  const Eigen::VectorXd &t = clipped.data.t(), &tn = clipped.data["tau_n"];
+  for (Eigen::Index k = 0; k < t.size() && t(k) < kLeadInS - 1e-9; ++k)
+    EXPECT_EQ(tn(k), 0.0) << "the command at rest through the approach, t = " << t(k);
+  const nlohmann::json report = clipped.maneuver.at("report");
+  ASSERT_FALSE(report.at("switch_times_s").empty());
+  // The hull gets 80 % of the yaw moment (the log holds the commands): it reaches B later.
+  EXPECT_GT(report.at("switch_times_s")[0].get<double>(),
+            free.maneuver.at("report").at("switch_times_s")[0].get<double>());
+  Eigen::Index k = 0;
+  while (t(k) < report.at("switch_times_s")[0].get<double>()) ++k;
+  EXPECT_GT(clipped.data["psi"](k), 0.0) << "turned to starboard first";
 }
 
 // A current given by speed alone takes its direction from the seed: reproducible per seed,
