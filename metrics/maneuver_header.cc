@@ -32,7 +32,7 @@ NamedManeuver ParseManeuverHeader(const std::string& text, const std::string& wh
   auto fail = [&](const std::string& why) -> NamedManeuver {
     throw InputError(where + ": the maneuver '" + text + "' " + why +
                      " (known: Z20°/10° starting to starboard, zigzag:20/10, T35° to port, "
-                     "turning:35; docs/data.md#the-records-maneuver)");
+                     "turning:35; docs/data.md#the-records-maneuver-frecordjson)");
   };
   NamedManeuver m;
   std::smatch g;

@@ -1,9 +1,9 @@
 // The maneuver a log's header names, as a tank writes it: HSVA's "Z20°/10° starting to
 // starboard" or "Z10°/1°", "zig-zag 20/10 to port", "T35° to port", "turning circle 35 deg", or
 // usvid's own spec ("zigzag:20/10", "turning:-35"; docs/data.md#maneuvers). An importer keeps the
-// header's text in the record (metadata "maneuver", docs/data.md#the-records-maneuver); the
-// reading of a test (metrics/maneuver_of_record.h) uses the header's angles and checks them, and
-// its side when it names one, against what the record shows.
+// header's text in the record (metadata "maneuver", docs/data.md#the-records-maneuver-frecordjson);
+// the reading of a test (metrics/maneuver_of_record.h) uses the header's angles and checks them,
+// and its side when it names one, against what the record shows.
 #pragma once
 
 #include <string>

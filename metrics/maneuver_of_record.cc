@@ -60,7 +60,7 @@ std::string KindOf(const Eigen::VectorXd& delta, const std::map<long, long>& row
 [[noreturn]] void Contradicts(const Dataset& data, const std::string& named,
                               const std::string& what) {
   throw InputError(data.SourcePrefix() + "the log names its maneuver '" + named + "', but " +
-                   what + " (docs/data.md#the-records-maneuver)");
+                   what + " (docs/data.md#the-records-maneuver-frecordjson)");
 }
 
 }  // namespace
