@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "harness/cross_validation.h"
 #include "harness/embedded_suites.h"
 #include "harness/suite_data.h"
 #include "metrics/maneuver_of_record.h"
@@ -139,6 +141,86 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
   return out;
 }
 
+// The index of the folder of `spec` that holds `file` (a path under `data_dir`), or -1.
+int FolderOf(const TrackSpec& spec, const fs::path& data_dir, const std::string& file) {
+  const fs::path parent = fs::path(file).parent_path().lexically_normal();
+  for (size_t i = 0; i < spec.folders.size(); ++i)
+    if ((data_dir / spec.folders[i].path).lexically_normal() == parent) return static_cast<int>(i);
+  return -1;
+}
+
+// The whole run's file (its folder and stem) that `file` is a cut copy of, by name
+// ("turn_cut_X" of "turn_X"); "" for a file that is no cut copy.
+std::string WholeRunOf(const std::string& file) {
+  const std::string stem = fs::path(file).stem().string();
+  for (const std::string mark : {"cut_", "_cut"})
+    if (const size_t at = stem.find(mark); at != std::string::npos)
+      return (fs::path(file).parent_path() / (stem.substr(0, at) + stem.substr(at + mark.size())))
+          .string();
+  return "";
+}
+
+// A track cross-validated over its runs (harness/cross_validation.h): each training file is an
+// entry of its own, named as ExpandCrossValidation names a file of an entry of several, read as
+// the test runs are (their end_at_stop) and given the maneuver its record holds when its folder
+// holds tests, as a further run is (ManeuverOfFurtherRun); a cut copy of a run the track holds
+// whole is left out. What was done goes to `notes`.
+void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const fs::path& data_dir,
+                            nlohmann::json& suite, std::vector<std::string>& notes) {
+  const nlohmann::json like = suite["data"]["test"].at(0);
+  nlohmann::json train = nlohmann::json::array();
+  for (const nlohmann::json& entry : suite["data"]["train"]) {
+    const std::vector<std::string> files = FilesOf(entry);
+    for (const std::string& f : files) {
+      nlohmann::json run = entry;
+      run["file"] = f;
+      if (files.size() > 1)
+        run["name"] = entry["name"].get<std::string>() + ": " + fs::path(f).stem().string();
+      if (like.contains("end_at_stop") && !run.contains("end_at_stop"))
+        run["end_at_stop"] = like["end_at_stop"];
+      const int folder = FolderOf(spec, data_dir, f);
+      if (!run.contains("maneuver") && folder >= 0)
+        if (const std::string m = ManeuverOfFurtherRun(run, spec.folders[folder]); !m.empty())
+          run["maneuver"] = m;
+      train.push_back(run);
+    }
+  }
+  suite["data"]["train"] = train;
+  std::map<std::string, std::string> whole;  // every run's file, without its extension -> name
+  for (const char* part : {"train", "test"})
+    for (const nlohmann::json& run : suite["data"][part]) {
+      const fs::path f = run["file"].get<std::string>();
+      whole[(f.parent_path() / f.stem()).string()] = run["name"].get<std::string>();
+    }
+  size_t runs = 0;
+  for (const char* part : {"train", "test"}) {
+    nlohmann::json kept = nlohmann::json::array();
+    for (const nlohmann::json& run : suite["data"][part]) {
+      const std::string of = WholeRunOf(run["file"].get<std::string>());
+      if (!of.empty() && whole.contains(of)) {
+        notes.push_back("'" + run["name"].get<std::string>() +
+                        "' left out of the cross-validation: a cut copy of '" + whole[of] +
+                        "', which the folder holds whole (trained on while that run is held out, "
+                        "it would score the run on itself)");
+        continue;
+      }
+      kept.push_back(run);
+    }
+    runs += kept.size();
+    suite["data"][part] = kept;
+  }
+  suite["cv"] = cv;
+  notes.push_back("leave-one-run-out cross-validation over " + std::to_string(runs) +
+                  " runs: each left out in turn, every method fitted on the other " +
+                  std::to_string(runs - 1) +
+                  " jointly and scored on it (the training runs too re-run closed-loop as their "
+                  "records say" +
+                  (like.contains("end_at_stop")
+                       ? ", and ended where " + like["end_at_stop"].get<std::string>() +
+                             " stopped, as the test runs are)"
+                       : std::string(")")));
+}
+
 }  // namespace
 
 const std::vector<std::string>& EmbeddedSuiteNames() {
@@ -151,8 +233,8 @@ bool IsSuiteName(const std::string& suite) {
   return suite.find('/') == std::string::npos && suite.find('.') == std::string::npos;
 }
 
-std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir,
-                                        const std::string& vessel_dir) {
+std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::string& vessel_dir,
+                                        const std::string& cv) {
   std::vector<SuiteTrack> tracks;
   std::vector<std::string> missing;
   std::vector<nlohmann::json> jsons;
@@ -181,6 +263,7 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir,
                             " of the data folder scored as held-out tests (free runs; the "
                             "zig-zags and turns also re-run closed-loop, their angle and side "
                             "read from the record)");
+    if (!cv.empty()) PrepareCrossValidation(spec, cv, data_dir, suite, track.notes);
     jsons.push_back(std::move(suite));
     tracks.push_back(std::move(track));
   }

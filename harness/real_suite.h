@@ -6,6 +6,11 @@
 //   (harness/suites/real-esso-osaka.json, docs/vessels/files/esso-osaka.yaml, both embedded).
 // Each track trains on fixed shared runs and tests on the other shared runs and on every further
 // run of its folders: a folder that also holds the papers' test runs scores the models on them.
+// Cross-validated (usvid compare --suite real --cv runs; harness/cross_validation.h), every one
+// of those runs is left out in turn, each read as the track's test runs are (ended where the
+// propeller stopped), a zig-zag or turn among the training runs too re-run closed-loop as its
+// record says; a cut copy of a run the folder also holds whole is left out (trained on while the
+// whole run is held out, it would score the run on itself), and a note says so.
 #pragma once
 
 #include <string>
@@ -30,8 +35,11 @@ const std::vector<std::string>& EmbeddedSuiteNames();
 bool IsSuiteName(const std::string& suite);
 
 // The real suite's tracks on the files of `data_dir`. The embedded vessel files are written to
-// `vessel_dir` (created), and the tracks name them there. Throws InputError, one line naming the
-// folder and the files it lacks, when a track's training or test files are not all there.
-std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::string& vessel_dir);
+// `vessel_dir` (created), and the tracks name them there. `cv`: "" or the cross-validation's kind
+// ("runs"). Throws InputError, one line naming the folder and the files it lacks, when a track's
+// training or test files are not all there (or, cross-validated, naming the track and what is
+// wrong with its runs).
+std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::string& vessel_dir,
+                                        const std::string& cv = "");
 
 }  // namespace usvid

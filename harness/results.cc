@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "core/parse_number.h"
+#include "harness/cross_validation.h"
+#include "harness/cross_validation_table.h"
 #include "harness/verdict.h"
 #include "metrics/rank_tests.h"
 
@@ -90,7 +92,7 @@ std::string CsvField(const std::string& text) {
 void HeadlineTables(const Suite& suite, const std::vector<ResultRow>& rows,
                     const std::string& vessel, const std::set<std::string>& methods,
                     std::ostringstream& md) {
-  for (const std::string& train : suite.train_maneuvers) {
+  for (const std::string& train : TrainingLabels(suite)) {
     bool header = false;
     for (const std::string& m : methods) {
       std::vector<double> fit, h5, h30, vpt, r2, overshoot;
@@ -241,7 +243,7 @@ void GeneralisationTable(const Suite& suite, const std::vector<ResultRow>& rows,
   md << '\n';
   std::string best;
   double best_other = -INFINITY;
-  for (const std::string& train : suite.train_maneuvers) {
+  for (const std::string& train : TrainingLabels(suite)) {
     bool any = false;
     for (const std::string& t : suite.test_maneuvers) any = any || gm.count({train, t});
     if (!any) continue;
@@ -318,10 +320,12 @@ void FailedList(const std::vector<ResultRow>& rows, std::ostringstream& md) {
 nlohmann::json ResultsJson(const Suite& suite, const std::vector<ResultRow>& rows, double seconds) {
   nlohmann::json r = nlohmann::json::array();
   for (const ResultRow& row : rows) r.push_back(row.ToJson());
-  return {{"suite", SuiteToJson(suite)},
-          {"seconds", seconds},
-          {"verdict", VerdictJson(Verdict(suite, rows))},
-          {"rows", r}};
+  nlohmann::json out = {{"suite", SuiteToJson(suite)},
+                        {"seconds", seconds},
+                        {"verdict", VerdictJson(Verdict(suite, rows))},
+                        {"rows", r}};
+  if (suite.cv.On()) out["cross_validation"] = CrossValidationJson(suite, rows);
+  return out;
 }
 
 std::string ResultsCsv(const std::vector<ResultRow>& rows) {
@@ -371,8 +375,9 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
         "Fits are the free-run fit % averaged over the identified states; tables give the "
         "median [interquartile range] of the raw values (results.json has every row).\n\n";
   md << "## Verdict\n\nPer vessel, training maneuver and metric: each method's cell score ("
-     << (suite.Measured() ? "a held-out run and seed"
-                          : "a noise level and seed; its test maneuvers averaged")
+     << (suite.cv.On()      ? "a held-out run, scored by the fit that left it out"
+         : suite.Measured() ? "a held-out run and seed"
+                            : "a noise level and seed; its test maneuvers averaged")
      << "), the methods ranked by a Friedman "
         "test over the paired cells, each against the best and the next by Wilcoxon "
         "signed-rank tests, Holm-adjusted, at "
@@ -381,6 +386,7 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
                           : "(the true simulator) is the ceiling")
      << ".\n"
      << VerdictMarkdown(Verdict(suite, rows)) << '\n';
+  if (suite.cv.On()) md << CrossValidationMarkdown(suite, rows) << '\n';
   std::set<std::string> methods, vessels;
   for (const ResultRow& r : rows) {
     methods.insert(r.method);

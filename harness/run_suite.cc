@@ -11,8 +11,10 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "core/records.h"
 #include "effects/effect.h"
 #include "effects/effect_values.h"
+#include "harness/cross_validation.h"
 #include "harness/suite_methods.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/channel_fit.h"
@@ -233,7 +235,17 @@ class SimulatedRecords {
   std::size_t bytes_ = 0;
 };
 
-// One cell: the job's fit, scored on every test maneuver. Never throws: a failure is a row.
+// A fold's training data: every run but the one it leaves out, joined (core/records.h) as a
+// training entry of several files is.
+Dataset FoldTrainingData(const Suite& suite, const std::string& train,
+                         const std::map<std::string, Dataset>& runs) {
+  std::vector<Dataset> records;
+  for (const std::string& run : FoldTrainingRuns(suite, train)) records.push_back(runs.at(run));
+  return JoinRecords(std::move(records));
+}
+
+// One cell: the job's fit, scored on every test maneuver (a fold's: on the run it leaves out).
+// Never throws: a failure is a row.
 std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                                const std::map<std::string, Dataset>& train_sets,
                                const std::map<std::string, Dataset>& test_sets,
@@ -241,7 +253,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
   std::vector<ResultRow> rows;
   ResultRow base;
   base.vessel = job.vessel.empty() ? suite.name : job.vessel;  // vessel-less data: the suite
-  base.train_maneuver = job.train_maneuver;
+  base.train_maneuver = TrainingLabel(suite, job.train_maneuver);
   base.method = job.method.Label();
   base.noise = job.noise;
   base.seed = job.seed;
@@ -250,10 +262,13 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
   std::string failure;
   const auto start = std::chrono::steady_clock::now();
   try {
-    const std::shared_ptr<const Dataset> train =
-        suite.Measured() ? nullptr
-                         : simulated.Get(job.vessel, job.train_maneuver, suite.train_seconds,
-                                         job.noise, job.seed);
+    std::shared_ptr<const Dataset> train;
+    if (suite.cv.On())
+      train =
+          std::make_shared<const Dataset>(FoldTrainingData(suite, job.train_maneuver, test_sets));
+    else if (!suite.Measured())
+      train =
+          simulated.Get(job.vessel, job.train_maneuver, suite.train_seconds, job.noise, job.seed);
     const Dataset& train_data = train ? *train : train_sets.at(job.train_maneuver);
     model = Identify(FindSuiteMethod(job.method.method), train_data, RequestFor(suite, job));
     CalibrateRequested(model, train_data, job.vessel);
@@ -262,7 +277,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
   }
   base.fit_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const std::string& test : suite.test_maneuvers) {
+  for (const std::string& test : ScoredTests(suite, job.train_maneuver)) {
     ResultRow row = base;
     row.test_maneuver = test;
     row.model = model;
@@ -328,9 +343,11 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
     const Suite& suite, const std::vector<FitJob>& jobs, int threads,
     const std::function<std::optional<size_t>()>& next,
     const std::function<void(size_t, const std::vector<ResultRow>&)>& done) {
-  // Measured data are read once, before the parallel part (a bad file stops the run: exit 2).
+  // Measured data are read once, before the parallel part (a bad file stops the run: exit 2). A
+  // cross-validated suite's runs are its test data; each fold joins the others as it starts.
   std::map<std::string, Dataset> train_sets, test_sets;
-  for (const SuiteData& d : suite.train_data) train_sets[d.name] = LoadSuiteData(d);
+  if (!suite.cv.On())
+    for (const SuiteData& d : suite.train_data) train_sets[d.name] = LoadSuiteData(d);
   for (const SuiteData& d : suite.test_data) test_sets[d.name] = LoadSuiteData(d);
   std::map<size_t, std::vector<ResultRow>> cells;
   SimulatedRecords simulated(suite);

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "effects/effect.h"
 #include "effects/effect_values.h"
+#include "harness/cross_validation.h"
 #include "harness/embedded_suites.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/registry.h"
@@ -118,10 +119,11 @@ std::vector<SuiteData> DataList(const nlohmann::json& v, const std::string& file
   return out;
 }
 
-// A suite on measured data: its training and test files, and at most one vessel.
-void ParseMeasuredData(const nlohmann::json& v, const std::string& file, Suite& s) {
+// A suite on measured data: its training and test files, and at most one vessel. A
+// cross-validated suite (`cv`) may leave out "test": every run is held out in turn.
+void ParseMeasuredData(const nlohmann::json& v, const std::string& file, bool cv, Suite& s) {
   const nlohmann::json& data = v["data"];
-  if (!data.is_object() || !data.contains("train") || !data.contains("test"))
+  if (!data.is_object() || !data.contains("train") || (!cv && !data.contains("test")))
     throw InputError(file + ": data: expected {\"train\": [...], \"test\": [...]}");
   for (const auto& [key, _] : data.items())
     if (key != "train" && key != "test")
@@ -130,7 +132,7 @@ void ParseMeasuredData(const nlohmann::json& v, const std::string& file, Suite& 
     if (v.contains(key))
       throw InputError(file + ": '" + key + "' does not apply to a suite on measured data");
   s.train_data = DataList(data["train"], file, "data: train");
-  s.test_data = DataList(data["test"], file, "data: test");
+  if (data.contains("test")) s.test_data = DataList(data["test"], file, "data: test");
   for (const SuiteData& d : s.test_data)
     if (d.files.size() > 1)  // a test is one free run, which no gap may cut
       throw InputError(file + ": data: test: '" + d.name +
@@ -283,7 +285,7 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
   static const std::set<std::string> kFields = {
       "name",  "vessels",       "train_maneuvers", "test_maneuvers", "methods", "noise",
       "seeds", "train_seconds", "test_seconds",    "data",           "effects", "sensors",
-      "gusts", "waves",         "dropouts",        "logged"};
+      "gusts", "waves",         "dropouts",        "logged",         "cv"};
   for (const auto& [key, _] : v.items())
     if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
   const bool measured = v.contains("data");
@@ -296,8 +298,18 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     if (!v["name"].is_string()) throw InputError(file + ": 'name' must be a string");
     s.name = v["name"].get<std::string>();
   }
+  std::string cv;
+  if (v.contains("cv")) {
+    if (!v["cv"].is_string())
+      throw InputError(file + ": 'cv' must be a string (\"" + kCrossValidationRuns + "\")");
+    cv = v["cv"].get<std::string>();
+    if (!measured)
+      throw InputError(file + ": cv: a simulated suite has no runs to leave out (cv needs a " +
+                       "suite on measured data, \"data\": {...})");
+  }
   if (measured) {
-    ParseMeasuredData(v, file, s);
+    ParseMeasuredData(v, file, !cv.empty(), s);
+    if (!cv.empty()) ExpandCrossValidation(s, cv, file);
   } else {
     s.vessels = ListOf<std::string>(v["vessels"], file + ": vessels");
     s.train_maneuvers = ListOf<std::string>(v["train_maneuvers"], file + ": train_maneuvers");
@@ -367,12 +379,18 @@ nlohmann::json SuiteToJson(const Suite& s) {
     methods.push_back(j);
   }
   if (s.Measured()) {
+    // A cross-validated suite as it was given, with its "cv": parsed again, it expands alike.
+    const std::vector<SuiteData>& given_train = s.cv.On() ? s.cv.given_train : s.train_data;
+    const std::vector<SuiteData>& given_test = s.cv.On() ? s.cv.given_test : s.test_data;
     nlohmann::json train = nlohmann::json::array(), test = nlohmann::json::array();
-    for (const SuiteData& d : s.train_data) train.push_back(SuiteDataToJson(d));
-    for (const SuiteData& d : s.test_data) test.push_back(SuiteDataToJson(d));
-    return {
-        {"name", s.name},     {"vessels", s.vessels}, {"data", {{"train", train}, {"test", test}}},
-        {"methods", methods}, {"noise", s.noise},     {"seeds", s.seeds}};
+    for (const SuiteData& d : given_train) train.push_back(SuiteDataToJson(d));
+    for (const SuiteData& d : given_test) test.push_back(SuiteDataToJson(d));
+    nlohmann::json data = {{"train", train}};
+    if (!given_test.empty()) data["test"] = test;
+    nlohmann::json out = {{"name", s.name},     {"vessels", s.vessels}, {"data", data},
+                          {"methods", methods}, {"noise", s.noise},     {"seeds", s.seeds}};
+    if (s.cv.On()) out["cv"] = s.cv.kind;
+    return out;
   }
   nlohmann::json out = {{"name", s.name},
                         {"vessels", s.vessels},

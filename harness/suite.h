@@ -14,6 +14,9 @@
 //    "file": ..., "format": "marin-dat"}], "test": [...]}, "methods": [...]}
 // with at most one vessel (whose channels the files hold; none when the methods name their
 // "states" and "inputs"), maneuver names taken from the data names, no added noise.
+// "cv": "runs" (measured data only; usvid compare --cv runs) cross-validates over the runs
+// instead: each run left out in turn, every method fitted on the others jointly and scored on it
+// (harness/cross_validation.h); "test" may then be left out.
 // A vessel is a compiled-in name or a vessel file (docs/model.md#vessel-files), a relative path
 // taken from the suite file's folder, as the data files are.
 // Methods: every method of the suite's registry (harness/suite_methods.h): the registered
@@ -24,6 +27,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -65,6 +69,15 @@ struct SuiteConditions {
   }
 };
 
+// Leave-one-run-out cross-validation of a suite on measured data (harness/cross_validation.h).
+struct SuiteCrossValidation {
+  std::string kind;                                // "" (none) or "runs"
+  std::vector<SuiteData> given_train, given_test;  // the data entries as the suite gave them
+  // Each fold's training name ("all but R") -> the run R it leaves out and is scored on.
+  std::map<std::string, std::string> held_out;
+  bool On() const { return !kind.empty(); }
+};
+
 struct Suite {
   std::string name = "suite";
   std::vector<std::string> vessels;
@@ -75,8 +88,10 @@ struct Suite {
   double train_seconds = 300.0;
   double test_seconds = 180.0;
   SuiteConditions conditions;  // simulated suites only
-  // Measured data (train_maneuvers and test_maneuvers then hold their names).
+  // Measured data (train_maneuvers and test_maneuvers then hold their names). Cross-validated
+  // (cv): test_data holds every run, one file each, and train_maneuvers the folds' names.
   std::vector<SuiteData> train_data, test_data;
+  SuiteCrossValidation cv;
   bool Measured() const { return !train_data.empty(); }
 };
 

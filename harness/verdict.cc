@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "harness/cross_validation.h"
 #include "methods/nominal/nominal.h"
 #include "metrics/rank_tests.h"
 
@@ -69,7 +70,8 @@ std::map<std::string, MethodCells> CellScores(const std::vector<const ResultRow*
   const double worst = metric.higher_is_better ? -INFINITY : INFINITY;
   std::map<std::string, std::map<CellKey, std::vector<double>>> values;
   std::map<std::string, MethodCells> out;
-  std::set<std::tuple<std::string, double, uint64_t>> failed;  // failed fits, counted once
+  // Failed cells, counted once: a fit's (its test maneuvers share it), or on measured data a run's.
+  std::set<std::tuple<std::string, double, uint64_t, std::string>> failed;
   // The test maneuvers the metric applies to, shown by the rows that were scored on them.
   std::set<std::string> applies;
   for (const ResultRow* r : rows)
@@ -78,7 +80,8 @@ std::map<std::string, MethodCells> CellScores(const std::vector<const ResultRow*
     const CellKey cell{r->noise, r->seed, per_run ? r->test_maneuver : std::string()};
     if (r->status != "ok") {
       if (!applies.contains(r->test_maneuver)) continue;
-      if (failed.insert({r->method, r->noise, r->seed}).second) ++out[r->method].failed;
+      if (failed.insert({r->method, r->noise, r->seed, std::get<2>(cell)}).second)
+        ++out[r->method].failed;
       values[r->method][cell].push_back(worst);
       continue;
     }
@@ -200,7 +203,7 @@ std::vector<VerdictEntry> Verdict(const Suite& suite, const std::vector<ResultRo
   std::set<std::string> vessels;
   for (const ResultRow& r : rows) vessels.insert(r.vessel);
   for (const std::string& vessel : vessels)
-    for (const std::string& train : suite.train_maneuvers) {
+    for (const std::string& train : TrainingLabels(suite)) {
       std::vector<const ResultRow*> cell_rows;
       for (const ResultRow& r : rows)
         if (r.vessel == vessel && r.train_maneuver == train) cell_rows.push_back(&r);

@@ -5,7 +5,9 @@
 // test maneuvers (which share the fitted model, so they are not independent). On measured data
 // a cell is one held-out run: the runs are separate records of the vessel, a suite on logs has
 // no noise levels and usually one seed, and the question is which model predicts a new run
-// better, so the runs are the blocks. The methods' cells are paired (same training data), so the
+// better, so the runs are the blocks; a cross-validated suite's rows share one training label
+// (harness/cross_validation.h), so its blocks are all its runs, each scored by the fits that
+// left it out. The methods' cells are paired (same training data), so the
 // test is rank-based and paired: Friedman over the cells (metrics/rank_tests.h), the methods
 // ordered by mean rank, and each compared with the best and with the one ranked above it by a
 // Wilcoxon signed-rank test, Holm-adjusted over those comparisons. Demsar (2006, JMLR 7) recommends
@@ -13,7 +15,8 @@
 // JMLR 17) the pairwise Wilcoxon tests with Holm's correction as the post-hoc test, rather than
 // tests on mean ranks. Two methods are tied when the Friedman test or the adjusted pairwise test
 // does not reach kVerdictAlpha. Ranks need no clamping: a diverged run's fit of -1e5 % is simply
-// the worst in its cell. A fit that failed counts as the worst score in its cell; a method that
+// the worst in its cell. A fit that failed counts as the worst score in its cell (a failed cell:
+// the fit's, or on measured data the run's); a method that
 // failed in every cell is not ranked but listed. The nominal model (the true simulator) is the
 // ceiling, not a contender.
 //

@@ -1,11 +1,13 @@
-// usvid compare [--suite S.json | --suite NAME | --quick] [--data-dir DIR] [--threads N]
-//               [--baseline PREV/results.json] [--fresh] --out DIR
+// usvid compare [--suite S.json | --suite NAME | --quick] [--data-dir DIR] [--cv runs]
+//               [--threads N] [--baseline PREV/results.json] [--fresh] --out DIR
 // The whole benchmark: every method fitted on every training maneuver and scored in free run on
 // held-out test maneuvers; writes DIR/results.json, DIR/results.csv and DIR/summary.md. Each
 // finished cell is kept in DIR/cells, so the same command resumes a killed run; under
 // `mpirun -n N` (built with -DUSVID_WITH_MPI=ON) the cells are spread over the ranks.
 // `--suite real` runs one such suite per vessel of the measured data in --data-dir
-// (harness/real_suite.h), each into DIR/<track>, and DIR/summary.md gathers them.
+// (harness/real_suite.h), each into DIR/<track>, and DIR/summary.md gathers them. `--cv runs`
+// cross-validates a suite on measured data over its runs, leaving each out in turn
+// (harness/cross_validation.h).
 
 #include <chrono>
 #include <filesystem>
@@ -17,6 +19,7 @@
 #include "core/error.h"
 #include "core/executable_identity.h"
 #include "core/json_file.h"
+#include "harness/cross_validation.h"
 #include "harness/distributed_run.h"
 #include "harness/ranks.h"
 #include "harness/real_suite.h"
@@ -32,6 +35,7 @@ struct CompareOptions {
   std::string suite;
   std::string baseline;
   std::string data_dir = "../shared/data";
+  std::string cv;  // "" or kCrossValidationRuns
   bool quick = false;
   bool fresh = false;
   int threads = 0;
@@ -51,7 +55,10 @@ SuiteOutcome RunSuiteInto(const Suite& suite, const std::string& out, const Comp
   const auto start = std::chrono::steady_clock::now();
   if (ranks::Rank() == 0)
     std::cerr << "usvid compare: suite '" << suite.name << "', " << FitJobs(suite).size()
-              << " fits x " << suite.test_maneuvers.size() << " test maneuvers"
+              << " fits x "
+              << (suite.cv.On() ? "the run each leaves out, of " +
+                                      std::to_string(suite.test_maneuvers.size()) + " runs"
+                                : std::to_string(suite.test_maneuvers.size()) + " test maneuvers")
               << (ranks::Size() > 1 ? " on " + std::to_string(ranks::Size()) + " ranks" : "")
               << '\n';
   const DistributedRun run = RunSuiteDistributed(
@@ -108,7 +115,7 @@ void RunRealSuite(const CompareOptions& o) {
               << " (give it with --data-dir; docs/compare.md#the-real-suite)\n";
     return;
   }
-  const std::vector<SuiteTrack> tracks = RealSuiteTracks(o.data_dir, o.out + "/vessels");
+  const std::vector<SuiteTrack> tracks = RealSuiteTracks(o.data_dir, o.out + "/vessels", o.cv);
   std::string summary = "# usvid compare: real\n\nMeasured data from " + o.data_dir +
                         ", one track per vessel, each with its own verdict and its own folder "
                         "(results.json, report.html).\n\n";
@@ -125,7 +132,17 @@ void RunRealSuite(const CompareOptions& o) {
 
 void RunCompare(const CompareOptions& o) {
   if (!o.suite.empty() && o.quick) throw InputError("compare: give --suite or --quick, not both");
+  if (!o.cv.empty() && o.cv != kCrossValidationRuns)
+    throw InputError("compare: --cv '" + o.cv + "' is unknown (known: " + kCrossValidationRuns +
+                     ", leave one run out)");
   if (o.suite == "real") return RunRealSuite(o);
+  const bool simulated = o.suite.empty() || o.suite == "default" || o.suite == "quick" ||
+                         o.suite == "realistic" || o.suite == "realistic-measured";
+  if (!o.cv.empty() && simulated)
+    throw InputError("compare: --cv " + o.cv + ": suite '" +
+                     (o.suite.empty() ? std::string(o.quick ? "quick" : "default") : o.suite) +
+                     "' is simulated and has no runs to leave out (a suite on measured data has; "
+                     "docs/compare.md#cross-validation-over-runs)");
   Suite suite;
   if (o.suite.empty() || o.suite == "default" || o.suite == "quick") {
     suite = DefaultSuite(o.quick || o.suite == "quick");
@@ -137,7 +154,9 @@ void RunCompare(const CompareOptions& o) {
     throw InputError("compare: --suite '" + o.suite + "' is no embedded suite (" + names +
                      ") and no suite file (a path with .json)");
   } else {
-    suite = ParseSuite(ReadJsonFile(o.suite, JsonComments::kAllowed), o.suite);
+    nlohmann::json json = ReadJsonFile(o.suite, JsonComments::kAllowed);
+    if (!o.cv.empty() && json.is_object()) json["cv"] = o.cv;
+    suite = ParseSuite(json, o.suite);
   }
   // The baseline is read before hours of fitting, not after.
   const nlohmann::json baseline = o.baseline.empty() ? nlohmann::json() : ReadJsonFile(o.baseline);
@@ -163,6 +182,11 @@ void AddCompareCommand(CLI::App& app) {
                   "The measured data of --suite real (default ../shared/data); absent, the suite "
                   "is skipped");
   cmd->add_flag("--quick", o->quick, "The default suite, smaller: seconds, not minutes");
+  cmd->add_option("--cv", o->cv,
+                  "runs: leave-one-run-out cross-validation of a suite on measured data (--suite "
+                  "real, or a suite file with \"data\"): each run left out in turn, every method "
+                  "fitted on the others and scored on it; summary.md and results.json gain the "
+                  "means over the runs with bootstrap intervals");
   cmd->add_option("--baseline", o->baseline,
                   "A previous results.json: per vessel and method, the cells paired with the "
                   "baseline's and tested (Wilcoxon signed-rank, Holm); exit 3 when any group "

@@ -120,5 +120,48 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
     for (const std::string& f : d.files) EXPECT_TRUE(fs::exists(f)) << f;
 }
 
+// Cross-validated (--cv runs), a track's runs are its training files and its test runs, the
+// further runs among them. Each is read as the test runs are (Esso Osaka's ended where the
+// propeller stopped), a zig-zag or turn among the training files re-run closed-loop as its record
+// says, and the cut copy of a run the folder holds whole is no run of its own.
+TEST(RealSuiteTest, CrossValidatedTracksLeaveOutEveryRunOfTheFolder) {
+  if (!fs::exists(kShared / "esso-osaka") || !fs::exists(kShared / "kvlcc2-marin"))
+    GTEST_SKIP() << "shared data absent: " << kShared;
+  const fs::path dir = TempDir("cv");
+  const std::vector<SuiteTrack> plain = RealSuiteTracks(kShared.string(), (dir / "p").string());
+  const std::vector<SuiteTrack> tracks =
+      RealSuiteTracks(kShared.string(), (dir / "cv").string(), "runs");
+  ASSERT_EQ(tracks.size(), 2u);
+  const Suite& kvlcc2 = tracks[0].suite;
+  EXPECT_TRUE(kvlcc2.cv.On());
+  EXPECT_THAT(TestNames(kvlcc2),
+              ::testing::ElementsAre("zigzag 20/-20", "zigzag -20/20", "turning 35"));
+  // MARIN's zz_20 reads as zigzag:-20/20 (maneuver_of_record_test).
+  EXPECT_EQ(kvlcc2.test_data[0].maneuver, "zigzag:-20/20");
+  EXPECT_EQ(kvlcc2.train_maneuvers.size(), 3u);
+
+  const Suite& esso = tracks[1].suite;
+  const std::vector<std::string> names = TestNames(esso);
+  // Every run of the plain track, its eight training files split, but the cut copy of 15:58.
+  EXPECT_EQ(names.size(), plain[1].suite.test_maneuvers.size() + 8 - 1);
+  EXPECT_THAT(names, ::testing::Contains("8 runs: zigzag_31-Jul-2020_13_14_21"));
+  EXPECT_THAT(names, ::testing::Contains("held-out turn_14-Sep-2020_15_58_08"));
+  EXPECT_THAT(names, ::testing::Not(::testing::Contains("held-out turn_cut_14-Sep-2020_15_58_08")));
+  EXPECT_THAT(names, ::testing::Contains("held-out turn_cut_14-Sep-2020_16_09_02"));  // alone
+  for (const SuiteData& d : esso.test_data) {
+    EXPECT_EQ(d.end_at_stop, "n") << d.name;
+    ASSERT_EQ(d.files.size(), 1u) << d.name;
+    if (d.name.starts_with("8 runs: zigzag_") || d.name.starts_with("8 runs: turn_")) {
+      EXPECT_THAT(d.maneuver, ::testing::MatchesRegex("(zigzag|turning):.*")) << d.name;
+    }
+    if (d.name.starts_with("8 runs: random_")) {
+      EXPECT_EQ(d.maneuver, "") << d.name;
+    }
+  }
+  const std::string notes = ::testing::PrintToString(tracks[1].notes);
+  EXPECT_THAT(notes, HasSubstr("a cut copy of 'held-out turn_14-Sep-2020_15_58_08'"));
+  EXPECT_THAT(notes, HasSubstr("cross-validation over " + std::to_string(names.size()) + " runs"));
+}
+
 }  // namespace
 }  // namespace usvid
