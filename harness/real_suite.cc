@@ -36,10 +36,14 @@ struct TrackSpec {
   const char* json;
   std::vector<RunFolder> folders;
   std::vector<RunFormat> formats;
+  // Trained in one tank and scored in another: not cross-validated over its runs (its folds would
+  // mix the tanks), and skipped, with a note, when either tank's folder is absent.
+  bool cross_facility = false;
 };
 
 // KVLCC2's folder also takes data files of usvid's own format (docs/data.md): another tank's
-// tests, imported (and Froude-scaled) with usvid import.
+// tests, imported (and Froude-scaled) with usvid import. HSVA's folder is a track of its own, and
+// the two tanks each train the model the other scores (the cross-facility tracks).
 const std::vector<TrackSpec>& Tracks() {
   static const std::vector<TrackSpec> tracks = {
       {"kvlcc2", kRealKvlcc2SuiteJson, {{"kvlcc2-marin", "any"}}, {{".dat", ""}, {".csv", "csv"}}},
@@ -48,7 +52,18 @@ const std::vector<TrackSpec>& Tracks() {
        {{"esso-osaka/zigzag", "zigzag"},
         {"esso-osaka/turning", "turning"},
         {"esso-osaka/random", ""}},
-       {{".csv", ""}}}};
+       {{".csv", ""}}},
+      {"kvlcc2-hsva", kRealKvlcc2HsvaSuiteJson, {{"kvlcc2-hsva", "any"}}, {{".dat", ""}}},
+      {"kvlcc2-hsva-to-marin",
+       kRealKvlcc2HsvaToMarinSuiteJson,
+       {{"kvlcc2-marin", "any"}},
+       {{".dat", ""}},
+       true},
+      {"kvlcc2-marin-to-hsva",
+       kRealKvlcc2MarinToHsvaSuiteJson,
+       {{"kvlcc2-hsva", "any"}},
+       {{".dat", ""}},
+       true}};
   return tracks;
 }
 
@@ -95,11 +110,20 @@ void Resolve(nlohmann::json& suite, const fs::path& data_dir, std::set<std::stri
 
 // The maneuver a further run of `folder` holds, read from the record (metrics/
 // maneuver_of_record.h) when the folder holds tests; "" for a folder of free runs, a record
-// without such a test, or one that cannot be read (its row then says why).
+// without such a test, or one that cannot be read (its row then says why). A log that names its
+// maneuver and is contradicted by its record, or names one usvid does not know, stops the suite
+// (InputError naming the file): a test misread is worse than one left out.
 std::string ManeuverOfFurtherRun(const nlohmann::json& entry, const RunFolder& folder) {
   if (std::string(folder.tests).empty()) return "";
+  Dataset data;
   try {
-    return ManeuverOfRecord(LoadSuiteData(ParseSuiteData(entry, "", "further run")), folder.tests);
+    data = LoadSuiteData(ParseSuiteData(entry, "", "further run"));
+  } catch (const InputError&) {
+    return "";
+  }
+  if (data.metadata().contains("maneuver")) return ManeuverOfRecord(data, folder.tests);
+  try {
+    return ManeuverOfRecord(data, folder.tests);
   } catch (const InputError&) {
     return "";
   }
@@ -133,6 +157,7 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
         {"file", (data_dir / f).lexically_normal().string()}};
     if (like.contains("end_at_stop")) entry["end_at_stop"] = like["end_at_stop"];
     if (like.contains("map") && format.empty()) entry["map"] = like["map"];
+    if (like.contains("scale") && format.empty()) entry["scale"] = like["scale"];
     if (const std::string maneuver = ManeuverOfFurtherRun(entry, spec.folders[folder]);
         !maneuver.empty())
       entry["maneuver"] = maneuver;
@@ -210,6 +235,18 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
     suite["data"][part] = kept;
   }
   suite["cv"] = cv;
+  // diagnose and hybrid search and refit the vessel for each candidate: 200-500 s a fit on the
+  // tracks' joined runs, so hours over the folds (docs/compare.md#cross-validation-over-runs).
+  nlohmann::json methods = nlohmann::json::array();
+  for (const nlohmann::json& m : suite["methods"]) {
+    const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
+    if (name != "diagnose" && name != "hybrid") methods.push_back(m);
+  }
+  if (methods.size() < suite["methods"].size())
+    notes.push_back(
+        "diagnose and hybrid left out of the cross-validation: each fits for 200-500 s on the "
+        "joined runs, once per fold (they run in the suite without --cv)");
+  suite["methods"] = methods;
   notes.push_back("leave-one-run-out cross-validation over " + std::to_string(runs) +
                   " runs: each left out in turn, every method fitted on the other " +
                   std::to_string(runs - 1) +
@@ -238,12 +275,21 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
   std::vector<SuiteTrack> tracks;
   std::vector<std::string> missing;
   std::vector<nlohmann::json> jsons;
+  std::vector<std::string> skipped;
   for (const TrackSpec& spec : Tracks()) {
+    if (spec.cross_facility && !cv.empty()) continue;  // its folds would mix the tanks
     nlohmann::json suite =
         nlohmann::json::parse(spec.json, nullptr, true, /*ignore_comments=*/true);
     std::set<std::string> listed;
     std::vector<std::string> lacks;
     Resolve(suite, data_dir, listed, lacks);
+    // HSVA's tank is newer in the shared data than MARIN's and Esso Osaka's: a folder without it
+    // runs the other tracks.
+    const bool hsva = std::string(spec.name).find("hsva") != std::string::npos;
+    if (hsva && !lacks.empty() && !fs::is_directory(fs::path(data_dir) / "kvlcc2-hsva")) {
+      skipped.push_back(spec.name);
+      continue;
+    }
     if (lacks.size() == listed.size())  // the whole vessel is absent: name its folder
       missing.push_back(fs::path(spec.folders[0].path).begin()->string() + "/ (all " +
                         std::to_string(listed.size()) + " of the track's runs)");
@@ -287,6 +333,12 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
         }
     }
     tracks[i].suite = ParseSuite(suite, "embedded suite real, track " + tracks[i].name);
+  }
+  if (!skipped.empty() && !tracks.empty()) {
+    std::string names;
+    for (const std::string& n : skipped) names += (names.empty() ? "" : ", ") + n;
+    tracks.front().notes.push_back("tracks " + names + " skipped: the data folder " + data_dir +
+                                   " has no kvlcc2-hsva/");
   }
   return tracks;
 }

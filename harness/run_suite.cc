@@ -22,6 +22,7 @@
 #include "methods/refit/refit.h"
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
+#include "metrics/maneuver_of_record.h"
 #include "metrics/structure.h"
 #include "metrics/yaw_bias_calibration.h"
 #include "preprocessing/derivative.h"
@@ -244,6 +245,16 @@ Dataset FoldTrainingData(const Suite& suite, const std::string& train,
   return JoinRecords(std::move(records));
 }
 
+// A test record whose log names its maneuver (metrics/maneuver_header.h) is read against that
+// name before any fit: a name the record contradicts, or one usvid does not know, stops the run
+// (InputError naming the file: exit 2), rather than failing every row that replays it.
+void CheckNamedManeuver(const Dataset& record, const std::string& vessel) {
+  if (!record.metadata().contains("maneuver") || vessel.empty()) return;
+  const Actuation& act = FindVessel(vessel).Info().actuation;
+  ReadTestOfRecord(record, "any", record.Has("psi") ? "psi" : "chi",
+                   act.input_names.at(act.yaw_input));
+}
+
 // One cell: the job's fit, scored on every test maneuver (a fold's: on the run it leaves out).
 // Never throws: a failure is a row.
 std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
@@ -348,7 +359,10 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
   std::map<std::string, Dataset> train_sets, test_sets;
   if (!suite.cv.On())
     for (const SuiteData& d : suite.train_data) train_sets[d.name] = LoadSuiteData(d);
-  for (const SuiteData& d : suite.test_data) test_sets[d.name] = LoadSuiteData(d);
+  for (const SuiteData& d : suite.test_data) {
+    test_sets[d.name] = LoadSuiteData(d);
+    CheckNamedManeuver(test_sets[d.name], suite.vessels.empty() ? "" : suite.vessels.front());
+  }
   std::map<size_t, std::vector<ResultRow>> cells;
   SimulatedRecords simulated(suite);
   if (threads > 0) omp_set_num_threads(threads);

@@ -23,6 +23,7 @@
 #include "harness/distributed_run.h"
 #include "harness/ranks.h"
 #include "harness/real_suite.h"
+#include "harness/smoke_suite.h"
 #include "harness/regression.h"
 #include "harness/report.h"
 #include "harness/results.h"
@@ -122,7 +123,8 @@ void RunRealSuite(const CompareOptions& o) {
   for (const SuiteTrack& track : tracks) {
     for (const std::string& note : track.notes)
       std::cerr << "usvid compare: track " << track.name << ": " << note << '\n';
-    const SuiteOutcome outcome = RunSuiteInto(track.suite, o.out + "/" + track.name, o, {});
+    const SuiteOutcome outcome = RunSuiteInto(o.quick ? SmokeVariant(track.suite) : track.suite,
+                                              o.out + "/" + track.name, o, {});
     summary += "## Track " + track.name + " (" + track.name + "/)\n\n";
     for (const std::string& note : track.notes) summary += "- " + note + "\n";
     summary += "\n" + Demoted(outcome.summary) + "\n";
@@ -131,7 +133,9 @@ void RunRealSuite(const CompareOptions& o) {
 }
 
 void RunCompare(const CompareOptions& o) {
-  if (!o.suite.empty() && o.quick) throw InputError("compare: give --suite or --quick, not both");
+  if (o.quick && !o.suite.empty() && !IsSuiteName(o.suite))
+    throw InputError("compare: --quick makes an embedded suite seconds-long; a suite file sets "
+                     "its own size (give --suite FILE without --quick)");
   if (!o.cv.empty() && o.cv != kCrossValidationRuns)
     throw InputError("compare: --cv '" + o.cv + "' is unknown (known: " + kCrossValidationRuns +
                      ", leave one run out)");
@@ -148,6 +152,7 @@ void RunCompare(const CompareOptions& o) {
     suite = DefaultSuite(o.quick || o.suite == "quick");
   } else if (o.suite == "realistic" || o.suite == "realistic-measured") {
     suite = RealisticSuite(o.suite == "realistic-measured");
+    if (o.quick) suite = SmokeVariant(std::move(suite));
   } else if (IsSuiteName(o.suite)) {
     std::string names;
     for (const std::string& n : EmbeddedSuiteNames()) names += (names.empty() ? "" : ", ") + n;
@@ -181,7 +186,10 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("--data-dir", o->data_dir,
                   "The measured data of --suite real (default ../shared/data); absent, the suite "
                   "is skipped");
-  cmd->add_flag("--quick", o->quick, "The default suite, smaller: seconds, not minutes");
+  cmd->add_flag("--quick", o->quick,
+                "The default suite, smaller: seconds, not minutes; with --suite realistic, "
+                "realistic-measured or real, that suite's seconds-long variant (its records and "
+                "checks, fewer fits: harness/smoke_suite.h)");
   cmd->add_option("--cv", o->cv,
                   "runs: leave-one-run-out cross-validation of a suite on measured data (--suite "
                   "real, or a suite file with \"data\"): each run left out in turn, every method "
