@@ -10,6 +10,8 @@
 #include "harness/cross_validation.h"
 #include "harness/embedded_suites.h"
 #include "harness/suite_data.h"
+#include "harness/suite_methods.h"
+#include "methods/hybrid/hybrid.h"
 #include "metrics/maneuver_of_record.h"
 
 namespace usvid {
@@ -240,7 +242,7 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
   nlohmann::json methods = nlohmann::json::array();
   for (const nlohmann::json& m : suite["methods"]) {
     const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
-    if (name != "diagnose" && name != "hybrid") methods.push_back(m);
+    if (name != kDiagnoseMethod && name != hybrid::kMethodName) methods.push_back(m);
   }
   if (methods.size() < suite["methods"].size())
     notes.push_back(

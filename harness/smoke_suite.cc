@@ -4,12 +4,19 @@
 #include <set>
 #include <string>
 
+#include "methods/gp/gp_identify.h"
+#include "methods/lti/lti.h"
+#include "methods/nominal/nominal.h"
+#include "methods/nomoto/nomoto.h"
+#include "methods/sindy/sindy.h"
+
 namespace usvid {
 
 Suite SmokeVariant(Suite suite) {
   suite.name += "-quick";
   if (suite.Measured()) {
-    static const std::set<std::string> kFast = {"nominal", "lti", "nomoto", "sindy"};
+    static const std::set<std::string_view> kFast = {kNominalMethodName, lti::kMethodName,
+                                                     nomoto::kMethodName, sindy::kMethodName};
     std::erase_if(suite.methods, [](const SuiteMethod& m) { return !kFast.contains(m.method); });
     return suite;
   }
@@ -18,7 +25,7 @@ Suite SmokeVariant(Suite suite) {
   suite.train_seconds = std::min(suite.train_seconds, 150.0);
   suite.test_seconds = std::min(suite.test_seconds, 90.0);
   for (SuiteMethod& m : suite.methods)
-    if (m.method == "gp") {
+    if (m.method == gp::kMethodName) {
       m.options["population"] = 300;
       m.options["generations"] = 10;
     }
