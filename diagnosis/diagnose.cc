@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/correlation_time.h"
+#include "core/parallel_for.h"
 #include "core/expression.h"
 #include "diagnosis/residual_discovery.h"
 #include "simulation/vessel_simulator.h"
@@ -103,8 +104,7 @@ std::vector<Candidate> FitCandidates(const MeasuredData& d, const EffectFitter& 
                                      double effective_samples) {
   std::vector<Candidate> candidates(searches.size());
   const double excess = reference_error - noise_floor;
-#pragma omp parallel for schedule(dynamic)
-  for (size_t i = 0; i < searches.size(); ++i) {
+  ParallelFor(static_cast<int>(searches.size()), omp_get_max_threads(), [&](int i) {
     const auto t0 = std::chrono::steady_clock::now();
     Candidate& c = candidates[i];
     const EffectSearch& search = searches[i];
@@ -117,7 +117,7 @@ std::vector<Candidate> FitCandidates(const MeasuredData& d, const EffectFitter& 
     c.score = -c.likelihood_ratio + 2.0 * search.size();
     c.explained = excess > 0 ? (reference_error - c.heldout_error) / excess : 0.0;
     c.seconds = Seconds(t0);
-  }
+  });
   return candidates;
 }
 

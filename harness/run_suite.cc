@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "core/records.h"
 #include "effects/effect.h"
 #include "effects/effect_values.h"
@@ -255,13 +256,73 @@ void CheckNamedManeuver(const Dataset& record, const std::string& vessel) {
                    act.input_names.at(act.yaw_input));
 }
 
+// The row of `job`'s fit (`model`, or its `failure`) on the test maneuver `test`. Never throws.
+ResultRow ScoreOnTest(const Suite& suite, const FitJob& job, const ResultRow& base,
+                      const nlohmann::json& model, const std::string& failure,
+                      const std::string& test, const std::map<std::string, Dataset>& test_sets,
+                      SimulatedRecords& simulated) {
+  ResultRow row = base;
+  row.test_maneuver = test;
+  row.model = model;
+  row.inputs = InputsOf(model);
+  if (!failure.empty()) {
+    row.status = failure;
+    row.closed_loop = NotReplayed(suite, test, "the fit failed, there is no model");
+    return row;
+  }
+  try {
+    const std::shared_ptr<const Dataset> simulated_held =
+        suite.Measured()
+            ? nullptr
+            : simulated.Get(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
+    const Dataset& held = simulated_held ? *simulated_held : test_sets.at(test);
+    const Scores e = EvaluateModel(model, held, EvaluationScope::kRowScores).scores;
+    for (const auto& [channel, score] : e.channels)
+      row.channel_fit_percent[channel] = score.fit_percent;
+    double sum = 0.0;
+    for (const std::string& state : ScoredStates(model)) {
+      row.fit_percent[state] = e.channels.at(state).fit_percent;
+      row.nrmse[state] = e.channels.at(state).nrmse;
+      sum += row.fit_percent[state];
+    }
+    row.mean_fit_percent = sum / static_cast<double>(row.fit_percent.size());
+    if (e.regimes)
+      for (const auto& [regime, scores] : *e.regimes) {
+        double regime_sum = 0.0;
+        for (const auto& [state, _] : row.fit_percent)
+          regime_sum += scores.channels.at(state).fit_percent;
+        row.regime_fit_percent[regime] = regime_sum / static_cast<double>(row.fit_percent.size());
+      }
+    for (const auto& [horizon, fits] : e.horizon_fit_percent) {
+      double horizon_sum = 0.0;
+      for (const auto& [state, _] : row.fit_percent) horizon_sum += fits.at(state);
+      row.horizon_fit_percent[horizon] =
+          horizon_sum / static_cast<double>(row.fit_percent.size());
+    }
+    if (e.valid_prediction_s) row.valid_prediction_s = *e.valid_prediction_s;
+    for (const auto& [state, r2] : e.derivative_r2)
+      if (std::isfinite(r2)) row.derivative_r2[state] = r2;
+    ScoreModel(job.vessel, model, suite.Measured(), row);
+    row.diverged = e.diverged;
+    row.diverged_at_s = e.diverged_at_s;
+    row.diverged_channel = e.diverged_channel;
+    const std::string spec = TestManeuverSpec(suite, test);
+    row.closed_loop = ClosedLoopScore(
+        model, job.vessel, suite.Measured() ? RecordedManeuverSpec(spec, job.vessel, held) : spec,
+        held);
+  } catch (const std::exception& e) {
+    row.status = std::string("failed: ") + e.what();
+    row.closed_loop = NotReplayed(suite, test, "the model's evaluation failed");
+  }
+  return row;
+}
+
 // One cell: the job's fit, scored on every test maneuver (a fold's: on the run it leaves out).
 // Never throws: a failure is a row.
 std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                                const std::map<std::string, Dataset>& train_sets,
                                const std::map<std::string, Dataset>& test_sets,
                                SimulatedRecords& simulated) {
-  std::vector<ResultRow> rows;
   ResultRow base;
   base.vessel = job.vessel.empty() ? suite.name : job.vessel;  // vessel-less data: the suite
   base.train_maneuver = TrainingLabel(suite, job.train_maneuver);
@@ -288,63 +349,12 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
   }
   base.fit_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const std::string& test : ScoredTests(suite, job.train_maneuver)) {
-    ResultRow row = base;
-    row.test_maneuver = test;
-    row.model = model;
-    row.inputs = InputsOf(model);
-    if (!failure.empty()) {
-      row.status = failure;
-      row.closed_loop = NotReplayed(suite, test, "the fit failed, there is no model");
-      rows.push_back(row);
-      continue;
-    }
-    try {
-      const std::shared_ptr<const Dataset> simulated_held =
-          suite.Measured()
-              ? nullptr
-              : simulated.Get(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
-      const Dataset& held = simulated_held ? *simulated_held : test_sets.at(test);
-      const Scores e = EvaluateModel(model, held, EvaluationScope::kRowScores).scores;
-      for (const auto& [channel, score] : e.channels)
-        row.channel_fit_percent[channel] = score.fit_percent;
-      double sum = 0.0;
-      for (const std::string& state : ScoredStates(model)) {
-        row.fit_percent[state] = e.channels.at(state).fit_percent;
-        row.nrmse[state] = e.channels.at(state).nrmse;
-        sum += row.fit_percent[state];
-      }
-      row.mean_fit_percent = sum / static_cast<double>(row.fit_percent.size());
-      if (e.regimes)
-        for (const auto& [regime, scores] : *e.regimes) {
-          double regime_sum = 0.0;
-          for (const auto& [state, _] : row.fit_percent)
-            regime_sum += scores.channels.at(state).fit_percent;
-          row.regime_fit_percent[regime] = regime_sum / static_cast<double>(row.fit_percent.size());
-        }
-      for (const auto& [horizon, fits] : e.horizon_fit_percent) {
-        double horizon_sum = 0.0;
-        for (const auto& [state, _] : row.fit_percent) horizon_sum += fits.at(state);
-        row.horizon_fit_percent[horizon] =
-            horizon_sum / static_cast<double>(row.fit_percent.size());
-      }
-      if (e.valid_prediction_s) row.valid_prediction_s = *e.valid_prediction_s;
-      for (const auto& [state, r2] : e.derivative_r2)
-        if (std::isfinite(r2)) row.derivative_r2[state] = r2;
-      ScoreModel(job.vessel, model, suite.Measured(), row);
-      row.diverged = e.diverged;
-      row.diverged_at_s = e.diverged_at_s;
-      row.diverged_channel = e.diverged_channel;
-      const std::string spec = TestManeuverSpec(suite, test);
-      row.closed_loop = ClosedLoopScore(
-          model, job.vessel, suite.Measured() ? RecordedManeuverSpec(spec, job.vessel, held) : spec,
-          held);
-    } catch (const std::exception& e) {
-      row.status = std::string("failed: ") + e.what();
-      row.closed_loop = NotReplayed(suite, test, "the model's evaluation failed");
-    }
-    rows.push_back(row);
-  }
+  // Each test is scored apart; in a suite a thread out of cells takes some (core/parallel_for.h).
+  const std::vector<std::string> tests = ScoredTests(suite, job.train_maneuver);
+  std::vector<ResultRow> rows(tests.size());
+  ParallelFor(static_cast<int>(tests.size()), 1, [&](int i) {
+    rows[i] = ScoreOnTest(suite, job, base, model, failure, tests[i], test_sets, simulated);
+  });
   return rows;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/evenly_spread.h"
+#include "core/parallel_for.h"
 #include "core/records.h"
 #include "methods/hybrid/heldout_free_run.h"
 #include "preprocessing/pipeline.h"
@@ -145,9 +146,9 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
     r.heldout_error.assign(static_cast<size_t>(n), kNoScore);
     r.free_run_error.assign(static_cast<size_t>(n), kNoScore);
     std::vector<RefitResult> fits(static_cast<size_t>(n));
-#pragma omp parallel for schedule(dynamic) num_threads(std::max(1, options.refit.threads))
-    for (int j = 0; j < n; ++j) {
-      if (taken[j]) continue;
+    // In a suite the other threads, once out of cells, take proposals too (core/parallel_for.h).
+    ParallelFor(n, options.refit.threads, [&](int j) {
+      if (taken[j]) return;
       try {
         RefitOptions o = refit;
         o.threads = 1;
@@ -161,7 +162,7 @@ HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
       } catch (const std::exception&) {
         // A proposal whose fit fails is not chosen (its error stays infinite).
       }
-    }
+    });
     // The best by multiple shooting among the proposals whose free runs hold and are no worse.
     int best = -1;
     for (int j = 0; j < n; ++j)
