@@ -38,6 +38,7 @@ Method RefitMethod() {
   m.summary = "the --vessel's own coefficients, Ceres multiple shooting";
   m.options = RefitOptionSpecs();
   m.identify = IdentifyRefit;
+  m.relative_cost = 20.0;  // multiple shooting through the vessel: about GP's time on a vessel's runs
   return m;
 }
 

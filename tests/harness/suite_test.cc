@@ -182,6 +182,17 @@ TEST_F(SuiteTest, SlowestFitsStartFirst) {
   std::vector<size_t> cells(quick.size());
   for (size_t j = 0; j < cells.size(); ++j) cells[j] = j;
   EXPECT_EQ(quick.at(SlowestFirst(quick, cells).front()).method.method, "fossen-ceres");
+  // The searches through a vessel refit it once per proposal (the hybrid's terms, diagnose's
+  // effects): on a vessel's logs they are the longest fits, and start before GP and the refit.
+  small["methods"] = {"refit", "gp", "diagnose", "hybrid"};
+  const std::vector<FitJob> searches = FitJobs(ParseSuite(small, "s.json"));
+  std::vector<size_t> all_searches(searches.size());
+  for (size_t j = 0; j < all_searches.size(); ++j) all_searches[j] = j;
+  std::vector<std::string> started;
+  for (size_t j : SlowestFirst(searches, all_searches))
+    if (started.empty() || started.back() != searches[j].method.method)
+      started.push_back(searches[j].method.method);
+  EXPECT_THAT(started, ::testing::ElementsAre("hybrid", "diagnose", "gp", "refit"));
 }
 
 // A small suite: one row per fit and test maneuver, each scored on another seed, the same at
