@@ -12,12 +12,18 @@
 #include "harness/suite_data.h"
 #include "harness/suite_methods.h"
 #include "methods/hybrid/hybrid.h"
+#include "methods/identify_request.h"
+#include "methods/refit/refit.h"
 #include "metrics/maneuver_of_record.h"
 
 namespace usvid {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The most rows a fold's refit fits in a cross-validated track: about as many as the largest
+// track trains on without --cv (Esso Osaka's eight runs, 30642 rows).
+constexpr long kCrossValidationFitRows = 30000;
 
 // A folder scanned for further test runs, from the data folder, and the test its runs hold:
 // "zigzag", "turning", "any" (either, read from each record) or "" (free runs alone).
@@ -248,6 +254,26 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
     notes.push_back(
         "diagnose and hybrid left out of the cross-validation: each fits for 200-500 s on the "
         "joined runs, once per fold (they run in the suite without --cv)");
+  // A fold trains on every run but one, up to four times the rows the track trains on without
+  // --cv (Esso Osaka: about 110000 against 30642), and the refit's time grows with its rows (54 s
+  // a fold on 60000, 27 folds). Each fold's refit takes at most as many rows as the track's own
+  // training part gives it, spread over all the fold's runs (methods/refit/typed_refit.h), so a
+  // fold's refit costs what the track's does.
+  bool capped = false;
+  for (nlohmann::json& m : methods) {
+    const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
+    if (name != kRefitMethodName) continue;
+    if (m.is_string()) m = nlohmann::json{{"method", name}};
+    const long given = m.value("fit_rows", kCeresFitRows);
+    if (given == 0 || given > kCrossValidationFitRows) {
+      m["fit_rows"] = kCrossValidationFitRows;
+      capped = true;
+    }
+  }
+  if (capped)
+    notes.push_back("each fold's refit fits at most " + std::to_string(kCrossValidationFitRows) +
+                    " rows, spread over the fold's runs (as many as a track trains on without "
+                    "--cv; all of them took 54 s a fold on Esso Osaka)");
   suite["methods"] = methods;
   notes.push_back("leave-one-run-out cross-validation over " + std::to_string(runs) +
                   " runs: each left out in turn, every method fitted on the other " +
