@@ -12,7 +12,7 @@ namespace usvid {
 namespace {
 
 constexpr const char* kKnown =
-    "zigzag:A/B, turning:A, stepgrid:T/Y, random-steps, prbs, multisine, autopilot:HOLD";
+    "zigzag:A/B, turning:A, stepgrid:T/Y[/HOLD_S], random-steps, prbs, multisine, autopilot:HOLD";
 
 // The spec's numbers; `count` of them are expected.
 std::vector<double> Numbers(const ManeuverSpec& parsed, size_t count, const std::string& spec) {
@@ -48,9 +48,14 @@ std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation&
   if (name == "stepgrid") {
     StepGridOptions opt;
     if (has_args) {
-      const auto ty = Numbers(args, 2, spec);
+      // T/Y, or T/Y/H with a fixed hold of H seconds a step.
+      const auto ty = Numbers(args, args.numbers.size() == 3 ? 3 : 2, spec);
       opt.thrust_levels = static_cast<int>(ty[0]);
       opt.yaw_levels = static_cast<int>(ty[1]);
+      if (ty.size() == 3) {
+        if (!(ty[2] > 0)) throw InputError("--maneuver '" + spec + "': the hold must be positive");
+        opt.hold_s = ty[2];
+      }
     }
     return std::make_unique<StepGrid>(act, opt, duration(3600));
   }

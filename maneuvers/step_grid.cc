@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "core/parse_number.h"
 #include "maneuvers/excitation.h"
 
 namespace usvid {
@@ -14,6 +15,12 @@ StepGrid::StepGrid(const Actuation& act, const StepGridOptions& options, double 
     throw InputError("--maneuver stepgrid: the vessel has no thrust input and speed");
   if (opt_.thrust_levels < 1 || opt_.yaw_levels < 0)
     throw InputError("--maneuver stepgrid:T/Y: T >= 1 thrust levels, Y >= 0 yaw levels a side");
+  if (opt_.hold_s != 0.0 && !(opt_.hold_s >= kMinHoldS && std::isfinite(opt_.hold_s)))
+    throw InputError("--maneuver " + Spec() + ": a hold of " + FormatNumber(opt_.hold_s) +
+                     " s is too short for any steady window: each step needs at least " +
+                     FormatNumber(kMinHoldS) + " s, " + FormatNumber(kSettleS) +
+                     " s to settle and " + FormatNumber(kSteadyWindowS) +
+                     " s of steady state for eb-lr's window (a slow vessel needs longer)");
   const double hi = ExcitationRange(act, act.thrust_input).second;
   const double base = std::max(act.input_min[act.thrust_input], 0.0);
   for (int i = 0; i < opt_.thrust_levels; ++i) {
@@ -29,7 +36,8 @@ StepGrid::StepGrid(const Actuation& act, const StepGridOptions& options, double 
 }
 
 std::string StepGrid::Spec() const {
-  return "stepgrid:" + std::to_string(opt_.thrust_levels) + "/" + std::to_string(opt_.yaw_levels);
+  return "stepgrid:" + std::to_string(opt_.thrust_levels) + "/" + std::to_string(opt_.yaw_levels) +
+         (opt_.hold_s != 0.0 ? "/" + FormatNumber(opt_.hold_s) : "");
 }
 
 std::vector<double> StepGrid::InitialCommand() const {
@@ -65,8 +73,9 @@ void StepGrid::Command(double t, std::span<const double> state, std::span<double
 
   Step& s = grid_[step_];
   const double held = t - s.start;
-  bool next = held >= opt_.max_hold_s;
-  if (s.steady < 0 && held >= opt_.min_hold_s && Steady()) {
+  const bool fixed = opt_.hold_s > 0.0;
+  bool next = fixed ? held >= opt_.hold_s - 1e-9 : held >= opt_.max_hold_s;
+  if (!fixed && s.steady < 0 && held >= opt_.min_hold_s && Steady()) {
     s.steady = t;
     s.speed = speed;
     s.rate = rate;

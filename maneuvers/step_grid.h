@@ -5,20 +5,32 @@
 // 0 and +-k/yaw_levels of full yaw, k = 1..yaw_levels, alternating sides.
 // Steady state: over the last `window_s` the speed and the rate each moved less than
 // 0.5 % of the speed + 0.01 m/s and 0.001 rad/s; a step lasts at least min_hold_s and at most
-// max_hold_s. The report lists every step with its steady window and steady speed and rate.
+// max_hold_s. With a fixed hold (`hold_s` > 0, spec stepgrid:T/Y/H) every step is held exactly
+// that long instead, with no steady test and no turn: a schedule whose length is known before
+// the run, T (1 + 2 Y) H seconds. The report lists every step with its steady window and steady
+// speed and rate.
+// Throws InputError for a vessel without thrust and speed, levels out of range, or a fixed hold
+// shorter than kMinHoldS, too short for any steady window (StepGridHoldError names both).
 #pragma once
 
-#include <memory>
-
 #include <deque>
+#include <memory>
 
 #include "maneuvers/maneuver.h"
 
 namespace usvid {
 
+// The shortest fixed hold [s] a step may have: the vessel must settle after the step (at least
+// kSettleS) and then stay steady for eb-lr's shortest steady window (kSteadyWindowS, its
+// min_window_s), whatever the vessel; a slower one needs longer (docs/baselines.md).
+inline constexpr double kSettleS = 5.0;
+inline constexpr double kSteadyWindowS = 3.0;
+inline constexpr double kMinHoldS = kSettleS + kSteadyWindowS;
+
 struct StepGridOptions {
   int thrust_levels = 4;
   int yaw_levels = 3;
+  double hold_s = 0.0;  // > 0: every step held this long (no steady test, no turn) [s]
   double window_s = 4.0;
   double min_hold_s = 8.0;
   double max_hold_s = 90.0;

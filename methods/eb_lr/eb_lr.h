@@ -8,9 +8,11 @@
 // U^3, r^2; sigma_r on r, U r, r^3; m_U and m_r on 1, U. Units of the coefficients follow.
 //
 // Data: raw measurements, fully sampled on a uniform grid (resample multi-rate logs first and
-// shift the inputs by a known delay; do not smooth: the method averages and estimates the noise
-// itself). Inputs are zero-order held from each sample (the command of row k acts until row
-// k + 1). A step grid (maneuvers/step_grid.h) is the intended experiment.
+// shift the inputs by a known delay, as the method `eb-lr` does, eb_lr_method.cc; do not smooth:
+// the method averages and estimates the noise itself), one record or several stretches of one
+// grid (records joined, gaps: nothing is smoothed, windowed or integrated across their joins).
+// Inputs are zero-order held from each sample (the command of row k acts until row k + 1). A
+// step grid (maneuvers/step_grid.h) is the intended experiment.
 //  1. Steady windows, from the data alone (steady_windows.h): stretches of constant input where
 //     the local slopes of U and r are within their noise or below a relative rate.
 //  2. sigma: each window gives one row at its mean state,
@@ -27,22 +29,31 @@
 //     those runs, each simulated from its start (RK4, the other state from the smoothed data):
 //     noise on the regressors biases and scatters equation error, not output error.
 //  4. Steps 2 and 3 are repeated `refinements` times.
+// With lower_order, a record with fewer steady windows than a sigma basis has terms, or windows
+// that do not excite or separate some of them, is fitted on the terms, in the basis's order,
+// that they do excite (each window's mean reaches 1 % of the term's largest value over the data)
+// and separate (rank at 1e-6), at most one fewer than the windows: the polynomial's order
+// lowered, and said in details.warnings. An
+// equation whose windows excite none of its terms (no steady turn for sigma_r) takes its first
+// term from the transients instead, jointly with its mass (the rows of step 3 with the term's
+// integral int phi dt as one more column). Without lower_order, those records are refused.
 // Equations (docs/data.md#modeljson): speed -> "(tau_m - (a1*U + ...)) / (c1 + c2*U)", and so
 // for r; with a thrust_loss_channel q, sigma_U's sum ends with "k*q*U".
 // A mass that is not positive over the data is reported in details.warnings, not thrown.
 //
 // Throws InputError: a missing, not fully sampled or non-finite channel; a non-uniform time
-// grid; a constant input; a bad option (named); fewer steady windows than a sigma basis has
-// terms, or windows that do not separate a term (named); fewer transient pieces than M terms.
+// grid; a constant input (the thrust allowed with constant_thrust); a bad option (named); no
+// steady window at all; without lower_order, fewer steady windows than a sigma basis has terms,
+// or windows that do not separate a term (named); fewer transient pieces than M terms.
 #pragma once
-
-#include <string_view>
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/dataset.h"
+#include "core/stretches.h"
 #include "methods/eb_lr/monomial.h"
 #include "methods/eb_lr/steady_windows.h"
 
@@ -70,6 +81,11 @@ struct EbLrOptions {
   // derived from measured actuator states slew to each new value and carry the sensors' noise,
   // so the steady windows and the spline's step breaks follow the commands. Empty: the inputs.
   std::vector<std::string> held_inputs;
+  // Fewer steady windows than the bases need: fit the terms they separate (above), or refuse.
+  bool lower_order = false;
+  // A record whose thrust is held at one level (a zig-zag, a turning circle): fitted, sigma_U
+  // then only on the speeds that level reaches, or refused (a step grid steps both inputs).
+  bool constant_thrust = false;
 };
 
 struct EbLrIdentification {                              // the shape of gp::GpIdentification
@@ -78,8 +94,16 @@ struct EbLrIdentification {                              // the shape of gp::GpI
   nlohmann::json details = nlohmann::json::object();     // steady windows, residuals, noise
 };
 
+// One record on one uniform grid.
 EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::string& speed,
                                     const std::string& rate, const std::string& thrust_input,
                                     const std::string& yaw_input, const EbLrOptions& options);
+
+// The stretches of one grid (core/stretches.h: records joined, or a record with gaps), each
+// uniform with the same step.
+EbLrIdentification IdentifyWithEbLr(const Dataset& data, const std::vector<Stretch>& stretches,
+                                    const std::string& speed, const std::string& rate,
+                                    const std::string& thrust_input, const std::string& yaw_input,
+                                    const EbLrOptions& options);
 
 }  // namespace usvid::eb_lr

@@ -9,6 +9,11 @@
 // or slower than max_relative_rate of the state's size per second. The stretch's last run of
 // settled samples lasting at least min_window_s, over which no input spreads by more than
 // input_tolerance x its range, is its steady window; a stretch has at most one.
+// A stretch with no such run whose rate state (full_turn_state) turns the heading through a full
+// circle or more is steady on average over its last full turn (Eriksen & Breivik's full turn,
+// which averages out the wind and the current that keep a real turn from settling): that last
+// turn is its window, when the stretch holds at least 1.25 turns (the first quarter for the
+// transient) and no input drifts over it.
 // Units: t [s], states and inputs in their own units, rates per second.
 #pragma once
 
@@ -24,6 +29,7 @@ struct SteadyWindowOptions {
   double max_relative_rate = 0.002;  // [1/s] or slower than this fraction of |x| per second
   double scale_floor = 0.1;          // [-] |x| taken at least this fraction of max|x|
   double min_window_s = 3.0;         // [s] shortest steady window
+  int full_turn_state = -1;          // the rate state [rad/s] whose full turns count; -1: none
 };
 
 struct SteadyWindow {
@@ -35,13 +41,16 @@ struct SteadyWindowReport {
   std::vector<double> noise_sd;       // per state
   int stretches = 0;                  // stretches of constant input
   int drifting = 0;                   // settled runs refused because an input drifted
+  int full_turns = 0;                 // windows that are a stretch's last full turn
 };
 
-// t strictly increasing; every state and input as long as t. Throws InputError on a bad option
-// (named) or mismatched lengths.
+// t strictly increasing; every state and input as long as t. `joins`: the first samples of the
+// record's later stretches (records joined, gaps), where the record is cut too; the grid's step
+// is then the median interval. Throws InputError on a bad option (named) or mismatched lengths.
 SteadyWindowReport DetectSteadyWindows(const Eigen::VectorXd& t,
                                        const std::vector<Eigen::VectorXd>& states,
                                        const std::vector<Eigen::VectorXd>& inputs,
-                                       const SteadyWindowOptions& options);
+                                       const SteadyWindowOptions& options,
+                                       const std::vector<Eigen::Index>& joins = {});
 
 }  // namespace usvid::eb_lr
