@@ -278,6 +278,28 @@ void ParseConditions(const nlohmann::json& v, const std::string& file, Suite& s)
   }
 }
 
+// "pairs": a list of two method names, each a method of the suite, the two different.
+std::vector<std::array<std::string, 2>> ParsePairs(const nlohmann::json& v,
+                                                   const std::vector<SuiteMethod>& methods,
+                                                   const std::string& file) {
+  const std::string what = file + ": pairs: ";
+  if (!v.is_array()) throw InputError(what + "must be a list of pairs of method names");
+  std::vector<std::array<std::string, 2>> pairs;
+  for (const nlohmann::json& p : v) {
+    if (!p.is_array() || p.size() != 2 || !p[0].is_string() || !p[1].is_string())
+      throw InputError(what + "each pair is two method names, as [\"gp\", \"eb-lr\"], got " +
+                       p.dump());
+    std::array<std::string, 2> pair{p[0].get<std::string>(), p[1].get<std::string>()};
+    if (pair[0] == pair[1]) throw InputError(what + "a pair of '" + pair[0] + "' with itself");
+    for (const std::string& name : pair)
+      if (std::none_of(methods.begin(), methods.end(),
+                       [&](const SuiteMethod& m) { return m.method == name; }))
+        throw InputError(what + "'" + name + "' is not among the suite's methods");
+    pairs.push_back(pair);
+  }
+  return pairs;
+}
+
 }  // namespace
 
 Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
@@ -285,7 +307,8 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
   static const std::set<std::string> kFields = {
       "name",  "vessels",       "train_maneuvers", "test_maneuvers", "methods", "noise",
       "seeds", "train_seconds", "test_seconds",    "data",           "effects", "sensors",
-      "gusts", "waves",         "dropouts",        "logged",         "cv"};
+      "gusts", "waves",         "dropouts",        "logged",         "cv",
+      "pairs"};
   for (const auto& [key, _] : v.items())
     if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
   const bool measured = v.contains("data");
@@ -342,6 +365,7 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     for (const std::string& m : s.test_maneuvers) check_maneuver(m, "test_maneuvers");
   }
   s.methods = ParseMethods(v["methods"], file);
+  if (v.contains("pairs")) s.pairs = ParsePairs(v["pairs"], s.methods, file);
   s.noise = v.contains("noise") ? ListOf<double>(v["noise"], file + ": noise")
                                 : std::vector<double>{measured ? 0.0 : 0.005};
   for (double n : s.noise)
@@ -390,6 +414,7 @@ nlohmann::json SuiteToJson(const Suite& s) {
     nlohmann::json out = {{"name", s.name},     {"vessels", s.vessels}, {"data", data},
                           {"methods", methods}, {"noise", s.noise},     {"seeds", s.seeds}};
     if (s.cv.On()) out["cv"] = s.cv.kind;
+    if (!s.pairs.empty()) out["pairs"] = s.pairs;
     return out;
   }
   nlohmann::json out = {{"name", s.name},
@@ -408,6 +433,7 @@ nlohmann::json SuiteToJson(const Suite& s) {
   if (!s.conditions.waves.empty()) out["waves"] = s.conditions.waves;
   if (!s.conditions.dropouts.empty()) out["dropouts"] = s.conditions.dropouts;
   if (!s.conditions.logged.empty()) out["logged"] = s.conditions.logged;
+  if (!s.pairs.empty()) out["pairs"] = s.pairs;
   return out;
 }
 

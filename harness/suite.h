@@ -17,6 +17,9 @@
 // "cv": "runs" (measured data only; usvid compare --cv runs) cross-validates over the runs
 // instead: each run left out in turn, every method fitted on the others jointly and scored on it
 // (harness/cross_validation.h); "test" may then be left out.
+// "pairs": [[A, B], ...] (optional, any suite; A and B method names): pairs the verdict tests
+// head to head on each vessel and training maneuver, beside its ranking (harness/verdict.h,
+// PairTest).
 // A vessel is a compiled-in name or a vessel file (docs/model.md#vessel-files), a relative path
 // taken from the suite file's folder, as the data files are.
 // Methods: every method of the suite's registry (harness/suite_methods.h): the registered
@@ -26,6 +29,7 @@
 // Unknown fields, wrong types and unknown names are errors naming the file and field.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -92,6 +96,9 @@ struct Suite {
   // (cv): test_data holds every run, one file each, and train_maneuvers the folds' names.
   std::vector<SuiteData> train_data, test_data;
   SuiteCrossValidation cv;
+  // "pairs": two methods each (by name, each among "methods") that the verdict also tests head
+  // to head on every table (harness/verdict.h, PairTest).
+  std::vector<std::array<std::string, 2>> pairs;
   bool Measured() const { return !train_data.empty(); }
 };
 

@@ -100,8 +100,46 @@ std::map<std::string, MethodCells> CellScores(const std::vector<const ResultRow*
   return out;
 }
 
+// Whether `label` (gp[+,-,*,abs]) is a variant of the method `name` (gp).
+bool LabelOf(const std::string& label, const std::string& name) {
+  return label == name || label.starts_with(name + "[");
+}
+
+// Each pair's methods head to head over the cells both have (PairTest).
+std::vector<PairTest> PairTests(const std::vector<std::array<std::string, 2>>& pairs,
+                                const std::map<std::string, MethodCells>& cells) {
+  std::vector<PairTest> out;
+  for (const auto& [first, second] : pairs)
+    for (const auto& [a, a_cells] : cells)
+      for (const auto& [b, b_cells] : cells) {
+        if (!LabelOf(a, first) || !LabelOf(b, second)) continue;
+        std::vector<double> x, y, difference;
+        bool any_value = false;  // a cell where either method has a score (not a failure)
+        for (const auto& [cell, score] : a_cells.score) {
+          const auto it = b_cells.score.find(cell);
+          if (it == b_cells.score.end()) continue;
+          any_value = any_value || std::isfinite(score) || std::isfinite(it->second);
+          // Two failed cells are equal (no difference), not inf - inf.
+          difference.push_back(score == it->second ? 0.0 : score - it->second);
+          if (score == it->second) continue;
+          x.push_back(score);
+          y.push_back(it->second);
+        }
+        if (!any_value) continue;  // neither has a value: nothing to compare
+        PairTest t;
+        t.a = a;
+        t.b = b;
+        t.cells = static_cast<int>(difference.size());
+        t.median_difference = Median(difference);
+        t.p = x.empty() ? 1.0 : WilcoxonSignedRank(x, y).p_value;
+        out.push_back(t);
+      }
+  return out;
+}
+
 VerdictEntry Judge(const std::string& vessel, const std::string& train, const Metric& metric,
-                   const std::vector<const ResultRow*>& rows, bool per_run) {
+                   const std::vector<const ResultRow*>& rows, bool per_run,
+                   const std::vector<std::array<std::string, 2>>& pairs) {
   VerdictEntry e;
   e.vessel = vessel;
   e.train_maneuver = train;
@@ -109,6 +147,7 @@ VerdictEntry Judge(const std::string& vessel, const std::string& train, const Me
   e.label = metric.label;
   e.higher_is_better = metric.higher_is_better;
   std::map<std::string, MethodCells> cells = CellScores(rows, metric, per_run);
+  e.pairs = PairTests(pairs, cells);
   if (const auto it = cells.find(std::string(kNominalMethodName)); it != cells.end()) {
     std::vector<double> v;
     for (const auto& [_, s] : it->second.score) v.push_back(s);
@@ -142,9 +181,8 @@ VerdictEntry Judge(const std::string& vessel, const std::string& train, const Me
       oriented[methods[m]].push_back(v);
       table[c][m] = v;
     }
-  const FriedmanTest friedman = common.size() >= 2 && methods.size() >= 2
-                                    ? Friedman(table)
-                                    : FriedmanTest{};
+  const FriedmanTest friedman =
+      common.size() >= 2 && methods.size() >= 2 ? Friedman(table) : FriedmanTest{};
   e.friedman_p = friedman.p_value;
   for (size_t m = 0; m < methods.size(); ++m) {
     Standing s;
@@ -209,7 +247,7 @@ std::vector<VerdictEntry> Verdict(const Suite& suite, const std::vector<ResultRo
         if (r.vessel == vessel && r.train_maneuver == train) cell_rows.push_back(&r);
       if (cell_rows.empty()) continue;
       for (const Metric& metric : Metrics()) {
-        VerdictEntry e = Judge(vessel, train, metric, cell_rows, suite.Measured());
+        VerdictEntry e = Judge(vessel, train, metric, cell_rows, suite.Measured(), suite.pairs);
         if (!e.ranking.empty()) out.push_back(std::move(e));
       }
     }
@@ -240,7 +278,22 @@ nlohmann::json VerdictJson(const std::vector<VerdictEntry>& verdict) {
                         {"friedman_p", e.friedman_p},
                         {"ranking", ranking},
                         {"failing", e.failing}};
-    if (e.ceiling) j[std::string(kNominalMethodName)] = std::isfinite(*e.ceiling) ? nlohmann::json(*e.ceiling) : nullptr;
+    if (!e.pairs.empty()) {
+      nlohmann::json pairs = nlohmann::json::array();
+      for (const PairTest& t : e.pairs)
+        pairs.push_back(
+            {{"a", t.a},
+             {"b", t.b},
+             {"cells", t.cells},
+             {"median_difference", std::isfinite(t.median_difference)
+                                       ? nlohmann::json(t.median_difference)
+                                       : nlohmann::json(t.median_difference > 0 ? "inf" : "-inf")},
+             {"p", t.p}});
+      j["pairs"] = pairs;
+    }
+    if (e.ceiling)
+      j[std::string(kNominalMethodName)] =
+          std::isfinite(*e.ceiling) ? nlohmann::json(*e.ceiling) : nullptr;
     out.push_back(j);
   }
   return out;
@@ -249,9 +302,22 @@ nlohmann::json VerdictJson(const std::vector<VerdictEntry>& verdict) {
 std::string VerdictMarkdown(const std::vector<VerdictEntry>& verdict) {
   std::ostringstream md;
   std::string heading;
+  // The pairs' lines of the table being written: "a against b" -> "metric +1.2 (p ..)" items.
+  std::vector<std::pair<std::string, std::vector<std::string>>> pairs;
+  auto flush_pairs = [&] {
+    if (!pairs.empty()) md << "\n";
+    for (const auto& [who, items] : pairs) {
+      md << "- **" << who << "** (median of the paired differences over the cells both have; "
+         << "two-sided Wilcoxon p, not adjusted):";
+      for (size_t i = 0; i < items.size(); ++i) md << (i ? "; " : " ") << items[i];
+      md << "\n";
+    }
+    pairs.clear();
+  };
   for (const VerdictEntry& e : verdict) {
     const std::string h = e.vessel + ", trained on " + e.train_maneuver;
     if (h != heading) {
+      flush_pairs();
       heading = h;
       md << "\n### " << h << "\n\n| metric | ranking, best first (**bold**: tied with the best; "
          << "=: the data cannot tell the two apart) | Friedman p | cells | nominal |\n"
@@ -271,7 +337,22 @@ std::string VerdictMarkdown(const std::vector<VerdictEntry>& verdict) {
     for (const std::string& m : e.failing) md << "; " << m << " failed in every cell";
     md << " | " << PValue(e.friedman_p) << " | " << e.cells << " | "
        << (e.ceiling ? Number(*e.ceiling) : "") << " |\n";
+    for (const PairTest& t : e.pairs) {
+      const std::string who = t.a + " against " + t.b;
+      auto it =
+          std::find_if(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == who; });
+      if (it == pairs.end()) it = pairs.insert(pairs.end(), {who, {}});
+      // An infinite median: the worse method failed, diverged or gave no criterion in most cells.
+      const bool a_worse = (t.median_difference < 0) == e.higher_is_better;
+      const std::string difference =
+          std::isfinite(t.median_difference)
+              ? (t.median_difference > 0 ? "+" : "") + Number(t.median_difference)
+              : (a_worse ? t.a : t.b) + " has no value in most cells";
+      it->second.push_back(e.label + " " + difference + " (p " + PValue(t.p) + ", " +
+                           std::to_string(t.cells) + (t.cells == 1 ? " cell)" : " cells)"));
+    }
   }
+  flush_pairs();
   return md.str();
 }
 

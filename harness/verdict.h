@@ -49,6 +49,18 @@ struct Standing {
   bool tied_with_previous = true;  // with the method ranked just above
 };
 
+// Two methods head to head, as the suite's "pairs" ask (the mission's GP-SR against
+// Eriksen-Breivik): over the cells both have, the median of the paired differences a - b in the
+// metric's units (a failed fit or a diverged free run is the worst score of its cell, as in the
+// ranking, so a difference may be infinite) and the exact two-sided Wilcoxon signed-rank p,
+// not adjusted: it is the one question asked, not one of the ranking's many.
+struct PairTest {
+  std::string a, b;  // the methods' labels
+  int cells = 0;
+  double median_difference = 0.0;
+  double p = 1.0;
+};
+
 struct VerdictEntry {
   std::string vessel, train_maneuver, metric, label;
   bool higher_is_better = true;
@@ -57,12 +69,14 @@ struct VerdictEntry {
   std::vector<Standing> ranking;     // best first
   std::optional<double> ceiling;     // the nominal model's median
   std::vector<std::string> failing;  // methods whose fit failed in every cell
+  std::vector<PairTest> pairs;       // the suite's "pairs", where both methods have cells
 };
 
 std::vector<VerdictEntry> Verdict(const Suite& suite, const std::vector<ResultRow>& rows);
 nlohmann::json VerdictJson(const std::vector<VerdictEntry>& verdict);
-// Per vessel and training maneuver a table: metric | ranking | Friedman p | cells | nominal.
-// The JSON names the ceiling after the nominal method (kNominalMethodName).
+// Per vessel and training maneuver a table: metric | ranking | Friedman p | cells | nominal,
+// then a line for each of the suite's pairs. The JSON names the ceiling after the nominal
+// method (kNominalMethodName).
 std::string VerdictMarkdown(const std::vector<VerdictEntry>& verdict);
 
 }  // namespace usvid

@@ -128,6 +128,17 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
     s["methods"] = nlohmann::json::array({{{"method", "gp"}, {key, value}}});
     expect(s, "option '" + key + "'");
   }
+  // "pairs": two methods of the suite's, not the same.
+  s = Small();
+  s["methods"] = {"sindy", "gp"};
+  s["pairs"] = {{"gp", "eb-lr"}};
+  expect(s, "pairs: 'eb-lr' is not among the suite's methods");
+  s["pairs"] = {{"gp", "gp"}};
+  expect(s, "pairs: a pair of 'gp' with itself");
+  s["pairs"] = {"gp", "sindy"};
+  expect(s, "pairs: each pair is two method names");
+  s["pairs"] = {{"gp", "sindy"}};
+  EXPECT_EQ(ParseSuite(s, "s.json").pairs.size(), 1u);
   EXPECT_THROW(ParseSuite(nlohmann::json{{"vessels", {"titanic"}},
                                          {"train_maneuvers", {"prbs"}},
                                          {"test_maneuvers", {"prbs"}},

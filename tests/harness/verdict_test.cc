@@ -360,5 +360,35 @@ TEST_F(VerdictTest, MarkdownAndJsonReportTheRanking) {
   EXPECT_NEAR(free_run.at("friedman_p").get<double>(), verdict[0].friedman_p, 1e-15);
 }
 
+// The suite's "pairs" put two methods head to head (the mission's GP-SR against
+// Eriksen-Breivik), whatever the ranking between them says: gp[+,-,*,abs] (a variant, matched by
+// its method's name) 5 points above eb-lr in 8 cells, so the median paired difference is +5 and
+// the exact two-sided Wilcoxon p is 2 / 2^8; SINDy, within 0.2 of GP with balanced signs, cannot
+// be told from it (p 1 would be the sign test's; the ranks give more than 0.05).
+TEST_F(VerdictTest, PairsAreTestedHeadToHead) {
+  suite_.pairs = {{"gp", "eb-lr"}, {"gp", "sindy"}};
+  Add("gp[+,-,*,abs]", 8, [](size_t i) { return Base(i); });
+  Add("eb-lr", 8, [](size_t i) { return Base(i) - 5.0; });
+  Add("sindy", 8, [](size_t i) { return Base(i) + 0.2 * Sign(i); });
+  const std::vector<VerdictEntry> verdict = Verdict(suite_, rows_);
+  const VerdictEntry& fit = Entry(verdict, "free_run_fit_percent");
+  ASSERT_EQ(fit.pairs.size(), 2u);
+  EXPECT_EQ(fit.pairs[0].a, "gp[+,-,*,abs]");
+  EXPECT_EQ(fit.pairs[0].b, "eb-lr");
+  EXPECT_EQ(fit.pairs[0].cells, 8);
+  EXPECT_NEAR(fit.pairs[0].median_difference, 5.0, 1e-9);
+  EXPECT_NEAR(fit.pairs[0].p, 2.0 / 256.0, 1e-12);
+  EXPECT_EQ(fit.pairs[1].b, "sindy");
+  EXPECT_GT(fit.pairs[1].p, 0.05);
+  const std::string md = VerdictMarkdown(verdict);
+  EXPECT_THAT(md, HasSubstr("- **gp[+,-,*,abs] against eb-lr** (median of the paired "
+                            "differences over the cells both have; two-sided Wilcoxon p, not "
+                            "adjusted): free-run fit % +5.00 (p 0.008, 8 cells)"));
+  EXPECT_EQ(VerdictJson(verdict)[0]["pairs"][0]["p"].get<double>(), fit.pairs[0].p);
+  // Without pairs, no such line.
+  suite_.pairs.clear();
+  EXPECT_THAT(VerdictMarkdown(Verdict(suite_, rows_)), Not(HasSubstr("against")));
+}
+
 }  // namespace
 }  // namespace usvid
