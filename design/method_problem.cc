@@ -62,6 +62,9 @@ Probe ProbeFit(const std::string& vessel, const std::string& method, const Datas
   r.method = method;
   r.vessel = vessel;
   r.threads = 1;
+  // The design's parameters are eb2dof's full basis: a record that cannot carry every term is
+  // unusable for it, not fitted at a lower order (eb-lr's default "auto").
+  r.options = {{"order", "full"}};
   try {
     probe.model = Identify(data, r);
   } catch (const InputError& e) {
