@@ -131,13 +131,19 @@ TEST_F(SuiteTest, BadSuitesAreRefused) {
   // "pairs": two methods of the suite's, not the same.
   s = Small();
   s["methods"] = {"sindy", "gp"};
-  s["pairs"] = {{"gp", "eb-lr"}};
+  // (nlohmann reads {{"gp", "eb-lr"}} as an object: the arrays are spelled out.)
+  auto pairs = [](const std::string& a, const std::string& b) {
+    return nlohmann::json::array({nlohmann::json::array({a, b})});
+  };
+  s["pairs"] = pairs("gp", "eb-lr");
   expect(s, "pairs: 'eb-lr' is not among the suite's methods");
-  s["pairs"] = {{"gp", "gp"}};
+  s["pairs"] = pairs("gp", "gp");
   expect(s, "pairs: a pair of 'gp' with itself");
-  s["pairs"] = {"gp", "sindy"};
+  s["pairs"] = nlohmann::json::array({"gp", "sindy"});
   expect(s, "pairs: each pair is two method names");
-  s["pairs"] = {{"gp", "sindy"}};
+  s["pairs"] = nlohmann::json{{"gp", "sindy"}};
+  expect(s, "pairs: must be a list of pairs of method names");
+  s["pairs"] = pairs("gp", "sindy");
   EXPECT_EQ(ParseSuite(s, "s.json").pairs.size(), 1u);
   EXPECT_THROW(ParseSuite(nlohmann::json{{"vessels", {"titanic"}},
                                          {"train_maneuvers", {"prbs"}},
