@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 // The most rows a fold's refit fits in a cross-validated track, spread over the fold's runs: two
 // thirds of what the largest track trains on without --cv (Esso Osaka's eight runs, 30642
 // rows), which puts the real suite's --cv within its 15 minutes on 2 cores (at 30000 it took
-// 15 min 34 s, the refit 21 s a fold; docs/compare.md#cross-validation-over-runs).
+// 15 min 34 s, the refit 24.9 s a fold against 18.7; docs/compare.md#cross-validation-over-runs).
 constexpr long kCrossValidationFitRows = 20000;
 
 // A folder scanned for further test runs, from the data folder, and the test its runs hold:
