@@ -100,40 +100,47 @@ std::map<std::string, MethodCells> CellScores(const std::vector<const ResultRow*
   return out;
 }
 
-// Whether `label` (gp[+,-,*,abs]) is a variant of the method `name` (gp).
-bool LabelOf(const std::string& label, const std::string& name) {
-  return label == name || label.starts_with(name + "[");
+// The suite's pairs of method names as its rows label the methods (SuiteMethod::Label:
+// gp[+,-,*,abs]), every variant of each.
+std::vector<std::array<std::string, 2>> PairLabels(const Suite& suite) {
+  std::vector<std::array<std::string, 2>> out;
+  for (const auto& [first, second] : suite.pairs)
+    for (const SuiteMethod& a : suite.methods)
+      for (const SuiteMethod& b : suite.methods)
+        if (a.method == first && b.method == second) out.push_back({a.Label(), b.Label()});
+  return out;
 }
 
-// Each pair's methods head to head over the cells both have (PairTest).
+// Each pair of labels head to head over the cells both have (PairTest).
 std::vector<PairTest> PairTests(const std::vector<std::array<std::string, 2>>& pairs,
                                 const std::map<std::string, MethodCells>& cells) {
   std::vector<PairTest> out;
-  for (const auto& [first, second] : pairs)
-    for (const auto& [a, a_cells] : cells)
-      for (const auto& [b, b_cells] : cells) {
-        if (!LabelOf(a, first) || !LabelOf(b, second)) continue;
-        std::vector<double> x, y, difference;
-        bool any_value = false;  // a cell where either method has a score (not a failure)
-        for (const auto& [cell, score] : a_cells.score) {
-          const auto it = b_cells.score.find(cell);
-          if (it == b_cells.score.end()) continue;
-          any_value = any_value || std::isfinite(score) || std::isfinite(it->second);
-          // Two failed cells are equal (no difference), not inf - inf.
-          difference.push_back(score == it->second ? 0.0 : score - it->second);
-          if (score == it->second) continue;
-          x.push_back(score);
-          y.push_back(it->second);
-        }
-        if (!any_value) continue;  // neither has a value: nothing to compare
-        PairTest t;
-        t.a = a;
-        t.b = b;
-        t.cells = static_cast<int>(difference.size());
-        t.median_difference = Median(difference);
-        t.p = x.empty() ? 1.0 : WilcoxonSignedRank(x, y).p_value;
-        out.push_back(t);
-      }
+  for (const auto& [a, b] : pairs) {
+    const auto a_it = cells.find(a), b_it = cells.find(b);
+    if (a_it == cells.end() || b_it == cells.end()) continue;
+    const MethodCells& a_cells = a_it->second;
+    const MethodCells& b_cells = b_it->second;
+    std::vector<double> x, y, difference;
+    bool any_value = false;  // a cell where either method has a score (not a failure)
+    for (const auto& [cell, score] : a_cells.score) {
+      const auto it = b_cells.score.find(cell);
+      if (it == b_cells.score.end()) continue;
+      any_value = any_value || std::isfinite(score) || std::isfinite(it->second);
+      // Two failed cells are equal (no difference), not inf - inf.
+      difference.push_back(score == it->second ? 0.0 : score - it->second);
+      if (score == it->second) continue;
+      x.push_back(score);
+      y.push_back(it->second);
+    }
+    if (!any_value) continue;  // neither has a value: nothing to compare
+    PairTest t;
+    t.a = a;
+    t.b = b;
+    t.cells = static_cast<int>(difference.size());
+    t.median_difference = Median(difference);
+    t.p = x.empty() ? 1.0 : WilcoxonSignedRank(x, y).p_value;
+    out.push_back(t);
+  }
   return out;
 }
 
@@ -240,6 +247,7 @@ std::vector<VerdictEntry> Verdict(const Suite& suite, const std::vector<ResultRo
   std::vector<VerdictEntry> out;
   std::set<std::string> vessels;
   for (const ResultRow& r : rows) vessels.insert(r.vessel);
+  const std::vector<std::array<std::string, 2>> pairs = PairLabels(suite);
   for (const std::string& vessel : vessels)
     for (const std::string& train : TrainingLabels(suite)) {
       std::vector<const ResultRow*> cell_rows;
@@ -247,7 +255,7 @@ std::vector<VerdictEntry> Verdict(const Suite& suite, const std::vector<ResultRo
         if (r.vessel == vessel && r.train_maneuver == train) cell_rows.push_back(&r);
       if (cell_rows.empty()) continue;
       for (const Metric& metric : Metrics()) {
-        VerdictEntry e = Judge(vessel, train, metric, cell_rows, suite.Measured(), suite.pairs);
+        VerdictEntry e = Judge(vessel, train, metric, cell_rows, suite.Measured(), pairs);
         if (!e.ranking.empty()) out.push_back(std::move(e));
       }
     }

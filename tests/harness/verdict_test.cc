@@ -361,11 +361,12 @@ TEST_F(VerdictTest, MarkdownAndJsonReportTheRanking) {
 }
 
 // The suite's "pairs" put two methods head to head (the mission's GP-SR against
-// Eriksen-Breivik), whatever the ranking between them says: gp[+,-,*,abs] (a variant, matched by
-// its method's name) 5 points above eb-lr in 8 cells, so the median paired difference is +5 and
+// Eriksen-Breivik), whatever the ranking between them says: gp[+,-,*,abs] (the suite's gp, by its
+// label) 5 points above eb-lr in 8 cells, so the median paired difference is +5 and
 // the exact two-sided Wilcoxon p is 2 / 2^8; SINDy, within 0.2 of GP with balanced signs, cannot
 // be told from it (p 1 would be the sign test's; the ranks give more than 0.05).
 TEST_F(VerdictTest, PairsAreTestedHeadToHead) {
+  suite_.methods = {{"gp", {{"operators", "+,-,*,abs"}}}, {"eb-lr", {}}, {"sindy", {}}};
   suite_.pairs = {{"gp", "eb-lr"}, {"gp", "sindy"}};
   Add("gp[+,-,*,abs]", 8, [](size_t i) { return Base(i); });
   Add("eb-lr", 8, [](size_t i) { return Base(i) - 5.0; });
