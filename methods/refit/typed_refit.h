@@ -49,8 +49,12 @@ constexpr std::array<int, DynamicStates<V>()> DynamicIndices() {
 // reads theta[slot[i]] * scale[i], or `fixed[i]` when slot[i] is -1. Ceres differentiates by
 // every value of the block (a Jet carries K + C + kMaxRefitTerms derivatives through each
 // simulation step), so a refit of a few of a large vessel's parameters (12 of an MMG model's
-// 66) gives them a block of their own: kCompactParams values, the free ones first and the rest
-// held. With more free parameters the block is the whole vector, each in its own slot.
+// 66) gives them a block of their own: kSmallParams values when they fit (the refit of twelve
+// and the hybrid's thirteen), else kCompactParams, the free ones first and the rest held. With
+// more free parameters the block is the whole vector, each in its own slot. Two sizes, because a
+// Jet's arithmetic grows with its length and each size is a compiled copy of the refit
+// (docs/performance.md, "A refit differentiated by every parameter").
+inline constexpr int kSmallParams = 16;
 inline constexpr int kCompactParams = 24;
 
 template <Vessel V>
@@ -459,9 +463,10 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
                        const std::vector<double>& start, const RefitOptions& o) {
   const std::array<bool, V::kParams> free = detail::FreeParameters<V>(info, o.free);
   constexpr int kCompact = CompactParams<V>();
+  const auto n_free = std::count(free.begin(), free.end(), true);
   if constexpr (kCompact < V::kParams) {
-    if (std::count(free.begin(), free.end(), true) <= kCompact)
-      return detail::RefitWith<V, kCompact>(info, data, start, o, free);
+    if (n_free <= kSmallParams) return detail::RefitWith<V, kSmallParams>(info, data, start, o, free);
+    if (n_free <= kCompact) return detail::RefitWith<V, kCompact>(info, data, start, o, free);
   }
   return detail::RefitWith<V, V::kParams>(info, data, start, o, free);
 }
