@@ -48,6 +48,26 @@ Channels DefaultChannels(const IdentifyRequest& o) {
   return c;
 }
 
+Channels DefaultChannels(const IdentifyRequest& o, const Dataset& data) {
+  if (!o.vessel.empty() || (!o.states.empty() && !o.inputs.empty())) return DefaultChannels(o);
+  Channels c{o.states, o.states, o.inputs};
+  if (c.states.empty()) {
+    for (const char* state : {"u", "v", "r"})
+      if (data.Has(state)) c.states.push_back(state);
+    if (!data.Has("u") && data.Has("U")) c.states.insert(c.states.begin(), "U");
+    c.variables = c.states;
+  }
+  if (c.inputs.empty())
+    for (const std::string& command : kRecordCommands)
+      if (data.Has(command)) c.inputs.push_back(command);
+  if (c.states.empty() || c.inputs.empty())
+    throw InputError(data.SourcePrefix() +
+                     "identify: give --vessel, or --states and --inputs (the record has " +
+                     (c.states.empty() ? "none of the states u, v, r, U" : "no command among delta, n, rev, throttle, nozzle, bucket, tau_x, tau_y, tau_n, f") +
+                     " to take by default)");
+  return c;
+}
+
 ChannelFit PrepareChannelFit(const Dataset& data, const IdentifyRequest& o, Channels channels,
                              const Logger& log) {
   ChannelFit fit;

@@ -30,6 +30,16 @@ std::vector<std::string> VesselVariables(const std::string& vessel);
 // names them.
 Channels DefaultChannels(const IdentifyRequest& request);
 
+// The same; when neither the request nor a vessel names them, the record's own: the body
+// velocities u, v, r it has (U for u when it has no u) as the states, and as the inputs the
+// commands of the data contract it has (kRecordCommands, docs/data.md#channels-read-from-a-record).
+// Throws InputError when the record has no state or no command among them.
+Channels DefaultChannels(const IdentifyRequest& request, const Dataset& data);
+
+// The commands a record's own channels are read as when nothing names the inputs.
+inline const std::vector<std::string> kRecordCommands = {
+    "delta", "n", "rev", "throttle", "nozzle", "bucket", "tau_x", "tau_y", "tau_n", "f"};
+
 struct ChannelFit {
   Channels channels;
   PreparedData prepared;

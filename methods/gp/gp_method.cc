@@ -166,7 +166,7 @@ nlohmann::json UsedOptions(const MethodOptions& o, const gp::GpIdentifyOptions& 
 nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& request,
                                const MethodOptions& o, const Logger& log) {
   gp::GpIdentifyOptions gpo = GpOptionsFor(request, o);
-  ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request), log);
+  ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request, data), log);
   const double froude_per_speed =
       request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);
   const std::string features_choice = o.Text("features");

@@ -13,7 +13,7 @@ nlohmann::json IdentifyLtiModel(const Dataset& data, const IdentifyRequest& requ
   lti::LtiOptions options;
   options.ridge = o.Number("ridge");
   options.constant = o.Text("constant") == "yes";
-  ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request), log);
+  ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request, data), log);
   const lti::LtiIdentification id = lti::IdentifyLti(
       fit.prepared, fit.channels.states, fit.channels.variables, fit.channels.inputs, options);
   fit.model["parameters"] = id.parameters;

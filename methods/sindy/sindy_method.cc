@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/correlation_time.h"
 #include "core/error.h"
 #include "core/expression.h"
 #include "core/parse_number.h"
@@ -37,7 +38,8 @@ std::vector<OptionSpec> SindyOptionSpecs() {
                    "length, which takes no derivative of the data (for velocities that jump, "
                    "e.g. from GPS); 0: the derivatives; none: the derivatives, and where they "
                    "cut every term of an equation, the weak form over one hull length of travel "
-                   "(a vessel with a length; shortened to leave 10 windows a fold)"),
+                   "(a vessel with a length; else the e-folding time of the yaw rate's "
+                   "autocorrelation), shortened to leave 10 windows a fold"),
       ListOption(
           "library", {"constant", "products", "abs", "rudder"},
           {"constant", "products", "abs", "inputs", "rudder"},
@@ -103,12 +105,21 @@ std::string EmptyEquationError(const std::string& state, const nlohmann::json& d
 }
 
 // The weak form's fallback window: one hull length of travel at the record's median speed (the
-// time over which the vessel's state changes; docs/baselines.md#the-weak-form), shortened to
-// leave 10 windows a fold; 0 for a vessel without a length, or no vessel.
-double HullWindowSeconds(const Dataset& prepared, const IdentifyRequest& request, int folds) {
-  if (request.vessel.empty()) return 0.0;
-  const double hull = HullLengthSeconds(prepared, FindVessel(request.vessel).Info());
-  return hull > 0 ? sindy::LongestWeakWindow(prepared.t(), hull, 10L * folds) : 0.0;
+// time over which the vessel's state changes; docs/baselines.md#the-weak-form); without a vessel
+// or a length, the time over which the record's own yaw rate changes: the e-folding time of r's
+// autocorrelation (half its integrated correlation time, core/correlation_time.h; of the first
+// state when r is not one). Shortened to leave 10 windows a fold; 0 when neither is known.
+double WeakWindowSeconds(const Dataset& prepared, const IdentifyRequest& request,
+                         const std::vector<std::string>& states, int folds) {
+  double seconds = 0.0;
+  if (!request.vessel.empty()) seconds = HullLengthSeconds(prepared, FindVessel(request.vessel).Info());
+  if (!(seconds > 0) && !states.empty() && prepared.rows() > 8) {
+    const bool has_r = std::ranges::find(states, "r") != states.end();
+    const Eigen::VectorXd x = prepared[has_r ? "r" : states.front()];
+    const double dt = prepared.duration() / static_cast<double>(prepared.rows() - 1);
+    seconds = 0.5 * CorrelationTime(x, 1) * dt;
+  }
+  return seconds > 0 ? sindy::LongestWeakWindow(prepared.t(), seconds, 10L * folds) : 0.0;
 }
 
 // The first state whose every term was cut, or "".
@@ -119,10 +130,32 @@ std::string EmptyState(const sindy::SindyIdentification& id,
   return "";
 }
 
+// `state`'s equation in `id` replaced by the linear one: its derivative (or weak form) against the
+// constant, the state itself and each input, by least squares (the threshold 0 cuts nothing), a
+// first-order model every record supports: a rate that relaxes towards what the inputs hold.
+// The held-out path of the thresholds, as the full library found it, stays in the details.
+void FallBackToLinear(const ChannelFit& fit, const std::vector<std::string>& inputs,
+                      sindy::SindyOptions options, const std::string& state,
+                      sindy::SindyIdentification& id) {
+  options.library = LibraryOptions{};
+  options.library.constant = true;
+  options.library.products = options.library.abs_terms = false;
+  options.library.input_products = options.library.rudder_inflow = false;
+  options.thresholds = {0.0};
+  const sindy::SindyIdentification linear =
+      sindy::IdentifyWithSindy(fit.prepared, {state}, {state}, inputs, options);
+  id.equations[state] = linear.equations.at(state);
+  for (const auto& [name, value] : linear.parameters.items()) id.parameters[name] = value;
+  nlohmann::json details = linear.details.at(state);
+  details["thresholds"] = id.details.at(state).at("thresholds");
+  details["fallback"] = "linear: the held-out folds supported no term of the library";
+  id.details[state] = details;
+}
+
 nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& request,
                                   const MethodOptions& o, const Logger& log) {
   sindy::SindyOptions options = SindyOptionsFor(o);
-  ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request), log);
+  ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request, data), log);
   const double froude_per_speed =
       request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);
   const std::vector<DerivedVariable> features =
@@ -147,7 +180,8 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
   std::string empty = EmptyState(id, fit.channels.states);
   // The derivatives could not support an equation: the weak form, which takes none.
   if (!given && !empty.empty()) {
-    options.weak_window_s = HullWindowSeconds(fit.prepared.data, request, options.folds);
+    options.weak_window_s =
+        WeakWindowSeconds(fit.prepared.data, request, fit.channels.states, options.folds);
     if (options.weak_window_s > 0) {
       Log(log, "sindy: every term of " + empty + "' was cut from the derivatives; the weak form " +
                    "over " + FormatNumber(std::round(options.weak_window_s * 10) / 10) +
@@ -156,9 +190,23 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
       empty = EmptyState(id, fit.channels.states);
     }
   }
+  // Neither form supports a term of `empty` by held-out error: a threshold or window the user
+  // gave is theirs to change (an error), but at the defaults the equation falls back to the
+  // linear one (FallBackToLinear) rather than failing the fit, with a warning.
+  nlohmann::json warnings = nlohmann::json::array();
+  while (!empty.empty() && !o.Has("threshold") && !given) {
+    warnings.push_back(
+        EmptyEquationError(empty, id.details.at(empty), false, options.weak_window_s) +
+        ". Kept instead: " + empty + "' linear in " + empty + " and the inputs, with a constant, "
+        "by least squares, no term cut");
+    Log(log, "sindy: warning: every term of " + empty + "' was cut; its linear equation kept");
+    FallBackToLinear(fit, library_inputs, options, empty, id);
+    empty = EmptyState(id, fit.channels.states);
+  }
   if (!empty.empty())
     throw InputError(EmptyEquationError(empty, id.details.at(empty), o.Has("threshold"),
                                         options.weak_window_s));
+  if (!warnings.empty()) fit.model["warnings"] = warnings;
   fit.model["parameters"] = id.parameters;
   fit.model["equations"] = id.equations;
   fit.model["sindy"] = id.details;

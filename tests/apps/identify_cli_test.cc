@@ -430,7 +430,7 @@ TEST_F(IdentifyCliTest, BadOptionsAreRefused) {
        "equation"},
       {"--method hybrid --vessel msd --max-terms 9", "option 'max_terms' 9 is not allowed"},
       {"--method gp --vessel msd --derivative sg:20", "window must be odd"},
-      {"--method gp", "give --vessel, or --states and --inputs"},
+      {"--method eb-lr", "give --vessel, or --states and --inputs"},
       {"--method gp --vessel msd --preset fast", "option 'preset'"},
       {"--method gp --vessel msd --validation-fraction 0.9", "option 'validation_fraction'"},
       {"--method gp --vessel msd --validation-fraction -0.1", "option 'validation_fraction'"},

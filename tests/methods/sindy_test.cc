@@ -262,7 +262,7 @@ TEST_F(SindyTest, AnEquationWithNoTermIsAFailedFitThatSaysWhy) {
   request.method = "sindy";
   request.states = kOdinStates;
   request.inputs = kOdinInputs;
-  request.options = {{"threshold", 1e6}};
+  request.options = {{"threshold", 1e6}, {"weak_window_s", 0.0}};
   try {
     Identify(record, request);
     FAIL() << "a model of 0 was returned";
@@ -284,6 +284,49 @@ TEST_F(SindyTest, AnEquationWithNoTermIsAFailedFitThatSaysWhy) {
               std::string::npos)
         << e.what();
   }
+}
+
+// At the defaults (no threshold, no window given), an equation that neither the derivatives nor
+// the weak form support by held-out error is not a failed fit: it falls back to the linear
+// equation (the state, the inputs, a constant, by least squares), and model.json says so. Here u
+// is a random walk that no input drives: its derivative is noise to every candidate.
+TEST_F(SindyTest, AtTheDefaultsAnEquationNoTermSupportsFallsBackToTheLinearOne) {
+  const Eigen::Index n = 3000;
+  Dataset record(Eigen::VectorXd::LinSpaced(n, 0.0, 0.1 * static_cast<double>(n - 1)));
+  Eigen::VectorXd u(n), f(n);
+  uint64_t state = 777;
+  const auto uniform = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
+  };
+  double walk = 1.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    walk += 0.01 * uniform();
+    u(i) = walk;
+    f(i) = (i / 150) % 2 == 0 ? 1.0 : -1.0;
+  }
+  record.Set("u", u);
+  record.Set("f", f);
+  IdentifyRequest request;
+  request.method = "sindy";
+  request.states = {"u"};
+  request.inputs = {"f"};
+  std::vector<std::string> lines;
+  const nlohmann::json model =
+      Identify(record, request, [&](const std::string& line) { lines.push_back(line); });
+  const nlohmann::json& details = model.at("sindy").at("u");
+  EXPECT_EQ(details.at("fallback"), "linear: the held-out folds supported no term of the library");
+  EXPECT_EQ(details.at("terms"), (std::vector<std::string>{"1", "u", "f"})) << details.dump();
+  EXPECT_NE(model.at("equations").at("u"), "0");
+  ASSERT_EQ(model.at("warnings").size(), 1u);
+  EXPECT_NE(model.at("warnings")[0].get<std::string>().find("every term of u' was cut"),
+            std::string::npos);
+  EXPECT_TRUE(std::ranges::any_of(lines, [](const std::string& l) {
+    return l == "sindy: warning: every term of u' was cut; its linear equation kept";
+  }));
+  // A threshold given is the user's to change: the same record then fails, naming u'.
+  request.options = {{"threshold", 0.5}};
+  EXPECT_THROW(Identify(record, request), InputError);
 }
 
 }  // namespace
