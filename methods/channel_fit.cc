@@ -61,10 +61,12 @@ Channels DefaultChannels(const IdentifyRequest& o, const Dataset& data) {
     for (const std::string& command : kRecordCommands)
       if (data.Has(command)) c.inputs.push_back(command);
   if (c.states.empty() || c.inputs.empty())
-    throw InputError(data.SourcePrefix() +
-                     "identify: give --vessel, or --states and --inputs (the record has " +
-                     (c.states.empty() ? "none of the states u, v, r, U" : "no command among delta, n, rev, throttle, nozzle, bucket, tau_x, tau_y, tau_n, f") +
-                     " to take by default)");
+    throw InputError(
+        data.SourcePrefix() + "identify: give --vessel, or --states and --inputs (the record has " +
+        (c.states.empty()
+             ? "none of the states u, v, r, U"
+             : "no command among delta, n, rev, throttle, nozzle, bucket, tau_x, tau_y, tau_n, f") +
+        " to take by default)");
   return c;
 }
 

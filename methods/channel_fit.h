@@ -32,7 +32,8 @@ Channels DefaultChannels(const IdentifyRequest& request);
 
 // The same; when neither the request nor a vessel names them, the record's own: the body
 // velocities u, v, r it has (U for u when it has no u) as the states, and as the inputs the
-// commands of the data contract it has (kRecordCommands, docs/data.md#channels-read-from-a-record).
+// commands of the data contract it has (kRecordCommands,
+// docs/data.md#channels-read-from-a-record).
 // Throws InputError when the record has no state or no command among them.
 Channels DefaultChannels(const IdentifyRequest& request, const Dataset& data);
 

@@ -465,7 +465,8 @@ RefitResult RefitTyped(const VesselInfo& info, const Dataset& data,
   constexpr int kCompact = CompactParams<V>();
   const auto n_free = std::count(free.begin(), free.end(), true);
   if constexpr (kCompact < V::kParams) {
-    if (n_free <= kSmallParams) return detail::RefitWith<V, kSmallParams>(info, data, start, o, free);
+    if (n_free <= kSmallParams)
+      return detail::RefitWith<V, kSmallParams>(info, data, start, o, free);
     if (n_free <= kCompact) return detail::RefitWith<V, kCompact>(info, data, start, o, free);
   }
   return detail::RefitWith<V, V::kParams>(info, data, start, o, free);

@@ -71,8 +71,8 @@ sindy::SindyOptions SindyOptionsFor(const MethodOptions& o) {
 // was cut, from its details (the threshold given, or the held-out path: no term better than
 // none, or none within one standard error of the best), and what to try: the weak form, or,
 // when it was the weak form over `weak_window_s` windows already, other windows.
-std::string EmptyEquationError(const std::string& state, const nlohmann::json& details,
-                               bool given, double weak_window_s) {
+std::string EmptyEquationError(const std::string& state, const nlohmann::json& details, bool given,
+                               double weak_window_s) {
   std::ostringstream s;
   s << "sindy: every term of " << state << "' was cut: ";
   const nlohmann::json& path = details.at("thresholds");
@@ -112,7 +112,8 @@ std::string EmptyEquationError(const std::string& state, const nlohmann::json& d
 double WeakWindowSeconds(const Dataset& prepared, const IdentifyRequest& request,
                          const std::vector<std::string>& states, int folds) {
   double seconds = 0.0;
-  if (!request.vessel.empty()) seconds = HullLengthSeconds(prepared, FindVessel(request.vessel).Info());
+  if (!request.vessel.empty())
+    seconds = HullLengthSeconds(prepared, FindVessel(request.vessel).Info());
   if (!(seconds > 0) && !states.empty() && prepared.rows() > 8) {
     const bool has_r = std::ranges::find(states, "r") != states.end();
     const Eigen::VectorXd x = prepared[has_r ? "r" : states.front()];
@@ -197,15 +198,16 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
   while (!empty.empty() && !o.Has("threshold") && !given) {
     warnings.push_back(
         EmptyEquationError(empty, id.details.at(empty), false, options.weak_window_s) +
-        ". Kept instead: " + empty + "' linear in " + empty + " and the inputs, with a constant, "
+        ". Kept instead: " + empty + "' linear in " + empty +
+        " and the inputs, with a constant, "
         "by least squares, no term cut");
     Log(log, "sindy: warning: every term of " + empty + "' was cut; its linear equation kept");
     FallBackToLinear(fit, library_inputs, options, empty, id);
     empty = EmptyState(id, fit.channels.states);
   }
   if (!empty.empty())
-    throw InputError(EmptyEquationError(empty, id.details.at(empty), o.Has("threshold"),
-                                        options.weak_window_s));
+    throw InputError(
+        EmptyEquationError(empty, id.details.at(empty), o.Has("threshold"), options.weak_window_s));
   if (!warnings.empty()) fit.model["warnings"] = warnings;
   fit.model["parameters"] = id.parameters;
   fit.model["equations"] = id.equations;

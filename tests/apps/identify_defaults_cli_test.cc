@@ -42,13 +42,14 @@ TEST(IdentifyDefaultsCliTest, TheRecordsOwnStatesAndCommandsAreTheDefaults) {
   const fs::path dir = FreshTempDir();
   const std::string data = (dir / "zz.csv").string();
   ASSERT_EQ(RunUsvid("simulate --vessel kvlcc2 --maneuver zigzag:20/20 --duration 600 --noise "
-                     "0.005 --seed 1 --out " + data)
+                     "0.005 --seed 1 --out " +
+                     data)
                 .exit_code,
             0);
   for (const char* method : {"sindy", "lti"}) {
     const std::string out = (dir / (std::string(method) + ".json")).string();
-    const auto r = RunUsvid(std::string("identify --method ") + method + " --data " + data +
-                            " --out " + out);
+    const auto r =
+        RunUsvid(std::string("identify --method ") + method + " --data " + data + " --out " + out);
     ASSERT_EQ(r.exit_code, 0) << method << ": " << r.err;
     const nlohmann::json model = ReadJsonFile(out);
     EXPECT_EQ(model.at("inputs"), (std::vector<std::string>{"delta", "rev"})) << method;
@@ -64,8 +65,8 @@ TEST(IdentifyDefaultsCliTest, ARecordWithoutACommandIsNamed) {
   for (int k = 0; k < 400; ++k)
     text += std::to_string(0.1 * k) + ",1.0," + std::to_string(0.01 * (k % 7)) + ",0.0,0.1\n";
   WriteText(data, text);
-  const auto r = RunUsvid("identify --method sindy --data " + data + " --out " +
-                          (dir / "m.json").string());
+  const auto r =
+      RunUsvid("identify --method sindy --data " + data + " --out " + (dir / "m.json").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr(data + ": identify: give --vessel, or --states and --inputs"));
   EXPECT_THAT(r.err, HasSubstr("no command among delta, n, rev"));
@@ -111,17 +112,18 @@ TEST(IdentifyDefaultsCliTest, SindyFitsEverySharedRealRecordAtItsDefaults) {
   const std::vector<SharedLog> logs = SharedLogs(shared);
   for (const SharedLog& log : logs) {
     const std::string data = (dir / (fs::path(log.file).stem().string() + ".csv")).string();
-    const auto imported = RunUsvid("import " + log.import + " --data '" + log.file + "' --out " +
-                                   data);
+    const auto imported =
+        RunUsvid("import " + log.import + " --data '" + log.file + "' --out " + data);
     ASSERT_EQ(imported.exit_code, 0) << log.file << ": " << imported.err;
     const std::string out = data + ".sindy.json";
     const auto r = RunUsvid("identify --method sindy --data " + data + " --out " + out);
     ASSERT_EQ(r.exit_code, 0) << log.file << ": " << r.err;
     const nlohmann::json model = ReadJsonFile(out);
     const bool gps_only = log.file.find("usv-fuzhou") != std::string::npos;
-    ExpectEveryEquation(model, gps_only ? std::vector<std::string>{"U", "r"}
-                                        : std::vector<std::string>{"u", "v", "r"},
-                        log.file);
+    ExpectEveryEquation(
+        model,
+        gps_only ? std::vector<std::string>{"U", "r"} : std::vector<std::string>{"u", "v", "r"},
+        log.file);
     if (model.contains("warnings")) {
       ++fallbacks;
       EXPECT_THAT(model["warnings"][0].get<std::string>(), HasSubstr("Kept instead"));
