@@ -162,7 +162,7 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
   for (const auto& [f, folder] : found) {
     const std::string format = FormatOf(spec, f);
     nlohmann::json entry = {
-        {"name", "held-out " + fs::path(f).stem().string()},
+        {"name", fs::path(f).stem().string()},
         {"format", format.empty() ? like.at("format").get<std::string>() : format},
         {"file", (data_dir / f).lexically_normal().string()}};
     if (like.contains("end_at_stop")) entry["end_at_stop"] = like["end_at_stop"];

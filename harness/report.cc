@@ -43,7 +43,7 @@ std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
       values(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(t)) = median;
     }
   HeatMap map(methods, suite.test_maneuvers, values);
-  map.SetTitle(vessel + ": held-out free-run fit, median over training maneuvers, noise, seeds")
+  map.SetTitle(VesselLabel(vessel) + ": held-out free-run fit, median over training maneuvers, noise, seeds")
       .SetAxisLabels("method", "test maneuver")
       .SetValueLabel("fit", "%")
       .SetValueRange(lowest, 100.0)
@@ -80,7 +80,7 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
       if (!IsPositionOrHeading(c) || (suite.Measured() && (c == "psi" || c == "chi")))
         channels.insert(c);
   FigureGrid grid;
-  grid.SetTitle(vessel + ", held-out " + test + ": measured and free runs").SetXLabel("t", "s");
+  grid.SetTitle(VesselLabel(vessel) + ", held-out " + test + ": measured and free runs").SetXLabel("t", "s");
   // Each method keeps its colour in every panel, also where another method has no such channel.
   std::map<std::string, SeriesStyle> styles;
   for (const auto& [method, e] : runs)
@@ -130,7 +130,7 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
   for (const std::string& vessel : vessels) {
     const std::string heat = FitHeatMap(suite, rows, vessel);
     WriteFileAtomically(dir + "/fit_" + FigureName(vessel) + ".svg", heat);
-    html << "<h2>" << svg::Escape(vessel) << "</h2>\n<figure class=\"plot\">" << heat
+    html << "<h2>" << svg::Escape(VesselLabel(vessel)) << "</h2>\n<figure class=\"plot\">" << heat
          << "</figure>\n";
     // Simulated suites: the first test maneuver; measured data: every test file.
     const size_t tests = suite.Measured() ? suite.test_maneuvers.size() : 1;

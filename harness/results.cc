@@ -12,6 +12,7 @@
 #include "harness/cross_validation_table.h"
 #include "harness/verdict.h"
 #include "metrics/rank_tests.h"
+#include "simulation/vessel_simulator.h"
 
 namespace usvid {
 namespace {
@@ -264,7 +265,7 @@ void GeneralisationTable(const Suite& suite, const std::vector<ResultRow>& rows,
   if (!best.empty()) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.1f", best_other);
-    md << "\nBest training maneuver for " << m << " on " << vessel << ": **" << best
+    md << "\nBest training maneuver for " << m << " on " << VesselLabel(vessel) << ": **" << best
        << "** (median fit " << buf << " % on the other maneuvers).\n";
   }
   md << '\n';
@@ -285,7 +286,7 @@ void BestPerRegimeTable(const std::vector<ResultRow>& rows, const std::set<std::
           for (const auto& [regime, fit] : r.regime_fit_percent)
             by[regime][r.train_maneuver].push_back(fit);
       if (by.empty()) continue;
-      md << "| " << vessel << " | " << m << " |";
+      md << "| " << VesselLabel(vessel) << " | " << m << " |";
       for (const char* regime : {"displacement", "semi-displacement", "planing"}) {
         std::string best = "n/a";
         double best_fit = -INFINITY;
@@ -311,7 +312,7 @@ void FailedList(const std::vector<ResultRow>& rows, std::ostringstream& md) {
   std::set<std::string> seen;
   for (const ResultRow& r : rows)
     if (r.status != "ok" && seen.insert(r.vessel + r.train_maneuver + r.method + r.status).second)
-      md << "- " << r.vessel << " / " << r.train_maneuver << " / " << r.method << ": " << r.status
+      md << "- " << VesselLabel(r.vessel) << " / " << r.train_maneuver << " / " << r.method << ": " << r.status
          << '\n';
 }
 
@@ -393,7 +394,7 @@ std::string SummaryMarkdown(const Suite& suite, const std::vector<ResultRow>& ro
     vessels.insert(r.vessel);
   }
   for (const std::string& vessel : vessels) {
-    md << "## " << vessel << "\n";
+    md << "## " << VesselLabel(vessel) << "\n";
     HeadlineTables(suite, rows, vessel, methods, md);
     ClosedLoopTables(suite, rows, vessel, methods, md);
     MethodByTestTable(suite, rows, vessel, methods, md);

@@ -11,6 +11,7 @@
 #include "harness/cross_validation.h"
 #include "methods/nominal/nominal.h"
 #include "metrics/rank_tests.h"
+#include "simulation/vessel_simulator.h"
 
 namespace usvid {
 namespace {
@@ -323,7 +324,7 @@ std::string VerdictMarkdown(const std::vector<VerdictEntry>& verdict) {
     pairs.clear();
   };
   for (const VerdictEntry& e : verdict) {
-    const std::string h = e.vessel + ", trained on " + e.train_maneuver;
+    const std::string h = VesselLabel(e.vessel) + ", trained on " + e.train_maneuver;
     if (h != heading) {
       flush_pairs();
       heading = h;

@@ -145,6 +145,15 @@ bool IsVesselFile(const std::string& name) {
   return false;
 }
 
+std::string VesselLabel(const std::string& name) {
+  if (!IsVesselFile(name)) return name;
+  try {
+    return FindVessel(name).Info().name;
+  } catch (const InputError&) {  // a file gone since (a report re-read from results.json)
+    return std::filesystem::path(name).stem().string();
+  }
+}
+
 bool VesselInfo::IsMeasuredInput(size_t i) const {
   return i < actuation.roles.size() && actuation.roles[i] == InputRole::kMeasured;
 }

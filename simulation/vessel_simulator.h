@@ -97,5 +97,9 @@ std::vector<std::string> VesselNames();
 std::string VesselChoices();
 // Whether `name` names a vessel file (by its extension; the file may not exist).
 bool IsVesselFile(const std::string& name);
+// How a vessel is named to a reader (tables, headings, plot titles): a vessel file's `name:` (its
+// stem when it has none, or when the file cannot be read), not the path it was read from; a
+// compiled-in vessel's name as given.
+std::string VesselLabel(const std::string& name);
 
 }  // namespace usvid

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/csv_tokenizer.h"
 #include "core/json_file.h"
 #include "tests/apps/run_usvid.h"
 
@@ -48,14 +49,16 @@ std::vector<std::string> RefusedRows(const fs::path& out, int& rows) {
   return refused;
 }
 
-void ExpectNoRowRefused(const std::string& args) {
+// The output folder, for more checks.
+fs::path ExpectNoRowRefused(const std::string& args) {
   const fs::path out = FreshTempDir() / "out";
   const auto r = RunUsvid("compare " + args + " --threads 2 --out " + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.exit_code, 0) << r.err;
   int rows = 0;
   const std::vector<std::string> refused = RefusedRows(out, rows);
   EXPECT_GT(rows, 0) << args;
   EXPECT_THAT(refused, ::testing::IsEmpty()) << args << ": " << refused.size() << " of " << rows;
+  return out;
 }
 
 TEST(EmbeddedSuitesSmokeTest, RealisticScoresEveryRow) {
@@ -69,7 +72,16 @@ TEST(EmbeddedSuitesSmokeTest, RealisticMeasuredScoresEveryRow) {
 TEST(EmbeddedSuitesSmokeTest, RealScoresEveryRowOfEveryTrack) {
   const std::string data = USVID_SHARED_DATA_DIR;
   if (!fs::exists(data + "/kvlcc2-hsva")) GTEST_SKIP() << "shared data absent: " << data;
-  ExpectNoRowRefused("--suite real --quick --data-dir " + data);
+  const fs::path out = ExpectNoRowRefused("--suite real --quick --data-dir " + data);
+  // The vessel is named by its file's name: (esso-osaka), not the path of the copy the suite
+  // reads; and a further run by its file's stem, not "held-out held-out ..." in the report.
+  const std::string summary = ReadTextFile((out / "esso-osaka" / "summary.md").string());
+  EXPECT_THAT(summary, ::testing::HasSubstr("### esso-osaka, trained on"));
+  EXPECT_THAT(summary, ::testing::HasSubstr("\n## esso-osaka\n"));
+  EXPECT_THAT(summary, ::testing::Not(::testing::HasSubstr("vessels/esso-osaka.yaml")));
+  const std::string report = ReadTextFile((out / "esso-osaka" / "report.html").string());
+  EXPECT_THAT(report, ::testing::Not(::testing::HasSubstr("held-out held-out")));
+  EXPECT_THAT(report, ::testing::Not(::testing::HasSubstr("vessels/esso-osaka.yaml")));
 }
 
 }  // namespace

@@ -69,8 +69,8 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
   const SuiteTrack& esso = tracks[1];
   EXPECT_EQ(kvlcc2.name, "kvlcc2");
   EXPECT_THAT(TestNames(kvlcc2.suite),
-              ::testing::ElementsAre("zigzag -20/20", "turning 35", "held-out other_tank_a",
-                                     "held-out other_tank_b", "held-out other_tank_c"));
+              ::testing::ElementsAre("zigzag -20/20", "turning 35", "other_tank_a",
+                                     "other_tank_b", "other_tank_c"));
   // The folder holds both kinds of test: each further run's is read from its record, and is
   // the spec the track gives the same record by hand.
   const std::vector<SuiteData>& tests = kvlcc2.suite.test_data;
@@ -95,21 +95,21 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
     for (const auto& e : fs::directory_iterator(data / "esso-osaka" / sub))
       runs += e.path().extension() == ".csv";
   EXPECT_EQ(static_cast<long>(names.size()), runs - 8);
-  EXPECT_THAT(names, ::testing::Contains("held-out zigzag_from_the_paper"));
+  EXPECT_THAT(names, ::testing::Contains("zigzag_from_the_paper"));
   EXPECT_THAT(names, ::testing::Contains("zigzag 31-Jul 13:04"));
-  const auto added = std::find(names.begin(), names.end(), "held-out zigzag_from_the_paper");
+  const auto added = std::find(names.begin(), names.end(), "zigzag_from_the_paper");
   const SuiteData& run = esso.suite.test_data[added - names.begin()];
   EXPECT_EQ(run.format, "csv-log");
   EXPECT_EQ(run.map, esso.suite.test_data.front().map);
   EXPECT_EQ(run.end_at_stop, "n");  // as every listed test run: the recovery is dropped
   // Re-run closed-loop as the record says: 13:04 is the study's zigzag:20/20.
   EXPECT_EQ(run.maneuver, "zigzag:20/20");
+  // The further runs are named by their file's stem (a listed run by the study's name).
   for (const SuiteData& d : esso.suite.test_data) {
-    if (!d.name.starts_with("held-out ")) continue;
-    if (d.name.starts_with("held-out turn_")) {
+    if (d.name.starts_with("turn_")) {
       EXPECT_THAT(d.maneuver, ::testing::MatchesRegex("turning:-?(20|35)")) << d.name;
     }
-    if (d.name.starts_with("held-out random_")) {
+    if (d.name.starts_with("random_")) {
       EXPECT_EQ(d.maneuver, "") << d.name;
     }
   }
@@ -156,9 +156,9 @@ TEST(RealSuiteTest, CrossValidatedTracksLeaveOutEveryRunOfTheFolder) {
   // Every run of the plain track, its eight training files split, but the cut copy of 15:58.
   EXPECT_EQ(names.size(), plain[1].suite.test_maneuvers.size() + 8 - 1);
   EXPECT_THAT(names, ::testing::Contains("8 runs: zigzag_31-Jul-2020_13_14_21"));
-  EXPECT_THAT(names, ::testing::Contains("held-out turn_14-Sep-2020_15_58_08"));
-  EXPECT_THAT(names, ::testing::Not(::testing::Contains("held-out turn_cut_14-Sep-2020_15_58_08")));
-  EXPECT_THAT(names, ::testing::Contains("held-out turn_cut_14-Sep-2020_16_09_02"));  // alone
+  EXPECT_THAT(names, ::testing::Contains("turn_14-Sep-2020_15_58_08"));
+  EXPECT_THAT(names, ::testing::Not(::testing::Contains("turn_cut_14-Sep-2020_15_58_08")));
+  EXPECT_THAT(names, ::testing::Contains("turn_cut_14-Sep-2020_16_09_02"));  // alone
   for (const SuiteData& d : esso.test_data) {
     EXPECT_EQ(d.end_at_stop, "n") << d.name;
     ASSERT_EQ(d.files.size(), 1u) << d.name;
@@ -180,7 +180,7 @@ TEST(RealSuiteTest, CrossValidatedTracksLeaveOutEveryRunOfTheFolder) {
   EXPECT_EQ(refit_rows(plain[1].suite), nlohmann::json());  // all 30642 rows without --cv
   const std::string notes = ::testing::PrintToString(tracks[1].notes);
   EXPECT_THAT(notes, HasSubstr("each fold's refit fits at most 20000 rows"));
-  EXPECT_THAT(notes, HasSubstr("a cut copy of 'held-out turn_14-Sep-2020_15_58_08'"));
+  EXPECT_THAT(notes, HasSubstr("a cut copy of 'turn_14-Sep-2020_15_58_08'"));
   EXPECT_THAT(notes, HasSubstr("cross-validation over " + std::to_string(names.size()) + " runs"));
 }
 

@@ -46,7 +46,10 @@ TEST(UsvFuzhouTest, NomotoModelOfTheWholeLog) {
 
 // Held out: the last 70 s. The Nomoto model's two constants carry over. SINDy, which must find
 // its terms in a 2 Hz derivative of a GPS heading, finds none that beats no term by more than
-// the folds' spread, and says so: a failed fit, not "r' = 0" (issue 38). GP's outcome here is
+// the folds' spread, in the derivatives or the weak form; at its defaults it then keeps r's
+// linear equation (r, delta and a constant by least squares: Nomoto's form, fitted to the
+// derivative rather than by simulation), never "r' = 0" (issue 38), and scores a little below
+// Nomoto on r and well below on the heading it integrates. GP's outcome here is
 // chaotic: which terms its search keeps changes with the last bit of libm's results, so on one
 // machine two seeds of three beat Nomoto and on another none did (docs/real-data.md). The test
 // therefore pins only what holds on every machine: each GP seed is scored, with finite fits.
@@ -59,11 +62,6 @@ TEST(UsvFuzhouTest, MethodsOnTheHeldBackPart) {
   const nlohmann::json results = ReadJsonFile((dir / "study" / "results.json").string());
   std::map<std::string, std::vector<std::pair<double, double>>> fits;
   for (const auto& row : results.at("rows")) {
-    if (row.at("method") == "sindy") {
-      EXPECT_THAT(row.at("status").get<std::string>(),
-                  ::testing::HasSubstr("failed: sindy: every term of r' was cut"));
-      continue;
-    }
     ASSERT_EQ(row.at("status"), "ok") << row.dump();
     const auto& c = row.at("channel_fit_percent");
     fits[row.at("method")].emplace_back(c.at("r"), c.at("psi"));
@@ -71,6 +69,9 @@ TEST(UsvFuzhouTest, MethodsOnTheHeldBackPart) {
   ASSERT_EQ(fits.at("nomoto").size(), 1u);
   EXPECT_NEAR(fits.at("nomoto")[0].first, 48.3, 1.0);
   EXPECT_NEAR(fits.at("nomoto")[0].second, 75.7, 1.0);
+  ASSERT_EQ(fits.at("sindy").size(), 1u);
+  EXPECT_NEAR(fits.at("sindy")[0].first, 46.0, 1.0);
+  EXPECT_LT(fits.at("sindy")[0].second, fits.at("nomoto")[0].second);
   ASSERT_EQ(fits.at("gp[+,-,*]").size(), 3u);
   for (const auto& [r_fit, psi_fit] : fits.at("gp[+,-,*]"))
     EXPECT_TRUE(std::isfinite(r_fit) && std::isfinite(psi_fit));

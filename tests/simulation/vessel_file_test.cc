@@ -247,5 +247,14 @@ TEST(VesselFileTest, ParticularsOutsideTheFormulasRangeAreWarnedOf) {
   EXPECT_NE(v.warnings.front().find("C_b"), std::string::npos) << v.warnings.front();
 }
 
+// A reader sees a vessel file by its `name:`, not by the path it was read from (the real suite
+// reads its vessel from a copy under the output folder): kvlcc2.yaml names itself kvlcc2-file;
+// a compiled-in vessel keeps its name; a file that cannot be read is named by its stem.
+TEST(VesselFileTest, ReadersSeeTheFilesNameNotItsPath) {
+  EXPECT_EQ(VesselLabel(kKvlcc2File), "kvlcc2-file");
+  EXPECT_EQ(VesselLabel("odin-hs"), "odin-hs");
+  EXPECT_EQ(VesselLabel("/no/such/folder/my-boat.yaml"), "my-boat");
+}
+
 }  // namespace
 }  // namespace usvid
