@@ -2,8 +2,8 @@
 // default (or none: the method decides, and its help says how) and one line of help. From that
 // one declaration come the command line's flags (max_depth is --max-depth), the checks of a
 // suite's method entry and of Python's keyword options, the echo of the options used in
-// model.json ("options"), and the reference page docs/options.md (`usvid identify
-// --list-options`). Ceres's Solver::Options::IsValid and PySINDy's per-component constructor
+// model.json ("options"), and the reference page docs/options.md (`usvid methods
+// --markdown`). Ceres's Solver::Options::IsValid and PySINDy's per-component constructor
 // arguments are the models: every value is checked where it is read in, before any fit, and
 // the error names the method, the key and what is allowed.
 #pragma once
