@@ -4,7 +4,9 @@
 //  - diagnose: the nominal vessel extended by the causes `usvid diagnose` names on the training
 //    record (diagnosis/diagnose.h); a vessel model;
 //  - external: a command outside usvid, run on the training record (harness/external_method.h).
-// The harness checks, fits and labels through this registry, never by spelling a name.
+// The harness checks, fits and labels through this registry. One method it tells apart by its
+// name constant, kExternalMethod: an external row is labelled by its `name` option and keeps no
+// model to re-score (harness/suite.cc, harness/cell_store.cc).
 #pragma once
 
 #include <string>

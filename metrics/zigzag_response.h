@@ -11,15 +11,14 @@
 // each reversal is ordered where the rudder leaves its full angle, at base + B on one side and
 // base - B on the other, so the midpoint of two successive orders' headings is the base course
 // (the helm's reaction beyond B falls out, being the same both sides). It is not always the
-// heading at the execute: MARIN's KVLCC2 zig-zags reverse at +-20.6 deg about 0 deg, the ordered
-// course, while the execute found the ship 0.56 and 1.12 deg off it, and overshoots read from
-// there differ by twice that between port and starboard (docs/compare.md#the-base-course). The
+// heading at the execute: a ship a little off the ordered course at the execute reads overshoots
+// that differ by twice that offset between port and starboard (MARIN's KVLCC2 zig-zags, measured
+// in docs/real-data.md#kvlcc2-base-course). The
 // base course is psi0 (ITTC's) unless the orders give another clearly: at least one pair, an
 // offset beyond the orders' resolution (a sample's turn), and a clean test: the orders'
 // distances from the base course span at most 1 deg and lie between B - 0.5 and B + 2 deg (a
-// helm that reacts late, by as much each time; MARIN's span 0.1-0.2 deg). Reversals ordered by hand
-// at scattered headings (the Esso Osaka pond's, in wind: docs/real-data.md#kvlcc2-base-course) say
-// no base course but the execute's. Works with either rudder sign convention (the turning direction
+// helm that reacts late, by as much each time). Reversals ordered by hand at scattered headings
+// (a pond in wind) say no base course but the execute's. Works with either rudder sign convention (the turning direction
 // is read from the heading). A heading that wraps at +-pi, as logs write it, is unwrapped first
 // (core/angles.h), and a noisy one smoothed (metrics/criteria_smoothing.h): the furthest raw sample
 // would be a noise peak.
