@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -9,6 +10,9 @@
 
 #include "core/atomic_file.h"
 #include "harness/markdown_html.h"
+#include "harness/plan_view.h"
+#include "methods/nominal/nominal.h"
+#include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
 #include "metrics/rank_tests.h"
 #include "plot/figure_grid.h"
@@ -43,7 +47,8 @@ std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
       values(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(t)) = median;
     }
   HeatMap map(methods, suite.test_maneuvers, values);
-  map.SetTitle(VesselLabel(vessel) + ": held-out free-run fit, median over training maneuvers, noise, seeds")
+  map.SetTitle(VesselLabel(vessel) +
+               ": held-out free-run fit, median over training maneuvers, noise, seeds")
       .SetAxisLabels("method", "test maneuver")
       .SetValueLabel("fit", "%")
       .SetValueRange(lowest, 100.0)
@@ -71,7 +76,8 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
                             suite.conditions);
   }
   std::map<std::string, Evaluation> runs;
-  for (const auto& [method, r] : chosen) runs[method] = EvaluateModel(r->model, held, EvaluationScope::kFreeRunOnly);
+  for (const auto& [method, r] : chosen)
+    runs[method] = EvaluateModel(r->model, held, EvaluationScope::kFreeRunOnly);
   // The states the models identify (a vessel model: its dynamic states), and on measured data
   // the heading too.
   std::set<std::string> channels;
@@ -80,7 +86,8 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
       if (!IsPositionOrHeading(c) || (suite.Measured() && (c == "psi" || c == "chi")))
         channels.insert(c);
   FigureGrid grid;
-  grid.SetTitle(VesselLabel(vessel) + ", held-out " + test + ": measured and free runs").SetXLabel("t", "s");
+  grid.SetTitle(VesselLabel(vessel) + ", held-out " + test + ": measured and free runs")
+      .SetXLabel("t", "s");
   // Each method keeps its colour in every panel, also where another method has no such channel.
   std::map<std::string, SeriesStyle> styles;
   for (const auto& [method, e] : runs)
@@ -97,6 +104,38 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
     grid.Add(std::move(p));
   }
   return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));
+}
+
+// The plan views of a measured test that holds a zig-zag or a turning circle (harness/plan_view.h):
+// the record, nominal and the three methods of best median free-run fit over the vessel's rows,
+// each replayed as trained on the first training data it fitted.
+std::vector<std::string> TestPlanViews(const Suite& suite, const std::vector<ResultRow>& rows,
+                                       const std::string& vessel, const std::string& test) {
+  const SuiteData* data = nullptr;
+  for (const SuiteData& d : suite.test_data)
+    if (d.name == test) data = &d;
+  if (data == nullptr || data->maneuver.empty()) return {};
+  std::map<std::string, std::vector<double>> fits;
+  std::map<std::string, const ResultRow*> model;  // method -> its row on this test
+  for (const ResultRow& r : rows) {
+    if (r.vessel != vessel || r.status != "ok") continue;
+    if (std::isfinite(r.mean_fit_percent)) fits[r.method].push_back(r.mean_fit_percent);
+    if (r.test_maneuver == test && !model.count(r.method) && !r.model.is_null())
+      model[r.method] = &r;
+  }
+  std::vector<std::pair<double, std::string>> ranked;
+  for (const auto& [method, f] : fits)
+    if (model.count(method) && method != kNominalMethodName)
+      ranked.emplace_back(-Median(f), method);
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::pair<std::string, nlohmann::json>> drawn;
+  const std::string nominal(kNominalMethodName);
+  if (model.count(nominal)) drawn.emplace_back(nominal, model.at(nominal)->model);
+  for (size_t i = 0; i < std::min<size_t>(3, ranked.size()); ++i)
+    drawn.emplace_back(ranked[i].second, model.at(ranked[i].second)->model);
+  const Dataset held = LoadSuiteData(*data);
+  const std::string spec = RecordedManeuverSpec(data->maneuver, vessel, held);
+  return PlanView(VesselLabel(vessel) + ", held-out " + test, vessel, spec, held, drawn);
 }
 
 // A vessel's part of a figure's file name: a vessel file's stem (docs/vessels/files/esso-osaka.yaml
@@ -120,7 +159,8 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
       << svg::Escape(suite.name)
       << "</title>\n<style>body{font-family:sans-serif;max-width:1060px;margin:2em auto;color:#222}"
          "table{border-collapse:collapse;margin:1em 0}td{border:1px solid #ccc;padding:3px 8px;"
-         "font-size:13px}th{border:1px solid #ccc;padding:3px 8px;font-size:13px;background:#f3f3f3}"
+         "font-size:13px}th{border:1px solid #ccc;padding:3px "
+         "8px;font-size:13px;background:#f3f3f3}"
          "figure{margin:1.5em 0}</style></head><body>\n";
   html << "<h1>usvid compare: " << svg::Escape(suite.name) << "</h1>\n";
   // The verdict opens the report, as it opens summary.md; the rest of the summary follows the
@@ -141,6 +181,15 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
           dir + "/run_" + FigureName(vessel) + (t == 0 ? "" : "_" + std::to_string(t + 1)) + ".svg",
           run);
       html << "<figure class=\"plot\">" << run << "</figure>\n";
+      if (!suite.Measured()) continue;
+      const std::vector<std::string> plans =
+          TestPlanViews(suite, rows, vessel, suite.test_maneuvers[t]);
+      for (size_t p = 0; p < plans.size(); ++p) {
+        WriteFileAtomically(dir + "/plan_" + FigureName(vessel) + "_" + std::to_string(t + 1) +
+                                (p == 0 ? "" : "_heading") + ".svg",
+                            plans[p]);
+        html << "<figure class=\"plot\">" << plans[p] << "</figure>\n";
+      }
     }
   }
   if (rest != std::string::npos) html << MarkdownToHtml(summary.substr(rest));

@@ -616,13 +616,18 @@ ManeuverScorer::ManeuverScorer(const std::string& vessel, const std::string& spe
   }
 }
 
+ClosedLoopReplay ManeuverScorer::Replay(const nlohmann::json& model) const {
+  return ReplayManeuver(model, vessel_, spec_, recorded_, replayed_from_s_.has_value(),
+                        base_course_offset_rad_);
+}
+
 nlohmann::json ManeuverScorer::Score(const nlohmann::json& model) const {
   nlohmann::json out = {{"maneuver", spec_}};
   const bool cut = replayed_from_s_.has_value();
   if (cut) out["replayed_from_s"] = *replayed_from_s_;
   ClosedLoopReplay replay;
   try {
-    replay = ReplayManeuver(model, vessel_, spec_, recorded_, cut, base_course_offset_rad_);
+    replay = Replay(model);
   } catch (const InputError& e) {
     out["status"] = std::string("not replayable: ") + e.what();
     return out;

@@ -84,6 +84,13 @@ class ManeuverScorer {
   // whose first turn goes the other way than `spec`'s.
   ManeuverScorer(const std::string& vessel, const std::string& spec, const Dataset& recorded);
   nlohmann::json Score(const nlohmann::json& model) const;
+  // The replay Score reads its criteria from (the report's plan views, harness/plan_view.h);
+  // throws InputError when the model cannot be replayed.
+  ClosedLoopReplay Replay(const nlohmann::json& model) const;
+  // The record as the replays start from it: cut from its lead-in, derived channels added.
+  const Dataset& recorded() const { return recorded_; }
+  const std::string& rudder() const { return rudder_; }
+  double base_course_offset_rad() const { return base_course_offset_rad_; }
 
  private:
   std::string vessel_, spec_, rudder_;

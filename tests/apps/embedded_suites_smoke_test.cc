@@ -40,10 +40,9 @@ std::vector<std::string> RefusedRows(const fs::path& out, int& rows) {
                                      : std::string("ok");
       const bool fitted = !replay.starts_with("not replayed: the fit failed");
       if (fitted && (status != "ok" || replay.starts_with("not replayed")))
-        refused.push_back(e.path().parent_path().filename().string() + " " +
-                          row.at("method").get<std::string>() + " on " +
-                          row.at("test_maneuver").get<std::string>() + ": " + status + " / " +
-                          replay);
+        refused.push_back(
+            e.path().parent_path().filename().string() + " " + row.at("method").get<std::string>() +
+            " on " + row.at("test_maneuver").get<std::string>() + ": " + status + " / " + replay);
     }
   }
   return refused;
@@ -82,6 +81,18 @@ TEST(EmbeddedSuitesSmokeTest, RealScoresEveryRowOfEveryTrack) {
   const std::string report = ReadTextFile((out / "esso-osaka" / "report.html").string());
   EXPECT_THAT(report, ::testing::Not(::testing::HasSubstr("held-out held-out")));
   EXPECT_THAT(report, ::testing::Not(::testing::HasSubstr("vessels/esso-osaka.yaml")));
+  // A plan view of each held-out turning circle and zig-zag (harness/plan_view.h): KVLCC2's
+  // tc_35 with its advance and tactical diameter marked, zz_-20 with heading and rudder beside.
+  const fs::path kvlcc2 = out / "kvlcc2";
+  const std::string circle = ReadTextFile((kvlcc2 / "plan_kvlcc2_2.svg").string());
+  for (const char* text : {"plan from the execute", "east [m]", "north [m]", "measured",
+                           "turned 90 deg: the advance", "turned 180 deg: the tactical diameter"})
+    EXPECT_THAT(circle, ::testing::HasSubstr(text));
+  const std::string zigzag = ReadTextFile((kvlcc2 / "plan_kvlcc2_1_heading.svg").string());
+  for (const char* text : {"heading turned [deg]", "delta [deg]", "base course +-20"})
+    EXPECT_THAT(zigzag, ::testing::HasSubstr(text));
+  EXPECT_THAT(ReadTextFile((kvlcc2 / "report.html").string()),
+              ::testing::HasSubstr("turned 180 deg: the tactical diameter"));
 }
 
 }  // namespace
