@@ -18,6 +18,7 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 struct Track {
   std::string label;
   Dataset run;
+  bool diverged = false;  // drawn, clipped, but not setting the scale
 };
 
 // B of "zigzag:A/B" (or A when B is not given, 20 for "zigzag"): the heading check.
@@ -42,7 +43,8 @@ Eigen::Index FirstTurned(const Eigen::VectorXd& turned, double deg) {
   return -1;
 }
 
-// North against east from each track's first position, on one scale, the turning marks added.
+// North against east from each track's first position, on one scale (set by the tracks that did
+// not diverge), the turning marks added.
 std::string Plan(const std::string& title, const std::vector<Track>& tracks, bool turning) {
   LinePlot plot;
   plot.SetTitle(title + ": plan from the execute's lead-in")
@@ -55,8 +57,10 @@ std::string Plan(const std::string& title, const std::vector<Track>& tracks, boo
     const Dataset& run = tracks[i].run;
     const Eigen::VectorXd e = run["east"].array() - run["east"](0);
     const Eigen::VectorXd n = run["north"].array() - run["north"](0);
-    lo_e = std::min(lo_e, e.minCoeff()), hi_e = std::max(hi_e, e.maxCoeff());
-    lo_n = std::min(lo_n, n.minCoeff()), hi_n = std::max(hi_n, n.maxCoeff());
+    if (!tracks[i].diverged && e.allFinite() && n.allFinite()) {
+      lo_e = std::min(lo_e, e.minCoeff()), hi_e = std::max(hi_e, e.maxCoeff());
+      lo_n = std::min(lo_n, n.minCoeff()), hi_n = std::max(hi_n, n.maxCoeff());
+    }
     plot.AddSeries(tracks[i].label, e, n,
                    i == 0 ? SeriesStyle::Measured() : PaletteStyle(SeriesStyle::Dashed(), i - 1));
     if (!turning || !run.Has("psi")) continue;
@@ -127,7 +131,8 @@ std::vector<std::string> PlanView(
       try {
         const ClosedLoopReplay replay = scorer.Replay(model);
         if (!replay.run.Has("north") || !replay.run.Has("east")) continue;
-        tracks.push_back({label + (replay.diverged ? ", diverged" : ""), replay.run});
+        tracks.push_back(
+            {label + (replay.diverged ? ", diverged" : ""), replay.run, replay.diverged});
       } catch (const InputError&) {
         // Not replayable (an open-loop model of other inputs): its row says why.
       }

@@ -59,11 +59,13 @@ std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
 // One held-out run (test maneuver `test`, first noise level and seed) against every method
 // trained on the first training maneuver each could fit.
 std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
-                       const std::string& vessel, const std::string& test) {
+                       const std::string& vessel, const std::string& test,
+                       const std::set<std::string>& only = {}) {
   std::map<std::string, const ResultRow*> chosen;  // method -> row
   for (const ResultRow& r : rows)
     if (r.vessel == vessel && r.test_maneuver == test && r.status == "ok" &&
-        r.noise == suite.noise.front() && r.seed == suite.seeds.front() && !chosen.count(r.method))
+        r.noise == suite.noise.front() && r.seed == suite.seeds.front() &&
+        !chosen.count(r.method) && (only.empty() || only.contains(r.method)))
       chosen[r.method] = &r;
   if (chosen.empty()) return "";
   const ResultRow& first = *chosen.begin()->second;
@@ -106,33 +108,44 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
   return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));
 }
 
+// What a figure shows by default, so that it stays readable: nominal, then the `n` methods with
+// the best median free-run fit over the vessel's rows (those with a finite one).
+std::vector<std::string> ShownMethods(const std::vector<ResultRow>& rows, const std::string& vessel,
+                                      size_t n) {
+  std::map<std::string, std::vector<double>> fits;
+  bool nominal = false;
+  for (const ResultRow& r : rows) {
+    if (r.vessel != vessel || r.status != "ok") continue;
+    nominal = nominal || r.method == kNominalMethodName;
+    if (std::isfinite(r.mean_fit_percent)) fits[r.method].push_back(r.mean_fit_percent);
+  }
+  std::vector<std::pair<double, std::string>> ranked;
+  for (const auto& [method, f] : fits)
+    if (method != kNominalMethodName) ranked.emplace_back(-Median(f), method);
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> shown;
+  if (nominal) shown.emplace_back(kNominalMethodName);
+  for (size_t i = 0; i < std::min(n, ranked.size()); ++i) shown.push_back(ranked[i].second);
+  return shown;
+}
+
 // The plan views of a measured test that holds a zig-zag or a turning circle (harness/plan_view.h):
-// the record, nominal and the three methods of best median free-run fit over the vessel's rows,
-// each replayed as trained on the first training data it fitted.
+// the record and the methods ShownMethods picks, each replayed as trained on the first training
+// data it fitted.
 std::vector<std::string> TestPlanViews(const Suite& suite, const std::vector<ResultRow>& rows,
                                        const std::string& vessel, const std::string& test) {
   const SuiteData* data = nullptr;
   for (const SuiteData& d : suite.test_data)
     if (d.name == test) data = &d;
   if (data == nullptr || data->maneuver.empty()) return {};
-  std::map<std::string, std::vector<double>> fits;
   std::map<std::string, const ResultRow*> model;  // method -> its row on this test
-  for (const ResultRow& r : rows) {
-    if (r.vessel != vessel || r.status != "ok") continue;
-    if (std::isfinite(r.mean_fit_percent)) fits[r.method].push_back(r.mean_fit_percent);
-    if (r.test_maneuver == test && !model.count(r.method) && !r.model.is_null())
+  for (const ResultRow& r : rows)
+    if (r.vessel == vessel && r.status == "ok" && r.test_maneuver == test &&
+        !model.count(r.method) && !r.model.is_null())
       model[r.method] = &r;
-  }
-  std::vector<std::pair<double, std::string>> ranked;
-  for (const auto& [method, f] : fits)
-    if (model.count(method) && method != kNominalMethodName)
-      ranked.emplace_back(-Median(f), method);
-  std::sort(ranked.begin(), ranked.end());
   std::vector<std::pair<std::string, nlohmann::json>> drawn;
-  const std::string nominal(kNominalMethodName);
-  if (model.count(nominal)) drawn.emplace_back(nominal, model.at(nominal)->model);
-  for (size_t i = 0; i < std::min<size_t>(3, ranked.size()); ++i)
-    drawn.emplace_back(ranked[i].second, model.at(ranked[i].second)->model);
+  for (const std::string& method : ShownMethods(rows, vessel, 3))
+    if (model.count(method)) drawn.emplace_back(method, model.at(method)->model);
   const Dataset held = LoadSuiteData(*data);
   const std::string spec = RecordedManeuverSpec(data->maneuver, vessel, held);
   return PlanView(VesselLabel(vessel) + ", held-out " + test, vessel, spec, held, drawn);
@@ -174,13 +187,28 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
          << "</figure>\n";
     // Simulated suites: the first test maneuver; measured data: every test file.
     const size_t tests = suite.Measured() ? suite.test_maneuvers.size() : 1;
+    // Many methods on one figure are unreadable: nominal and the best three, every method a
+    // click away (an HTML <details>, no script).
+    const std::vector<std::string> shown = ShownMethods(rows, vessel, 3);
+    std::set<std::string> methods;
+    for (const ResultRow& r : rows)
+      if (r.vessel == vessel) methods.insert(r.method);
+    const bool all_shown = methods.size() <= shown.size();
     for (size_t t = 0; t < tests; ++t) {
       const std::string run = ExampleRun(suite, rows, vessel, suite.test_maneuvers[t]);
       if (run.empty()) continue;
       WriteFileAtomically(
           dir + "/run_" + FigureName(vessel) + (t == 0 ? "" : "_" + std::to_string(t + 1)) + ".svg",
           run);
-      html << "<figure class=\"plot\">" << run << "</figure>\n";
+      if (all_shown) {
+        html << "<figure class=\"plot\">" << run << "</figure>\n";
+      } else {
+        html << "<figure class=\"plot\">"
+             << ExampleRun(suite, rows, vessel, suite.test_maneuvers[t],
+                           {shown.begin(), shown.end()})
+             << "</figure>\n<details><summary>every method (" << methods.size()
+             << ")</summary><figure class=\"plot\">" << run << "</figure></details>\n";
+      }
       if (!suite.Measured()) continue;
       const std::vector<std::string> plans =
           TestPlanViews(suite, rows, vessel, suite.test_maneuvers[t]);

@@ -65,6 +65,37 @@ TEST_F(CompareCliTest, WritesEveryOutputAndAReportWithFigures) {
   EXPECT_THAT(ReadTextFile((out / "summary.md").string()), HasSubstr("Best training maneuver"));
 }
 
+// With more methods than a figure can show legibly, the report's run figure shows nominal and
+// the three of best median fit, and every method behind a toggle (an HTML <details>, no script).
+TEST_F(CompareCliTest, ManyMethodsShowTheBestThreeAndEveryMethodOnAToggle) {
+  const std::string suite = (dir_ / "many.json").string();
+  WriteText(suite,
+            nlohmann::json{{"name", "many"},
+                           {"vessels", {"odin3dof"}},
+                           {"train_maneuvers", {"random-steps"}},
+                           {"test_maneuvers", {"random-steps"}},
+                           {"methods", {"nominal", "sindy", "lti", "fossen-ceres", "nomoto"}},
+                           {"noise", {0.005}},
+                           {"seeds", {1}},
+                           {"train_seconds", 120},
+                           {"test_seconds", 60}}
+                .dump());
+  const auto out = dir_ / "many";
+  const auto r = RunUsvid("compare --suite " + suite + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string html = ReadTextFile((out / "report.html").string());
+  const size_t toggle = html.find("<details><summary>every method (5)</summary>");
+  ASSERT_NE(toggle, std::string::npos);
+  // The figure before the toggle: four series of models (nominal and three) and the record.
+  const size_t figure = html.rfind("<figure", toggle);
+  const std::string shown = html.substr(figure, toggle - figure);
+  EXPECT_THAT(shown, HasSubstr("nominal"));
+  int methods = 0;
+  for (const char* m : {"sindy", "lti", "fossen-ceres", "nomoto"})
+    methods += shown.find(std::string(m) + " (trained on") != std::string::npos;
+  EXPECT_EQ(methods, 3);
+}
+
 TEST_F(CompareCliTest, BaselineMarksWhatGotWorse) {
   const auto first = dir_ / "first";
   ASSERT_EQ(RunUsvid("compare --suite " + suite_ + " --out " + first.string()).exit_code, 0);
