@@ -2,6 +2,7 @@
 // methods/method_list.h.
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "core/correlation_time.h"
@@ -195,7 +196,8 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
   // gave is theirs to change (an error), but at the defaults the equation falls back to the
   // linear one (FallBackToLinear) rather than failing the fit, with a warning.
   nlohmann::json warnings = nlohmann::json::array();
-  while (!empty.empty() && !o.Has("threshold") && !given) {
+  std::set<std::string> linear;  // once each: a state whose linear equation is 0 too fails
+  while (!empty.empty() && !o.Has("threshold") && !given && linear.insert(empty).second) {
     warnings.push_back(
         EmptyEquationError(empty, id.details.at(empty), false, options.weak_window_s) +
         ". Kept instead: " + empty + "' linear in " + empty +
