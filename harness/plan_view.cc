@@ -6,6 +6,7 @@
 
 #include "core/angles.h"
 #include "core/error.h"
+#include "maneuvers/maneuver_spec.h"
 #include "metrics/closed_loop_replay.h"
 #include "plot/figure_grid.h"
 #include "plot/svg_plot.h"
@@ -21,13 +22,11 @@ struct Track {
   bool diverged = false;  // drawn, clipped, but not setting the scale
 };
 
-// B of "zigzag:A/B" (or A when B is not given, 20 for "zigzag"): the heading check.
+// B of "zigzag:A/B" [deg], 20 when not given, as the replay reads it
+// (metrics/closed_loop_replay.cc).
 double CheckDeg(const std::string& spec) {
-  const size_t colon = spec.find(':');
-  if (colon == std::string::npos) return 20.0;
-  const std::string angles = spec.substr(colon + 1);
-  const size_t slash = angles.find('/');
-  return std::abs(std::stod(slash == std::string::npos ? angles : angles.substr(slash + 1)));
+  const ManeuverSpec parsed = ParseManeuverSpec(spec);
+  return parsed.numbers.size() < 2 ? 20.0 : std::abs(parsed.numbers[1]);
 }
 
 // The track's heading turned from its first row [deg], unwrapped.

@@ -56,18 +56,24 @@ std::string FitHeatMap(const Suite& suite, const std::vector<ResultRow>& rows,
   return map.ToSvg(900, 120 + 60 * static_cast<int>(methods.size()));
 }
 
+// The free-run figures of one held-out run: every method's, and (when asked) a subset's.
+struct RunFigures {
+  std::string all;    // "" when no method scored on the run
+  std::string shown;  // the methods `shown` only; "" when none were asked for
+};
+
 // One held-out run (test maneuver `test`, first noise level and seed) against every method
-// trained on the first training maneuver each could fit.
-std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
-                       const std::string& vessel, const std::string& test,
-                       const std::set<std::string>& only = {}) {
+// trained on the first training maneuver each could fit; each model free-run once for both
+// figures, and each method in the same colour in both.
+RunFigures ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
+                      const std::string& vessel, const std::string& test,
+                      const std::set<std::string>& shown) {
   std::map<std::string, const ResultRow*> chosen;  // method -> row
   for (const ResultRow& r : rows)
     if (r.vessel == vessel && r.test_maneuver == test && r.status == "ok" &&
-        r.noise == suite.noise.front() && r.seed == suite.seeds.front() &&
-        !chosen.count(r.method) && (only.empty() || only.contains(r.method)))
+        r.noise == suite.noise.front() && r.seed == suite.seeds.front() && !chosen.count(r.method))
       chosen[r.method] = &r;
-  if (chosen.empty()) return "";
+  if (chosen.empty()) return {};
   const ResultRow& first = *chosen.begin()->second;
   Dataset held;
   if (suite.Measured()) {
@@ -82,30 +88,35 @@ std::string ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
     runs[method] = EvaluateModel(r->model, held, EvaluationScope::kFreeRunOnly);
   // The states the models identify (a vessel model: its dynamic states), and on measured data
   // the heading too.
-  std::set<std::string> channels;
-  for (const auto& [_, e] : runs)
-    for (const std::string& c : e.run.channels)
-      if (!IsPositionOrHeading(c) || (suite.Measured() && (c == "psi" || c == "chi")))
-        channels.insert(c);
-  FigureGrid grid;
-  grid.SetTitle(VesselLabel(vessel) + ", held-out " + test + ": measured and free runs")
-      .SetXLabel("t", "s");
-  // Each method keeps its colour in every panel, also where another method has no such channel.
+  // Each method keeps its colour in every panel and both figures, also where another method has
+  // no such channel.
   std::map<std::string, SeriesStyle> styles;
   for (const auto& [method, e] : runs)
     styles[method] = PaletteStyle(SeriesStyle::Dashed(), styles.size());
-  for (const std::string& c : channels) {
-    if (!held.Has(c)) continue;
-    LinePlot p;
-    p.SetYLabel(c).AddSeries("measured", held.t(), held[c], SeriesStyle::Measured());
+  const auto figure = [&](const std::set<std::string>& only) {
+    std::set<std::string> channels;
     for (const auto& [method, e] : runs)
-      if (e.run.simulated.Has(c))
-        p.AddSeries(method + " (trained on " + chosen[method]->train_maneuver + ")" +
-                        (e.run.diverged ? ", diverged" : ""),
-                    held.t(), e.run.simulated[c], styles.at(method));
-    grid.Add(std::move(p));
-  }
-  return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));
+      if (only.empty() || only.contains(method))
+        for (const std::string& c : e.run.channels)
+          if (!IsPositionOrHeading(c) || (suite.Measured() && (c == "psi" || c == "chi")))
+            channels.insert(c);
+    FigureGrid grid;
+    grid.SetTitle(VesselLabel(vessel) + ", held-out " + test + ": measured and free runs")
+        .SetXLabel("t", "s");
+    for (const std::string& c : channels) {
+      if (!held.Has(c)) continue;
+      LinePlot p;
+      p.SetYLabel(c).AddSeries("measured", held.t(), held[c], SeriesStyle::Measured());
+      for (const auto& [method, e] : runs)
+        if ((only.empty() || only.contains(method)) && e.run.simulated.Has(c))
+          p.AddSeries(method + " (trained on " + chosen[method]->train_maneuver + ")" +
+                          (e.run.diverged ? ", diverged" : ""),
+                      held.t(), e.run.simulated[c], styles.at(method));
+      grid.Add(std::move(p));
+    }
+    return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));
+  };
+  return {figure({}), shown.empty() ? "" : figure(shown)};
 }
 
 // What a figure shows by default, so that it stays readable: nominal, then the `n` methods with
@@ -130,10 +141,11 @@ std::vector<std::string> ShownMethods(const std::vector<ResultRow>& rows, const 
 }
 
 // The plan views of a measured test that holds a zig-zag or a turning circle (harness/plan_view.h):
-// the record and the methods ShownMethods picks, each replayed as trained on the first training
-// data it fitted.
+// the record and the methods `shown` (ShownMethods), each replayed as trained on the first
+// training data it fitted.
 std::vector<std::string> TestPlanViews(const Suite& suite, const std::vector<ResultRow>& rows,
-                                       const std::string& vessel, const std::string& test) {
+                                       const std::string& vessel, const std::string& test,
+                                       const std::vector<std::string>& shown) {
   const SuiteData* data = nullptr;
   for (const SuiteData& d : suite.test_data)
     if (d.name == test) data = &d;
@@ -144,7 +156,7 @@ std::vector<std::string> TestPlanViews(const Suite& suite, const std::vector<Res
         !model.count(r.method) && !r.model.is_null())
       model[r.method] = &r;
   std::vector<std::pair<std::string, nlohmann::json>> drawn;
-  for (const std::string& method : ShownMethods(rows, vessel, 3))
+  for (const std::string& method : shown)
     if (model.count(method)) drawn.emplace_back(method, model.at(method)->model);
   const Dataset held = LoadSuiteData(*data);
   const std::string spec = RecordedManeuverSpec(data->maneuver, vessel, held);
@@ -193,25 +205,25 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
     std::set<std::string> methods;
     for (const ResultRow& r : rows)
       if (r.vessel == vessel) methods.insert(r.method);
-    const bool all_shown = methods.size() <= shown.size();
+    const std::set<std::string> subset = methods.size() <= shown.size()
+                                             ? std::set<std::string>{}
+                                             : std::set<std::string>(shown.begin(), shown.end());
     for (size_t t = 0; t < tests; ++t) {
-      const std::string run = ExampleRun(suite, rows, vessel, suite.test_maneuvers[t]);
-      if (run.empty()) continue;
+      const RunFigures run = ExampleRun(suite, rows, vessel, suite.test_maneuvers[t], subset);
+      if (run.all.empty()) continue;
       WriteFileAtomically(
           dir + "/run_" + FigureName(vessel) + (t == 0 ? "" : "_" + std::to_string(t + 1)) + ".svg",
-          run);
-      if (all_shown) {
-        html << "<figure class=\"plot\">" << run << "</figure>\n";
+          run.all);
+      if (run.shown.empty()) {
+        html << "<figure class=\"plot\">" << run.all << "</figure>\n";
       } else {
-        html << "<figure class=\"plot\">"
-             << ExampleRun(suite, rows, vessel, suite.test_maneuvers[t],
-                           {shown.begin(), shown.end()})
+        html << "<figure class=\"plot\">" << run.shown
              << "</figure>\n<details><summary>every method (" << methods.size()
-             << ")</summary><figure class=\"plot\">" << run << "</figure></details>\n";
+             << ")</summary><figure class=\"plot\">" << run.all << "</figure></details>\n";
       }
       if (!suite.Measured()) continue;
       const std::vector<std::string> plans =
-          TestPlanViews(suite, rows, vessel, suite.test_maneuvers[t]);
+          TestPlanViews(suite, rows, vessel, suite.test_maneuvers[t], shown);
       for (size_t p = 0; p < plans.size(); ++p) {
         WriteFileAtomically(dir + "/plan_" + FigureName(vessel) + "_" + std::to_string(t + 1) +
                                 (p == 0 ? "" : "_heading") + ".svg",

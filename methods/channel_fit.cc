@@ -60,13 +60,15 @@ Channels DefaultChannels(const IdentifyRequest& o, const Dataset& data) {
   if (c.inputs.empty())
     for (const std::string& command : kRecordCommands)
       if (data.Has(command)) c.inputs.push_back(command);
-  if (c.states.empty() || c.inputs.empty())
+  if (c.states.empty() || c.inputs.empty()) {
+    std::string commands;
+    for (const std::string& command : kRecordCommands)
+      commands += (commands.empty() ? "" : ", ") + command;
     throw InputError(
         data.SourcePrefix() + "identify: give --vessel, or --states and --inputs (the record has " +
-        (c.states.empty()
-             ? "none of the states u, v, r, U"
-             : "no command among delta, n, rev, throttle, nozzle, bucket, tau_x, tau_y, tau_n, f") +
+        (c.states.empty() ? "none of the states u, v, r, U" : "no command among " + commands) +
         " to take by default)");
+  }
   return c;
 }
 
