@@ -116,6 +116,8 @@ TestOfRecord ReadTestOfRecord(const Dataset& data, const std::string& kind,
                     "its rudder is reversed " + Degrees(check.order_deg) +
                         " deg off the base course, not at B = " + Degrees(named->check_deg));
       b = named->check_deg;
+    } else if (!check.Consistent()) {
+      return out;  // reversals at scattered headings: a rudder that switches, not a zig-zag
     }
     if (!(b > 0)) return out;
     const ZigzagResponse z = AnalyseZigzag(data, b, heading, rudder, a);

@@ -9,6 +9,9 @@
 //   not assumed equal to A: HSVA's KVLCC2 runs 20/10, 30/5, 10/1.
 // - The side is the way the heading turns first after the execute (starboard positive), so
 //   either rudder sign convention reads alike. A turn must turn by 90 deg.
+// - A zig-zag's reversals are ordered at one heading off the base course: a record whose orders
+//   scatter (ZigzagCheckReading::Consistent; a random run's rudder switched between +-35 deg)
+//   holds no zig-zag.
 // - A record of either kind (a folder that holds both, as MARIN's zz_ and tc_ files do) is told
 //   apart by how it holds that angle: a test holds it in at least half of the rows steered past
 //   5 deg (within 1.5 deg), a zig-zag to both sides (each side at least a fifth of those rows), a

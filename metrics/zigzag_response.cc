@@ -111,6 +111,10 @@ double NearestCheck(double order_deg, double rudder_deg) {
 
 }  // namespace
 
+bool ZigzagCheckReading::Consistent() const {
+  return half_swings < 2 || 3 * agreeing >= 2 * half_swings;
+}
+
 ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& heading,
                                    const std::string& rudder, double rudder_deg) {
   constexpr double kDeg = std::numbers::pi / 180.0;
@@ -152,6 +156,10 @@ ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& headi
     std::nth_element(half_swings.begin(), half_swings.begin() + half_swings.size() / 2,
                      half_swings.end());
     out.order_deg = half_swings[half_swings.size() / 2] / kDeg;
+    out.half_swings = static_cast<int>(half_swings.size());
+    const double within = std::max(kCheckAgreementDeg, 0.25 * out.order_deg) * kDeg;
+    for (const double h : half_swings)
+      if (std::abs(h - out.order_deg * kDeg) <= within) ++out.agreeing;
   } else if (out.orders == 1) {
     // One reversal: its order's heading from the heading at the execute.
     const long execute = FindExecute({delta.data(), static_cast<size_t>(n)},

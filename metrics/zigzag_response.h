@@ -56,7 +56,18 @@ struct ZigzagCheckReading {
   double check_deg = 0.0;  // B read, or 0
   double order_deg = 0.0;  // the orders' median half swing
   int orders = 0;          // reversals ordered from full angle
+  // A zig-zag orders every reversal at the same heading off its base course, so its half
+  // swings agree: on the shared real zig-zags within 2.6 deg of their median, but for one early
+  // order of a hand-steered 15/15 (Esso Osaka, 13:29: 6.8, 14.7 and 15.0 deg); a rudder that
+  // switches at random (Esso Osaka's random runs, held at +-35 deg to both sides as a 35/B
+  // zig-zag is) swings 0.2 to 29 deg between its reversals.
+  int half_swings = 0;  // orders between two legs at full angle
+  int agreeing = 0;     // of them, within kCheckAgreementDeg (or a quarter) of their median
+  // Whether the orders agree as a zig-zag's do: at least two thirds of two or more half swings
+  // agree (fewer than two: nothing to tell).
+  bool Consistent() const;
 };
+inline constexpr double kCheckAgreementDeg = 2.5;
 ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& heading = "psi",
                                    const std::string& rudder = "delta", double rudder_deg = 0.0);
 

@@ -138,6 +138,28 @@ TEST(ManeuverOfRecordTest, EachSharedEssoOsakaTestGivesTheStudysSpec) {
   }
 }
 
+// A random run's rudder switches between +-35 deg, held to both sides as a 35/B zig-zag's is,
+// but its reversals fall at scattered headings (half swings of 0.2 to 29 deg): no zig-zag is
+// read from it, asked for one or for any test.
+TEST(ManeuverOfRecordTest, ARandomRunsScatteredReversalsAreNoZigzag) {
+  const std::filesystem::path data = std::string(USVID_SHARED_DATA_DIR) + "/esso-osaka";
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
+  const std::vector<ColumnMapping> map = ParseColumnMap(
+      {"t=t [s]", "north=x_position_mid [m]", "east=y_position_mid [m]", "psi=psi_hat [rad]",
+       "r=r_angvelo [rad/s]", "n=n_prop [rps]", "delta=delta_rudder [rad]"});
+  for (const char* file : {"random/random_03-Aug-2020_11_04_37.csv",
+                           "random/random_31-Jul-2020_12_29_58.csv",
+                           "random/random_31-Jul-2020_14_52_18.csv"}) {
+    ImportReport report;
+    const Dataset d = ImportCsvLog((data / file).string(), map, report);
+    const ZigzagCheckReading check = ReadZigzagCheck(d, "psi", "delta", 35);
+    EXPECT_FALSE(check.Consistent()) << file << ": " << check.agreeing << " of "
+                                     << check.half_swings << " half swings agree";
+    EXPECT_EQ(ManeuverOfRecord(d, "zigzag"), "") << file;
+    EXPECT_THAT(ManeuverOfRecord(d, "any"), testing::Not(testing::StartsWith("zigzag"))) << file;
+  }
+}
+
 TEST(ManeuverOfRecordTest, MarinsKvlcc2TestsAreToldApartFromTheirRecords) {
   const std::filesystem::path data = std::string(USVID_SHARED_DATA_DIR) + "/kvlcc2-marin";
   if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
