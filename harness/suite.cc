@@ -189,13 +189,19 @@ nlohmann::json SuiteMethod::OwnOptions() const {
 
 std::string SuiteMethod::Label() const {
   if (method == kExternalMethod) return options.at("name").get<std::string>();
+  // A grey-box fit (GP's corrections to a vessel, docs/gp.md#grey-box) is another model than
+  // the method's own: "gp+vessel".
+  const std::string name =
+      options.contains("base") && options.at("base").is_string()
+          ? method + "+" + options.at("base").get<std::string>()
+          : method;
   const std::string& option = FindSuiteMethod(method).label_option;
-  if (option.empty() || !options.contains(option)) return method;
+  if (option.empty() || !options.contains(option)) return name;
   const nlohmann::json& value = options.at(option);
-  if (value.is_string()) return method + "[" + value.get<std::string>() + "]";
+  if (value.is_string()) return name + "[" + value.get<std::string>() + "]";
   std::string text;  // a list given as an array
   for (const auto& item : value) text += (text.empty() ? "" : ",") + item.get<std::string>();
-  return method + "[" + text + "]";
+  return name + "[" + text + "]";
 }
 
 std::string FitJob::Id() const {

@@ -9,6 +9,7 @@
 #include "core/expression.h"
 #include "core/parse_number.h"
 #include "core/records.h"
+#include "metrics/closed_loop_choice.h"
 #include "metrics/closed_loop_replay.h"
 
 namespace usvid {
@@ -199,6 +200,8 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
 
 void CalibrateRequested(nlohmann::json& model, const Dataset& train, const std::string& vessel) {
   if (!model.contains("calibration") || !model["calibration"].is_object()) return;
+  if (model["calibration"].value("choose", nlohmann::json()) == "closed-loop")
+    model["calibration"]["choose"] = ChooseByClosedLoop(model, train, vessel);
   if (model["calibration"].value("yaw_bias", nlohmann::json()) != "zigzag") return;
   nlohmann::json report = CalibrateYawBias(model, train, vessel);
   model["calibration"]["yaw_bias"] = std::move(report);

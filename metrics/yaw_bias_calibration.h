@@ -33,7 +33,9 @@ namespace usvid {
 //   applied (bool), reason, maneuvers (each zig-zag's spec), shift (added to the constant),
 //   constant_before, constant_after, overshoot_errors_before / _after (deg, each zig-zag's
 //   first and second), and the replay's status where a zig-zag could not be replayed.
-// A model that does not ask is left as it is.
+// A model that does not ask is left as it is. Before it, a grey-box model that asks for it
+// (model["calibration"]["choose"] == "closed-loop") is chosen among its alternatives by the
+// training records' closed-loop tests (closed_loop_choice.h).
 void CalibrateRequested(nlohmann::json& model, const Dataset& train, const std::string& vessel);
 
 // The calibration itself, for a model with an r equation; returns the report above.

@@ -1,12 +1,16 @@
 // `gp`: GP-SR with orthogonal least squares (methods/gp/gp_identify.h), registered in
 // methods/method_list.h.
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "core/error.h"
 #include "core/parse_number.h"
 #include "methods/channel_fit.h"
+#include "effects/effect.h"
 #include "methods/gp/gp_identify.h"
+#include "methods/gp/grey_box.h"
 #include "methods/gp/term_selection.h"
 #include "methods/method.h"
 #include "methods/regime_features.h"
@@ -71,6 +75,15 @@ std::vector<OptionSpec> GpOptionSpecs() {
                  "a rudder's force at its inflow speed among the variables: delta times |u| u, "
                  "u n+ and n+ n+ (docs/baselines.md#the-rudders-inflow), for records that span "
                  "propeller speeds (on one zig-zag at one speed it cost a seed its free run)"),
+      TextOption("base", std::nullopt,
+                 "grey-box: search additive corrections to this vessel's model (a vessel name or "
+                 "file; 'vessel': --vessel with its --params) and keep those that its free runs "
+                 "on each record's held-out end support (docs/gp.md#grey-box)"),
+      ChoiceOption("choose", "closed-loop", {"closed-loop", "free-run"},
+                   "with base: the model among the corrections weighed, by the held-out free "
+                   "runs among those whose training zig-zags and turning circles, replayed "
+                   "closed-loop, are no worse than the vessel's (closed-loop), or by the free "
+                   "runs alone (free-run)"),
   };
 }
 
@@ -163,9 +176,110 @@ nlohmann::json UsedOptions(const MethodOptions& o, const gp::GpIdentifyOptions& 
   return used;
 }
 
+// --base: the corrections to a vessel's model (methods/gp/grey_box.h); a vessel model whose
+// effects are the kept terms.
+nlohmann::json IdentifyGreyBoxModel(const Dataset& data, const IdentifyRequest& request,
+                                    const MethodOptions& o, const gp::GpIdentifyOptions& gpo) {
+  const auto start = std::chrono::steady_clock::now();
+  // What shapes a whole equation's choice and refit has no part in a correction's.
+  for (const char* key : {"validation_fraction", "horizon_s", "fit", "damping"})
+    if (o.Given(key))
+      throw InputError(std::string("method gp: option ") + key +
+                       " has no part in a grey-box fit (--base), whose corrections are chosen by "
+                       "the vessel's free runs (docs/gp.md#grey-box)");
+  if (o.Text("yaw_bias") != "equation")
+    throw InputError("method gp: yaw_bias=" + o.Text("yaw_bias") +
+                     " calibrates an equation model; a grey-box fit (--base) has the vessel's");
+  if (const std::string f = o.Text("features"); f != "auto" && f != "none")
+    throw InputError("method gp: features=" + f +
+                     " is for whole equations; a grey-box fit (--base) searches on the vessel's "
+                     "states and inputs (and rudder_inflow)");
+  const bool closed_loop = o.Text("choose") == "closed-loop";
+  const std::string base = o.Text("base") == "vessel" ? request.vessel : o.Text("base");
+  if (base.empty())
+    throw InputError("method gp: base=vessel needs --vessel (or give the vessel: --base NAME)");
+  const VesselInfo& info = FindVessel(base).Info();
+  const std::vector<double> params =
+      base == request.vessel && !request.start_params.empty() ? request.start_params
+                                                              : info.default_params;
+  gp::GreyBoxOptions g;
+  g.search = gpo.search;
+  if (o.Flag("rudder_inflow")) {
+    std::vector<std::string> channels = info.states;
+    channels.insert(channels.end(), info.inputs.begin(), info.inputs.end());
+    for (const RudderInflowTerm& term : RudderInflowTerms(channels))
+      g.features.push_back({term.name, term.expression});
+  }
+  const gp::GreyBoxResult r = gp::IdentifyGreyBox(base, params, data, g);
+  nlohmann::json parameters = nlohmann::json::object(), effects = nlohmann::json::array(),
+                 tried = nlohmann::json::array();
+  for (size_t i = 0; i < info.params.size(); ++i) parameters[info.params[i]] = params[i];
+  for (const Effect& e : r.terms) effects.push_back(EffectToJson(e));
+  for (const gp::GreyBoxCandidate& c : r.tried)
+    tried.push_back({{"state", c.state},
+                     {"correction", c.equation},
+                     {"round", c.round},
+                     {"free_run_error", std::isfinite(c.free_run_error)
+                                            ? nlohmann::json(c.free_run_error)
+                                            : nlohmann::json("diverged")}});
+  nlohmann::json alternatives = nlohmann::json::array();
+  for (const gp::GreyBoxAlternative& a : r.alternatives) {
+    nlohmann::json terms = nlohmann::json::array();
+    for (const Effect& e : a.terms) terms.push_back(EffectToJson(e));
+    alternatives.push_back({{"label", a.label},
+                            {"corrections", a.corrections},
+                            {"effects", terms},
+                            {"free_run_error", std::isfinite(a.free_run_error)
+                                                   ? nlohmann::json(a.free_run_error)
+                                                   : nlohmann::json("diverged")}});
+  }
+  std::vector<std::string> states;
+  for (const std::string& s : info.states)
+    if (!IsPositionOrHeading(s)) states.push_back(s);
+  const auto finite = [](double e) {
+    return std::isfinite(e) ? nlohmann::json(e) : nlohmann::json("diverged");
+  };
+  nlohmann::json features = nlohmann::json::object();
+  for (const DerivedVariable& f : g.features) features[f.name] = f.expression;
+  nlohmann::json model = {{"method", request.method},
+          {"vessel", base},
+          {"states", states},
+          {"inputs", info.inputs},
+          {"parameters", parameters},
+          {"effects", effects},
+          // The vessel plus these, per state (the kept effects written as equations).
+          {"corrections", r.corrections},
+          {"alternatives", alternatives},
+          {"gp",
+           {{"base", base},
+            {"operators", gp::OperatorList(gpo.search.functions)},
+            {"features", features},
+            {"population", gpo.search.population},
+            {"generations", gpo.search.generations},
+            {"heldout_fraction", g.heldout},
+            {"vessel_free_run_error", finite(r.vessel_free_run_error)},
+            {"free_run_error", finite(r.free_run_error)},
+            {"tried", tried},
+            {"node_evaluations", r.node_evaluations}}},
+          {"options", UsedOptions(o, gpo)},
+          {"train",
+           {{"data", request.data_name},
+            {"samples", data.rows()},
+            {"seconds",
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}}}};
+  // The choice among the alternatives by the training records' closed-loop tests: a replay,
+  // which the caller runs (metrics/closed_loop_choice.h, CalibrateRequested).
+  if (closed_loop) model["calibration"] = {{"choose", "closed-loop"}};
+  return model;
+}
+
 nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& request,
                                const MethodOptions& o, const Logger& log) {
   gp::GpIdentifyOptions gpo = GpOptionsFor(request, o);
+  if (o.Has("base")) return IdentifyGreyBoxModel(data, request, o, gpo);
+  if (o.Given("choose"))
+    throw InputError("method gp: option choose picks among a grey-box fit's corrections; give "
+                     "it with base (docs/gp.md#grey-box)");
   ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request, data), log);
   const double froude_per_speed =
       request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);
