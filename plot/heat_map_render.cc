@@ -73,7 +73,7 @@ void HeatMap::RenderLabels(std::string& out, const Geometry& g) const {
   }
   if (!column_axis_.empty()) {
     svg::AppendText(out, cells_centre_x, y + kAxisFont * 0.8, column_axis_, kAxisFont,
-                    svg::Anchor::kMiddle, kMuted);
+                    svg::Anchor::kMiddle, std::string(kMuted) + " " + std::string(svg::kAxisLabelClass));
   }
   if (!row_axis_.empty()) {
     double widest = 0.0;
@@ -81,7 +81,8 @@ void HeatMap::RenderLabels(std::string& out, const Geometry& g) const {
       widest = std::max(widest, svg::TextWidth(label, kLabelFont));
     }
     svg::AppendVerticalText(out, g.cells_left - 8.0 - widest - 10.0 - kAxisFont * 0.2,
-                            (g.cells_top + g.CellsBottom()) / 2.0, row_axis_, kAxisFont, kMuted);
+                            (g.cells_top + g.CellsBottom()) / 2.0, row_axis_, kAxisFont,
+                            std::string(kMuted) + " " + std::string(svg::kAxisLabelClass));
   }
   out += "<g class=\"row-labels\">\n";
   for (int r = 0; r < g.rows; ++r) {

@@ -182,7 +182,7 @@ void LinePlot::RenderTexts(std::string& out, const LinePlotLayout& L,
   if (!y_label_.empty()) {
     const svg::FittedText t = svg::FitText(y_label_, kLabelFont, L.area_height + 20.0);
     svg::AppendVerticalText(out, kPad + kLabelFont * 0.8, L.area_top + L.area_height / 2.0, t.text,
-                            t.font_size);
+                            t.font_size, svg::kAxisLabelClass);
   }
   if (!HasData()) {
     svg::AppendText(out, centre, L.area_top + L.area_height / 2.0, "no data", kLabelFont,
@@ -193,7 +193,7 @@ void LinePlot::RenderTexts(std::string& out, const LinePlotLayout& L,
     below += kLabelGap + kLabelFont;
     const svg::FittedText t = svg::FitText(x_label_, kLabelFont, L.width - 2.0 * kPad);
     svg::AppendText(out, centre, below - kLabelFont * 0.2, t.text, t.font_size,
-                    svg::Anchor::kMiddle);
+                    svg::Anchor::kMiddle, svg::kAxisLabelClass);
   }
   for (const AnnotationLabel& a : PlaceAnnotations(L.x, L.area_left, L.area_width)) {
     svg::AppendText(out, a.centre, L.area_top - 5.0 - a.row * kAnnotationRow, a.text,

@@ -40,6 +40,10 @@ enum class Anchor { kStart, kMiddle, kEnd };
 void AppendText(std::string& out, double x, double y, std::string_view text, double font_size,
                 Anchor anchor, std::string_view attributes = "");
 
+// The attribute that marks an axis's label (its quantity and unit), so that a reader of the
+// figure, a browser test among them (tests/report_render_test.py), finds it.
+inline constexpr std::string_view kAxisLabelClass = "class=\"axis-label\"";
+
 // The same text turned by -90 degrees around (x, y), reading bottom to top (y-axis labels).
 void AppendVerticalText(std::string& out, double x, double y, std::string_view text,
                         double font_size, std::string_view attributes = "");

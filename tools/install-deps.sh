@@ -2,7 +2,8 @@
 # Installs what usvid needs from Debian 12's packages.
 #   tools/install-deps.sh          what the build needs (the README's first command)
 #   tools/install-deps.sh --test   that, and the test command's tools: clang 14 with its
-#                                  sanitizers, libFuzzer and OpenMP, and OpenMPI (some 500 MB more)
+#                                  sanitizers, libFuzzer and OpenMP, OpenMPI, and Chromium for the
+#                                  report's rendering test (some 1 GB more)
 set -euo pipefail
 packages=(g++ cmake ninja-build ccache git
   libeigen3-dev libceres-dev libnlopt-cxx-dev libgtest-dev libgmock-dev libbenchmark-dev
@@ -11,7 +12,8 @@ packages=(g++ cmake ninja-build ccache git
 case "${1:-}" in
   --test)
     packages+=(clang-14 libclang-rt-14-dev libomp-14-dev  # clang's sanitizers, libFuzzer, OpenMP
-               openmpi-bin libopenmpi-dev)                 # the MPI build (-DUSVID_WITH_MPI=ON)
+               openmpi-bin libopenmpi-dev                  # the MPI build (-DUSVID_WITH_MPI=ON)
+               chromium)                                   # the report's rendering test
     ;;
   "") ;;
   *)
