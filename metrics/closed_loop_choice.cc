@@ -1,7 +1,7 @@
 #include "metrics/closed_loop_choice.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <vector>
@@ -45,9 +45,9 @@ std::vector<TestRecord> TestRecords(const Dataset& train, const std::string& ves
 }
 
 struct Criteria {
-  double first_overshoot_deg = kNone;  // mean |error| over the zig-zags
+  double first_overshoot_deg = kNone;        // mean |error| over the zig-zags
   double tactical_diameter_percent = kNone;  // mean |error| over the circles, of the measured
-  std::string status;  // the first replay that was not ok, else ""
+  std::string status;                        // the first replay that was not ok, else ""
 };
 
 Criteria Replay(const nlohmann::json& model, const std::vector<TestRecord>& tests) {
@@ -109,13 +109,15 @@ nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
   }
   // A zig-zag's and a turning circle's angles are a rudder's: odin3dof steers by a yaw moment.
   if (!FindVessel(vessel).Info().actuation.yaw_is_angle) {
-    report["reason"] = "the vessel steers by no rudder angle, so no zig-zag or turning circle is "
-                       "read from the records: the free runs chose";
+    report["reason"] =
+        "the vessel steers by no rudder angle, so no zig-zag or turning circle is "
+        "read from the records: the free runs chose";
     return report;
   }
   const std::vector<TestRecord> tests = TestRecords(train, vessel);
   if (tests.empty()) {
-    report["reason"] = "no zig-zag or turning circle among the training records: the free runs chose";
+    report["reason"] =
+        "no zig-zag or turning circle among the training records: the free runs chose";
     return report;
   }
   for (const TestRecord& t : tests) report["maneuvers"].push_back(t.spec);
@@ -141,18 +143,20 @@ nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
     trial["effects"] = alternatives[i].at("effects");
     const Criteria c = Replay(trial, tests);
     const bool admissible = NoWorse(c, as_given);
-    rows[i] = nlohmann::json{{"first_overshoot_error_deg", OrNull(c.first_overshoot_deg)},
-               {"tactical_diameter_error_percent", OrNull(c.tactical_diameter_percent)},
-               {"admissible", admissible}};
+    rows[i] =
+        nlohmann::json{{"first_overshoot_error_deg", OrNull(c.first_overshoot_deg)},
+                       {"tactical_diameter_error_percent", OrNull(c.tactical_diameter_percent)},
+                       {"admissible", admissible}};
     if (!c.status.empty()) rows[i]["status"] = c.status;
     if (admissible) {
       chosen = i;
       break;
     }
   }
-  rows[0] = nlohmann::json{{"first_overshoot_error_deg", OrNull(as_given.first_overshoot_deg)},
-             {"tactical_diameter_error_percent", OrNull(as_given.tactical_diameter_percent)},
-             {"admissible", true}};
+  rows[0] = nlohmann::json{
+      {"first_overshoot_error_deg", OrNull(as_given.first_overshoot_deg)},
+      {"tactical_diameter_error_percent", OrNull(as_given.tactical_diameter_percent)},
+      {"admissible", true}};
   if (!as_given.status.empty()) rows[0]["status"] = as_given.status;
   for (size_t i = 0; i < alternatives.size(); ++i) {
     nlohmann::json row = {{"label", alternatives[i].at("label")},

@@ -7,8 +7,8 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
-#include "methods/channel_fit.h"
 #include "effects/effect.h"
+#include "methods/channel_fit.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/gp/grey_box.h"
 #include "methods/gp/term_selection.h"
@@ -98,7 +98,8 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& request, const MethodO
   }
   gp::GpOptions& s = g.search;
   std::string operators;
-  for (const std::string& op : o.List("operators")) operators += (operators.empty() ? "" : ",") + op;
+  for (const std::string& op : o.List("operators"))
+    operators += (operators.empty() ? "" : ",") + op;
   // Under a preset, its values stay where no option was given.
   auto use = [&](const char* key) { return o.Given(key) || !report; };
   if (use("operators")) s.functions = gp::ParseOperators(operators);
@@ -176,12 +177,35 @@ nlohmann::json UsedOptions(const MethodOptions& o, const gp::GpIdentifyOptions& 
   return used;
 }
 
-// --base: the corrections to a vessel's model (methods/gp/grey_box.h); a vessel model whose
-// effects are the kept terms.
-nlohmann::json IdentifyGreyBoxModel(const Dataset& data, const IdentifyRequest& request,
-                                    const MethodOptions& o, const gp::GpIdentifyOptions& gpo) {
-  const auto start = std::chrono::steady_clock::now();
-  // What shapes a whole equation's choice and refit has no part in a correction's.
+// A free-run error, or "diverged".
+nlohmann::json FiniteOrDiverged(double error) {
+  return std::isfinite(error) ? nlohmann::json(error) : nlohmann::json("diverged");
+}
+
+// What a grey-box fit weighed: every correction tried in each round, and the alternatives
+// (methods/gp/grey_box.h) the closed-loop choice weighs.
+void WriteGreyBoxSearch(const gp::GreyBoxResult& r, nlohmann::json& model) {
+  nlohmann::json tried = nlohmann::json::array(), alternatives = nlohmann::json::array();
+  for (const gp::GreyBoxCandidate& c : r.tried)
+    tried.push_back({{"state", c.state},
+                     {"correction", c.equation},
+                     {"round", c.round},
+                     {"free_run_error", FiniteOrDiverged(c.free_run_error)}});
+  for (const gp::GreyBoxAlternative& a : r.alternatives) {
+    nlohmann::json terms = nlohmann::json::array();
+    for (const Effect& e : a.terms) terms.push_back(EffectToJson(e));
+    alternatives.push_back({{"label", a.label},
+                            {"corrections", a.corrections},
+                            {"effects", terms},
+                            {"free_run_error", FiniteOrDiverged(a.free_run_error)}});
+  }
+  model["gp"]["tried"] = tried;
+  model["alternatives"] = alternatives;
+}
+
+// The base a grey-box fit corrects ('vessel': --vessel), refusing the options of whole
+// equations that have no part in it.
+std::string GreyBoxBase(const IdentifyRequest& request, const MethodOptions& o) {
   for (const char* key : {"validation_fraction", "horizon_s", "fit", "damping"})
     if (o.Given(key))
       throw InputError(std::string("method gp: option ") + key +
@@ -194,14 +218,22 @@ nlohmann::json IdentifyGreyBoxModel(const Dataset& data, const IdentifyRequest& 
     throw InputError("method gp: features=" + f +
                      " is for whole equations; a grey-box fit (--base) searches on the vessel's "
                      "states and inputs (and rudder_inflow)");
-  const bool closed_loop = o.Text("choose") == "closed-loop";
   const std::string base = o.Text("base") == "vessel" ? request.vessel : o.Text("base");
   if (base.empty())
     throw InputError("method gp: base=vessel needs --vessel (or give the vessel: --base NAME)");
+  return base;
+}
+
+// --base: the corrections to a vessel's model (methods/gp/grey_box.h); a vessel model whose
+// effects are the kept terms.
+nlohmann::json IdentifyGreyBoxModel(const Dataset& data, const IdentifyRequest& request,
+                                    const MethodOptions& o, const gp::GpIdentifyOptions& gpo) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string base = GreyBoxBase(request, o);
   const VesselInfo& info = FindVessel(base).Info();
-  const std::vector<double> params =
-      base == request.vessel && !request.start_params.empty() ? request.start_params
-                                                              : info.default_params;
+  const std::vector<double> params = base == request.vessel && !request.start_params.empty()
+                                         ? request.start_params
+                                         : info.default_params;
   gp::GreyBoxOptions g;
   g.search = gpo.search;
   if (o.Flag("rudder_inflow")) {
@@ -212,64 +244,40 @@ nlohmann::json IdentifyGreyBoxModel(const Dataset& data, const IdentifyRequest& 
   }
   const gp::GreyBoxResult r = gp::IdentifyGreyBox(base, params, data, g);
   nlohmann::json parameters = nlohmann::json::object(), effects = nlohmann::json::array(),
-                 tried = nlohmann::json::array();
+                 features = nlohmann::json::object();
   for (size_t i = 0; i < info.params.size(); ++i) parameters[info.params[i]] = params[i];
   for (const Effect& e : r.terms) effects.push_back(EffectToJson(e));
-  for (const gp::GreyBoxCandidate& c : r.tried)
-    tried.push_back({{"state", c.state},
-                     {"correction", c.equation},
-                     {"round", c.round},
-                     {"free_run_error", std::isfinite(c.free_run_error)
-                                            ? nlohmann::json(c.free_run_error)
-                                            : nlohmann::json("diverged")}});
-  nlohmann::json alternatives = nlohmann::json::array();
-  for (const gp::GreyBoxAlternative& a : r.alternatives) {
-    nlohmann::json terms = nlohmann::json::array();
-    for (const Effect& e : a.terms) terms.push_back(EffectToJson(e));
-    alternatives.push_back({{"label", a.label},
-                            {"corrections", a.corrections},
-                            {"effects", terms},
-                            {"free_run_error", std::isfinite(a.free_run_error)
-                                                   ? nlohmann::json(a.free_run_error)
-                                                   : nlohmann::json("diverged")}});
-  }
+  for (const DerivedVariable& f : g.features) features[f.name] = f.expression;
   std::vector<std::string> states;
   for (const std::string& s : info.states)
     if (!IsPositionOrHeading(s)) states.push_back(s);
-  const auto finite = [](double e) {
-    return std::isfinite(e) ? nlohmann::json(e) : nlohmann::json("diverged");
-  };
-  nlohmann::json features = nlohmann::json::object();
-  for (const DerivedVariable& f : g.features) features[f.name] = f.expression;
-  nlohmann::json model = {{"method", request.method},
-          {"vessel", base},
-          {"states", states},
-          {"inputs", info.inputs},
-          {"parameters", parameters},
-          {"effects", effects},
-          // The vessel plus these, per state (the kept effects written as equations).
-          {"corrections", r.corrections},
-          {"alternatives", alternatives},
-          {"gp",
-           {{"base", base},
-            {"operators", gp::OperatorList(gpo.search.functions)},
-            {"features", features},
-            {"population", gpo.search.population},
-            {"generations", gpo.search.generations},
-            {"heldout_fraction", g.heldout},
-            {"vessel_free_run_error", finite(r.vessel_free_run_error)},
-            {"free_run_error", finite(r.free_run_error)},
-            {"tried", tried},
-            {"node_evaluations", r.node_evaluations}}},
-          {"options", UsedOptions(o, gpo)},
-          {"train",
-           {{"data", request.data_name},
-            {"samples", data.rows()},
-            {"seconds",
-             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}}}};
+  nlohmann::json model = {
+      {"method", request.method},
+      {"vessel", base},
+      {"states", states},
+      {"inputs", info.inputs},
+      {"parameters", parameters},
+      {"effects", effects},
+      {"corrections", r.corrections},  // the vessel plus these, per state: the effects' sums
+      {"gp",
+       {{"base", base},
+        {"operators", gp::OperatorList(gpo.search.functions)},
+        {"features", features},
+        {"population", gpo.search.population},
+        {"generations", gpo.search.generations},
+        {"heldout_fraction", g.heldout},
+        {"vessel_free_run_error", FiniteOrDiverged(r.vessel_free_run_error)},
+        {"free_run_error", FiniteOrDiverged(r.free_run_error)},
+        {"node_evaluations", r.node_evaluations}}},
+      {"options", UsedOptions(o, gpo)}};
+  WriteGreyBoxSearch(r, model);
+  model["train"] = {
+      {"data", request.data_name},
+      {"samples", data.rows()},
+      {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
   // The choice among the alternatives by the training records' closed-loop tests: a replay,
   // which the caller runs (metrics/closed_loop_choice.h, CalibrateRequested).
-  if (closed_loop) model["calibration"] = {{"choose", "closed-loop"}};
+  if (o.Text("choose") == "closed-loop") model["calibration"] = {{"choose", "closed-loop"}};
   return model;
 }
 
@@ -278,8 +286,9 @@ nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& reque
   gp::GpIdentifyOptions gpo = GpOptionsFor(request, o);
   if (o.Has("base")) return IdentifyGreyBoxModel(data, request, o, gpo);
   if (o.Given("choose"))
-    throw InputError("method gp: option choose picks among a grey-box fit's corrections; give "
-                     "it with base (docs/gp.md#grey-box)");
+    throw InputError(
+        "method gp: option choose picks among a grey-box fit's corrections; give "
+        "it with base (docs/gp.md#grey-box)");
   ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request, data), log);
   const double froude_per_speed =
       request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);

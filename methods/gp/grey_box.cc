@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include "core/error.h"
 #include "core/expression.h"
@@ -57,8 +58,8 @@ std::vector<Effect> AsEffects(const Model& m, const std::vector<std::string>& na
   std::vector<Effect> out;
   const auto add = [&](double coefficient, std::string term) {
     if (coefficient != 0.0 && std::isfinite(coefficient))
-      out.push_back(Effect{EffectKind::kMissingTerm, {{"coefficient", coefficient}}, {}, state,
-                           std::move(term)});
+      out.push_back(Effect{
+          EffectKind::kMissingTerm, {{"coefficient", coefficient}}, {}, state, std::move(term)});
   };
   add(m.bias, "1");
   for (size_t t = 0; t < m.term_roots.size(); ++t)
@@ -83,88 +84,103 @@ struct Candidate {
   Model model;
 };
 
-}  // namespace
+// What the three steps share: the vessel, its states and inputs, the search's variables.
+struct GreyBoxFit {
+  const std::string& vessel;
+  const std::vector<double>& params;
+  std::vector<std::string> states, inputs;
+  GpProblem problem;  // the variables of the first parts
+};
 
-GreyBoxResult IdentifyGreyBox(const std::string& vessel, const std::vector<double>& params,
-                              const Dataset& data, const GreyBoxOptions& options) {
-  if (!(options.heldout > 0.0 && options.heldout < 1.0))
-    throw InputError("gp --base: the held-out share must be in (0, 1)");
-  const VesselInfo& info = FindVessel(vessel).Info();
-  const std::vector<std::string> states = DynamicStates(info, data);
-  const std::vector<std::string> inputs = info.InputsIn(data);
-  const RecordSplit parts = SplitEachRecord(data, options.heldout, 16, "gp --base");
-
-  // 2. Each state's front of corrections, searched on the first part's residual.
-  const PreparedData first = Preprocess(parts.first, states, inputs, PreprocessOptions{});
+// 2. Each state's front of corrections, searched on the first parts' residual.
+std::vector<Candidate> SearchFronts(GreyBoxFit& fit, const Dataset& first_parts,
+                                    const GreyBoxOptions& options, GreyBoxResult& result) {
+  const PreparedData first = Preprocess(first_parts, fit.states, fit.inputs, PreprocessOptions{});
   const std::map<std::string, Eigen::VectorXd> residual =
-      DerivativeResidual(vessel, first.data, params);
-  GpProblem problem = Variables(first.data, states, inputs, options.features);
-  GreyBoxResult result;
+      DerivativeResidual(fit.vessel, first.data, fit.params);
+  fit.problem = Variables(first.data, fit.states, fit.inputs, options.features);
   std::vector<Candidate> candidates;
-  for (size_t k = 0; k < states.size(); ++k) {
-    problem.target = residual.at(states[k]);
+  for (size_t k = 0; k < fit.states.size(); ++k) {
+    fit.problem.target = residual.at(fit.states[k]);
     GpOptions search = options.search;
     search.seed = options.search.seed + 1000 * k;  // each state its own stream
-    const GpResult gp = RunGp(problem, search);
+    const GpResult gp = RunGp(fit.problem, search);
     result.node_evaluations += gp.node_evaluations;
     for (const ParetoPoint* p : Spread(gp.pareto, options.candidates_per_state))
-      candidates.push_back({states[k], p->model});
+      candidates.push_back({fit.states[k], p->model});
   }
+  return candidates;
+}
 
-  // 3. Forward selection, a state at a time, by the held-out part's free runs.
-  std::vector<Effect> kept;
-  std::map<std::string, const Candidate*> chosen;
-  std::vector<const Candidate*> order;  // as kept
-  std::vector<double> path_errors;      // the error after each
-  std::vector<double> alone;            // each candidate's, the vessel's only correction
-  double error = hybrid::HeldoutFreeRunError(vessel, parts.last, params, {}, states);
+// 3. Forward selection, a state at a time, by the held-out parts' free runs: the corrections
+// kept, in order, each with the error after it; `alone` gets each candidate's error as the
+// vessel's only correction.
+struct ForwardSelection {
+  std::vector<const Candidate*> kept;
+  std::vector<double> errors;
+  std::vector<double> alone;
+};
+
+ForwardSelection SelectForward(const GreyBoxFit& fit, const Dataset& heldout,
+                               const std::vector<Candidate>& candidates,
+                               const GreyBoxOptions& options, GreyBoxResult& result) {
+  ForwardSelection out;
+  std::vector<Effect> kept_terms;
+  std::set<std::string> corrected;
+  double error = hybrid::HeldoutFreeRunError(fit.vessel, heldout, fit.params, {}, fit.states);
   result.vessel_free_run_error = error;
-  for (int round = 0; round < static_cast<int>(states.size()); ++round) {
+  for (int round = 0; round < static_cast<int>(fit.states.size()); ++round) {
     std::vector<double> errors(candidates.size(), kDiverged);
     ParallelFor(static_cast<int>(candidates.size()), options.search.threads, [&](int i) {
-      if (chosen.contains(candidates[i].state)) return;
-      std::vector<Effect> terms = kept;
-      for (Effect& e : AsEffects(candidates[i].model, problem.names, candidates[i].state))
+      if (corrected.contains(candidates[i].state)) return;
+      std::vector<Effect> terms = kept_terms;
+      for (Effect& e : AsEffects(candidates[i].model, fit.problem.names, candidates[i].state))
         terms.push_back(std::move(e));
       try {
-        errors[i] = hybrid::HeldoutFreeRunError(vessel, parts.last, params, terms, states);
+        errors[i] = hybrid::HeldoutFreeRunError(fit.vessel, heldout, fit.params, terms, fit.states);
       } catch (const std::exception&) {
         // A term the vessel cannot evaluate is not chosen (its error stays infinite).
       }
     });
-    if (round == 0) alone = errors;
+    if (round == 0) out.alone = errors;
     int lowest = -1;
     for (size_t i = 0; i < candidates.size(); ++i) {
-      if (chosen.contains(candidates[i].state)) continue;
-      result.tried.push_back({candidates[i].state, candidates[i].model.Equation(problem.names),
-                              errors[i], round});
+      if (corrected.contains(candidates[i].state)) continue;
+      result.tried.push_back(
+          {candidates[i].state, candidates[i].model.Equation(fit.problem.names), errors[i], round});
       if (lowest < 0 || errors[i] < errors[lowest]) lowest = static_cast<int>(i);
     }
     if (lowest < 0 || !(errors[lowest] <= (1.0 - options.min_gain) * error)) break;
     int best = lowest;
     for (size_t i = 0; i < candidates.size(); ++i)
-      if (!chosen.contains(candidates[i].state) &&
+      if (!corrected.contains(candidates[i].state) &&
           errors[i] <= (1.0 + options.parsimony) * errors[lowest] &&
           candidates[i].model.Size() < candidates[best].model.Size())
         best = static_cast<int>(i);
     const Candidate& c = candidates[best];
-    chosen[c.state] = &c;
-    order.push_back(&c);
-    path_errors.push_back(errors[best]);
-    for (Effect& e : AsEffects(c.model, problem.names, c.state)) kept.push_back(std::move(e));
+    corrected.insert(c.state);
+    out.kept.push_back(&c);
+    for (Effect& e : AsEffects(c.model, fit.problem.names, c.state))
+      kept_terms.push_back(std::move(e));
     error = errors[best];
+    out.errors.push_back(error);
   }
   result.free_run_error = error;
+  return out;
+}
 
-  // 4. The weights on every row: of the kept corrections, and of each alternative.
-  const PreparedData all = Preprocess(data, states, inputs, PreprocessOptions{});
-  const std::map<std::string, Eigen::VectorXd> all_residual =
-      DerivativeResidual(vessel, all.data, params);
-  GpProblem whole = Variables(all.data, states, inputs, options.features);
+// 4. The weights on every row: of the kept corrections, and of each alternative.
+void RefitOnEveryRow(const GreyBoxFit& fit, const Dataset& data,
+                     const std::vector<Candidate>& candidates, const ForwardSelection& selection,
+                     const GreyBoxOptions& options, GreyBoxResult& result) {
+  const PreparedData all = Preprocess(data, fit.states, fit.inputs, PreprocessOptions{});
+  const std::map<std::string, Eigen::VectorXd> residual =
+      DerivativeResidual(fit.vessel, all.data, fit.params);
+  GpProblem whole = Variables(all.data, fit.states, fit.inputs, options.features);
   const auto refitted = [&](const std::vector<const Candidate*>& corrections, double error) {
     GreyBoxAlternative a{"", {}, {}, error};
     for (const Candidate* c : corrections) {
-      whole.target = all_residual.at(c->state);
+      whole.target = residual.at(c->state);
       const Model m = FitTerms(c->model.tree, whole);
       a.label += (a.label.empty() ? "" : " + ") + c->state + " (size " +
                  std::to_string(c->model.Size()) + ")";
@@ -176,15 +192,31 @@ GreyBoxResult IdentifyGreyBox(const std::string& vessel, const std::vector<doubl
   };
   result.alternatives.push_back(refitted({}, result.vessel_free_run_error));
   for (size_t i = 0; i < candidates.size(); ++i)
-    result.alternatives.push_back(refitted({&candidates[i]}, alone[i]));
+    result.alternatives.push_back(refitted({&candidates[i]}, selection.alone[i]));
   std::vector<const Candidate*> path;
-  for (const Candidate* c : order) {
-    path.push_back(c);
-    if (path.size() > 1) result.alternatives.push_back(refitted(path, path_errors[path.size() - 1]));
+  for (size_t k = 0; k < selection.kept.size(); ++k) {
+    path.push_back(selection.kept[k]);
+    if (path.size() > 1) result.alternatives.push_back(refitted(path, selection.errors[k]));
   }
-  const GreyBoxAlternative kept_model = refitted(order, result.free_run_error);
-  result.terms = kept_model.terms;
-  result.corrections = kept_model.corrections;
+  const GreyBoxAlternative kept = refitted(selection.kept, result.free_run_error);
+  result.terms = kept.terms;
+  result.corrections = kept.corrections;
+}
+
+}  // namespace
+
+GreyBoxResult IdentifyGreyBox(const std::string& vessel, const std::vector<double>& params,
+                              const Dataset& data, const GreyBoxOptions& options) {
+  if (!(options.heldout > 0.0 && options.heldout < 1.0))
+    throw InputError("gp --base: the held-out share must be in (0, 1)");
+  const VesselInfo& info = FindVessel(vessel).Info();
+  GreyBoxFit fit{vessel, params, DynamicStates(info, data), info.InputsIn(data), {}};
+  // 1. Each record's first part fits, its last part judges.
+  const RecordSplit parts = SplitEachRecord(data, options.heldout, 16, "gp --base");
+  GreyBoxResult result;
+  const std::vector<Candidate> candidates = SearchFronts(fit, parts.first, options, result);
+  const ForwardSelection selection = SelectForward(fit, parts.last, candidates, options, result);
+  RefitOnEveryRow(fit, data, candidates, selection, options, result);
   return result;
 }
 

@@ -45,9 +45,9 @@ struct GreyBoxOptions {
 
 struct GreyBoxCandidate {
   std::string state;
-  std::string equation;        // the correction, as fitted on the first part
-  double free_run_error = 0;   // the held-out free runs with it added (infinity: diverged)
-  int round = -1;              // the round it was tried in
+  std::string equation;       // the correction, as fitted on the first part
+  double free_run_error = 0;  // the held-out free runs with it added (infinity: diverged)
+  int round = -1;             // the round it was tried in
 };
 
 // A model the selection weighed: the vessel with some corrections, their weights on every row.
@@ -59,7 +59,7 @@ struct GreyBoxAlternative {
 };
 
 struct GreyBoxResult {
-  std::vector<Effect> terms;                     // the kept corrections, weights on every row
+  std::vector<Effect> terms;                       // the kept corrections, weights on every row
   std::map<std::string, std::string> corrections;  // state -> the kept correction
   // What a choice by other criteria (the closed-loop tests of the training records,
   // metrics/closed_loop_choice.h) weighs: the vessel as given, each state's candidate

@@ -3,8 +3,6 @@
 // that term's shape (an odd function of v), the free runs of the held-out parts fall to the
 // noise's level, and nothing is added to u' or v', which lack nothing. From the vessel as it
 // is, nothing is added. A free run that leaves its bounds never keeps a correction.
-#include "methods/gp/grey_box.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +11,7 @@
 #include "core/expression.h"
 #include "effects/effect_values.h"
 #include "maneuvers/maneuver_factory.h"
+#include "methods/gp/grey_box.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
 

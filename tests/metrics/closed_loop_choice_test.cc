@@ -29,8 +29,8 @@ Dataset Record(const std::string& spec, double extra) {
   at_5hz.rate_hz = 5.0;
   at_5hz.dt = 0.1;
   return sim
-      .RunManeuver(*m, info.default_params,
-                   ValuesOf({YawDamping(extra)}, info.inputs, info.states), at_5hz)
+      .RunManeuver(*m, info.default_params, ValuesOf({YawDamping(extra)}, info.inputs, info.states),
+                   at_5hz)
       .data;
 }
 
