@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <map>
 #include <set>
 #include <sstream>
 
+#include <omp.h>
+
 #include "core/atomic_file.h"
+#include "core/parallel_for.h"
 #include "harness/markdown_html.h"
 #include "harness/plan_view.h"
 #include "methods/nominal/nominal.h"
@@ -208,8 +212,24 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
     const std::set<std::string> subset = methods.size() <= shown.size()
                                              ? std::set<std::string>{}
                                              : std::set<std::string>(shown.begin(), shown.end());
+    // Each test's figures replay every model on it: drawn side by side (each a pure function of
+    // the rows, so the threads do not change them), written in order.
+    std::vector<RunFigures> runs(tests);
+    std::vector<std::vector<std::string>> plan_views(tests);
+    std::vector<std::exception_ptr> errors(tests);
+    ParallelFor(static_cast<int>(tests), omp_get_max_threads(), [&](int t) {
+      try {
+        runs[t] = ExampleRun(suite, rows, vessel, suite.test_maneuvers[t], subset);
+        if (suite.Measured() && !runs[t].all.empty())
+          plan_views[t] = TestPlanViews(suite, rows, vessel, suite.test_maneuvers[t], shown);
+      } catch (...) {
+        errors[t] = std::current_exception();
+      }
+    });
+    for (const std::exception_ptr& e : errors)
+      if (e) std::rethrow_exception(e);
     for (size_t t = 0; t < tests; ++t) {
-      const RunFigures run = ExampleRun(suite, rows, vessel, suite.test_maneuvers[t], subset);
+      const RunFigures& run = runs[t];
       if (run.all.empty()) continue;
       WriteFileAtomically(
           dir + "/run_" + FigureName(vessel) + (t == 0 ? "" : "_" + std::to_string(t + 1)) + ".svg",
@@ -221,9 +241,7 @@ void WriteReport(const Suite& suite, const std::vector<ResultRow>& rows, const s
              << "</figure>\n<details><summary>every method (" << methods.size()
              << ")</summary><figure class=\"plot\">" << run.all << "</figure></details>\n";
       }
-      if (!suite.Measured()) continue;
-      const std::vector<std::string> plans =
-          TestPlanViews(suite, rows, vessel, suite.test_maneuvers[t], shown);
+      const std::vector<std::string>& plans = plan_views[t];
       for (size_t p = 0; p < plans.size(); ++p) {
         WriteFileAtomically(dir + "/plan_" + FigureName(vessel) + "_" + std::to_string(t + 1) +
                                 (p == 0 ? "" : "_heading") + ".svg",
