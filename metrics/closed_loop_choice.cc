@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/records.h"
 #include "metrics/closed_loop_replay.h"
+#include "metrics/zigzag_response.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -32,10 +33,16 @@ std::vector<TestRecord> TestRecords(const Dataset& train, const std::string& ves
     for (const char* kind : {"zigzag", "turning"}) {
       try {
         const std::string spec = RecordedManeuverSpec(kind, vessel, record);
-        if (spec.starts_with(std::string(kind) + ":")) {
-          out.push_back({spec, ManeuverScorer(vessel, spec, record)});
+        if (!spec.starts_with(std::string(kind) + ":")) continue;
+        // A zig-zag judges a model where its reversals show it: a half swing at least, which
+        // the reading checks against the first order (zigzag_response.h); with one reversal
+        // alone nothing tells a random run's reversal from full angle from a zig-zag's.
+        const ManeuverScorer scorer(vessel, spec, record);
+        if (spec.starts_with("zigzag:") &&
+            ReadZigzagCheck(scorer.recorded(), "psi", scorer.rudder()).half_swings < 1)
           break;
-        }
+        out.push_back({spec, scorer});
+        break;
       } catch (const InputError&) {
         // not this test (no heading or rudder, or a record that holds another one)
       }

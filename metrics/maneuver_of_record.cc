@@ -51,7 +51,8 @@ std::string KindOf(const Eigen::VectorXd& delta, const std::map<long, long>& row
   for (const auto& [deg, rows] : rows_at) steered += rows;
   for (const double d : delta) {
     const double deg = d * kDegPerRad;
-    if (std::abs(std::abs(deg) - static_cast<double>(held)) <= 1.5) ++(deg > 0 ? positive : negative);
+    if (std::abs(std::abs(deg) - static_cast<double>(held)) <= 1.5)
+      ++(deg > 0 ? positive : negative);
   }
   if (2 * (positive + negative) < steered) return "";  // no angle held: not a test
   return 5 * std::min(positive, negative) >= positive + negative ? "zigzag" : "turning";
@@ -59,8 +60,8 @@ std::string KindOf(const Eigen::VectorXd& delta, const std::map<long, long>& row
 
 [[noreturn]] void Contradicts(const Dataset& data, const std::string& named,
                               const std::string& what) {
-  throw InputError(data.SourcePrefix() + "the log names its maneuver '" + named + "', but " +
-                   what + " (docs/data.md#the-records-maneuver-frecordjson)");
+  throw InputError(data.SourcePrefix() + "the log names its maneuver '" + named + "', but " + what +
+                   " (docs/data.md#the-records-maneuver-frecordjson)");
 }
 
 }  // namespace
@@ -98,7 +99,9 @@ TestOfRecord ReadTestOfRecord(const Dataset& data, const std::string& kind,
   if (kind == "any") test = named ? named->kind : found;
   if (named && !found.empty() && found != named->kind)
     Contradicts(data, out.named, "the record holds a " + found + " test");
-  if (test.empty()) return out;
+  // A rudder that holds no angle for most of its steering (random steps at every angle) holds no
+  // test, whichever was asked for: only a log that names its test is read as that test.
+  if (test.empty() || (found.empty() && !named)) return out;
   const long five = 5 * std::lround(static_cast<double>(held) / 5.0);
   double a = static_cast<double>(std::abs(held - five) <= 1 ? five : held);
   if (named) {

@@ -112,7 +112,10 @@ double NearestCheck(double order_deg, double rudder_deg) {
 }  // namespace
 
 bool ZigzagCheckReading::Consistent() const {
-  return half_swings < 2 || 3 * agreeing >= 2 * half_swings;
+  if (half_swings >= 2) return 3 * agreeing >= 2 * half_swings;
+  if (half_swings == 1 && first_order_deg > 0)
+    return std::abs(first_order_deg - order_deg) <= std::max(kCheckAgreementDeg, 0.25 * order_deg);
+  return true;
 }
 
 ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& heading,
@@ -123,8 +126,7 @@ ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& headi
       data.CheckNotText(c);
       throw InputError(data.SourcePrefix() + "zig-zag: no channel '" + c + "'");
     }
-  const Eigen::VectorXd psi =
-      SmoothedForCriteria(data.t(), UnwrappedAngle(data[heading]));
+  const Eigen::VectorXd psi = SmoothedForCriteria(data.t(), UnwrappedAngle(data[heading]));
   const Eigen::VectorXd& delta = data[rudder];
   const Eigen::Index n = data.rows();
   double full = rudder_deg > 0 ? rudder_deg * kDeg : delta.cwiseAbs().maxCoeff();
@@ -142,7 +144,9 @@ ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& headi
   // An order: a leg's end followed by a leg to the other side. Its heading: the mean of its
   // last sample's and the one before, which bracket the heading at which it was ordered when
   // the helm answers at once (a simulated test reverses at the first sample past B).
-  auto order_heading = [&](Eigen::Index end) { return 0.5 * (psi(std::max<Eigen::Index>(end - 1, 0)) + psi(end)); };
+  auto order_heading = [&](Eigen::Index end) {
+    return 0.5 * (psi(std::max<Eigen::Index>(end - 1, 0)) + psi(end));
+  };
   std::vector<double> half_swings;
   ZigzagCheckReading out;
   for (size_t i = 0; i + 1 < legs.size(); ++i) {
@@ -160,17 +164,20 @@ ZigzagCheckReading ReadZigzagCheck(const Dataset& data, const std::string& headi
     const double within = std::max(kCheckAgreementDeg, 0.25 * out.order_deg) * kDeg;
     for (const double h : half_swings)
       if (std::abs(h - out.order_deg * kDeg) <= within) ++out.agreeing;
-  } else if (out.orders == 1) {
-    // One reversal: its order's heading from the heading at the execute.
+  }
+  // The first order's heading from the heading at the execute: B with one reversal, and with
+  // two a check that the one half swing is a zig-zag's (ZigzagCheckReading::Consistent).
+  if (out.orders >= 1) {
     const long execute = FindExecute({delta.data(), static_cast<size_t>(n)},
                                      {psi.data(), static_cast<size_t>(n)}, kDeg, 0.0, full);
     if (execute >= 0) {
       for (const auto& [side, end] : legs)
         if (end > execute) {
-          out.order_deg = std::abs(order_heading(end) - psi(execute)) / kDeg;
+          out.first_order_deg = std::abs(order_heading(end) - psi(execute)) / kDeg;
           break;
         }
     }
+    if (out.orders == 1) out.order_deg = out.first_order_deg;
   }
   out.check_deg = NearestCheck(out.order_deg, rudder_deg > 0 ? rudder_deg : full / kDeg);
   return out;
@@ -189,12 +196,11 @@ ZigzagResponse AnalyseZigzag(const Dataset& data, double threshold_deg, const st
   const Eigen::VectorXd psi = SmoothedForCriteria(t, UnwrappedAngle(data[heading]));
   const Eigen::VectorXd& delta = data[rudder];
   const Eigen::Index n = data.rows();
-  Eigen::Index execute =
-      rudder_deg < 0
-          ? -1
-          : FindExecute({delta.data(), static_cast<size_t>(n)},
-                        {psi.data(), static_cast<size_t>(n)}, kDeg,
-                        std::abs(threshold_deg) * kDeg, rudder_deg * kDeg);
+  Eigen::Index execute = rudder_deg < 0
+                             ? -1
+                             : FindExecute({delta.data(), static_cast<size_t>(n)},
+                                           {psi.data(), static_cast<size_t>(n)}, kDeg,
+                                           std::abs(threshold_deg) * kDeg, rudder_deg * kDeg);
   for (Eigen::Index k = 0; k < n && execute < 0; ++k)
     if (std::abs(delta(k) - delta(0)) > kDeg) execute = k;
   if (execute < 0) throw InputError(data.SourcePrefix() + "zig-zag: the rudder never moves");

@@ -18,10 +18,10 @@
 // offset beyond the orders' resolution (a sample's turn), and a clean test: the orders'
 // distances from the base course span at most 1 deg and lie between B - 0.5 and B + 2 deg (a
 // helm that reacts late, by as much each time). Reversals ordered by hand at scattered headings
-// (a pond in wind) say no base course but the execute's. Works with either rudder sign convention (the turning direction
-// is read from the heading). A heading that wraps at +-pi, as logs write it, is unwrapped first
-// (core/angles.h), and a noisy one smoothed (metrics/criteria_smoothing.h): the furthest raw sample
-// would be a noise peak.
+// (a pond in wind) say no base course but the execute's. Works with either rudder sign convention
+// (the turning direction is read from the heading). A heading that wraps at +-pi, as logs write it,
+// is unwrapped first (core/angles.h), and a noisy one smoothed (metrics/criteria_smoothing.h): the
+// furthest raw sample would be a noise peak.
 #pragma once
 
 #include <string>
@@ -63,8 +63,10 @@ struct ZigzagCheckReading {
   // zig-zag is) swings 0.2 to 29 deg between its reversals.
   int half_swings = 0;  // orders between two legs at full angle
   int agreeing = 0;     // of them, within kCheckAgreementDeg (or a quarter) of their median
+  double first_order_deg = 0.0;  // the first order's heading from the execute's (0: none)
   // Whether the orders agree as a zig-zag's do: at least two thirds of two or more half swings
-  // agree (fewer than two: nothing to tell).
+  // agree; one half swing agrees so with the first order's heading from the execute's (both B
+  // and the helm's lag); with no half swing there is nothing to tell.
   bool Consistent() const;
 };
 inline constexpr double kCheckAgreementDeg = 2.5;

@@ -56,8 +56,8 @@ TEST(ManeuverOfRecordTest, ASimulatedTestGivesBackItsSpec) {
 
 TEST(ManeuverOfRecordTest, TheHeadingCheckIsReadFromTheRecordNotTakenToBeTheRudderAngle) {
   // HSVA's KVLCC2 tests run B below A; the reversals are ordered at B, whatever A.
-  for (const char* spec : {"zigzag:20/10", "zigzag:-35/5", "zigzag:10/1", "zigzag:-15/5",
-                           "zigzag:20/20"})
+  for (const char* spec :
+       {"zigzag:20/10", "zigzag:-35/5", "zigzag:10/1", "zigzag:-15/5", "zigzag:20/20"})
     EXPECT_EQ(ManeuverOfRecord(Simulated(spec, 900), "any"), spec);
   // A fast vessel turns up to 4.6 deg between two samples past B: still read as B.
   const VesselSimulator& hs = FindVessel("odin-hs");
@@ -138,6 +138,15 @@ TEST(ManeuverOfRecordTest, EachSharedEssoOsakaTestGivesTheStudysSpec) {
   }
 }
 
+// Random steps put the rudder at a new angle at every step and hold none of them for most of
+// the steering: no test, even asked for a zig-zag or a turn (it was read as zigzag:-15/1, its
+// few reversals from its largest angle taken for a zig-zag's).
+TEST(ManeuverOfRecordTest, RandomStepsHoldNoTest) {
+  const Dataset d = Simulated("random-steps", 400);
+  for (const char* kind : {"zigzag", "turning", "any"})
+    EXPECT_EQ(ManeuverOfRecord(d, kind), "") << kind;
+}
+
 // A random run's rudder switches between +-35 deg, held to both sides as a 35/B zig-zag's is,
 // but its reversals fall at scattered headings (half swings of 0.2 to 29 deg): no zig-zag is
 // read from it, asked for one or for any test.
@@ -147,14 +156,14 @@ TEST(ManeuverOfRecordTest, ARandomRunsScatteredReversalsAreNoZigzag) {
   const std::vector<ColumnMapping> map = ParseColumnMap(
       {"t=t [s]", "north=x_position_mid [m]", "east=y_position_mid [m]", "psi=psi_hat [rad]",
        "r=r_angvelo [rad/s]", "n=n_prop [rps]", "delta=delta_rudder [rad]"});
-  for (const char* file : {"random/random_03-Aug-2020_11_04_37.csv",
-                           "random/random_31-Jul-2020_12_29_58.csv",
-                           "random/random_31-Jul-2020_14_52_18.csv"}) {
+  for (const char* file :
+       {"random/random_03-Aug-2020_11_04_37.csv", "random/random_31-Jul-2020_12_29_58.csv",
+        "random/random_31-Jul-2020_14_52_18.csv"}) {
     ImportReport report;
     const Dataset d = ImportCsvLog((data / file).string(), map, report);
     const ZigzagCheckReading check = ReadZigzagCheck(d, "psi", "delta", 35);
-    EXPECT_FALSE(check.Consistent()) << file << ": " << check.agreeing << " of "
-                                     << check.half_swings << " half swings agree";
+    EXPECT_FALSE(check.Consistent())
+        << file << ": " << check.agreeing << " of " << check.half_swings << " half swings agree";
     EXPECT_EQ(ManeuverOfRecord(d, "zigzag"), "") << file;
     EXPECT_THAT(ManeuverOfRecord(d, "any"), testing::Not(testing::StartsWith("zigzag"))) << file;
   }
