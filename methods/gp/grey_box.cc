@@ -73,7 +73,9 @@ std::vector<const ParetoPoint*> Spread(const std::vector<ParetoPoint>& front, in
   const int size = static_cast<int>(front.size());
   if (size == 0 || n <= 0) return out;
   for (int k = 0; k < std::min(n, size); ++k) {
-    const int i = n >= size ? k : static_cast<int>(std::lround(k * (size - 1.0) / (n - 1.0)));
+    const int i = n >= size ? k
+                  : n == 1  ? size - 1
+                            : static_cast<int>(std::lround(k * (size - 1.0) / (n - 1.0)));
     if (out.empty() || out.back() != &front[i]) out.push_back(&front[i]);
   }
   return out;
