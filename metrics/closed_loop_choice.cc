@@ -6,9 +6,7 @@
 #include <map>
 #include <vector>
 
-#include "core/error.h"
-#include "core/records.h"
-#include "metrics/closed_loop_replay.h"
+#include "metrics/recorded_tests.h"
 #include "metrics/zigzag_response.h"
 #include "simulation/vessel_simulator.h"
 
@@ -17,37 +15,16 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
-struct TestRecord {
-  std::string spec;  // zigzag:A/B or turning:A, read from the record
-  ManeuverScorer scorer;
-};
-
-// The records of `train` that hold a zig-zag or a turning circle, each with its time from 0.
-std::vector<TestRecord> TestRecords(const Dataset& train, const std::string& vessel) {
-  std::vector<TestRecord> out;
-  const std::vector<long> starts = RecordStarts(train.t());
-  for (size_t i = 0; i < starts.size(); ++i) {
-    const long end = i + 1 < starts.size() ? starts[i + 1] : static_cast<long>(train.rows());
-    Dataset record = train.Rows(starts[i], end - starts[i]);
-    record.SetTime(record.t().array() - record.t()(0));
-    for (const char* kind : {"zigzag", "turning"}) {
-      try {
-        const std::string spec = RecordedManeuverSpec(kind, vessel, record);
-        if (!spec.starts_with(std::string(kind) + ":")) continue;
-        // A zig-zag judges a model where its reversals show it: a half swing at least, which
-        // the reading checks against the first order (zigzag_response.h); with one reversal
-        // alone nothing tells a random run's reversal from full angle from a zig-zag's.
-        const ManeuverScorer scorer(vessel, spec, record);
-        if (spec.starts_with("zigzag:") &&
-            ReadZigzagCheck(scorer.recorded(), "psi", scorer.rudder()).half_swings < 1)
-          break;
-        out.push_back({spec, scorer});
-        break;
-      } catch (const InputError&) {
-        // not this test (no heading or rudder, or a record that holds another one)
-      }
-    }
-  }
+// The training records' zig-zags and turning circles. A zig-zag judges a model where its
+// reversals show it: a half swing at least, which the reading checks against the first order
+// (zigzag_response.h); with one reversal alone nothing tells a random run's reversal from full
+// angle from a zig-zag's.
+std::vector<RecordedTest> TestRecords(const Dataset& train, const std::string& vessel) {
+  std::vector<RecordedTest> out;
+  for (RecordedTest& t : RecordedTests(train, vessel, {"zigzag", "turning"}))
+    if (!t.spec.starts_with("zigzag:") ||
+        ReadZigzagCheck(t.scorer.recorded(), "psi", t.scorer.rudder()).half_swings >= 1)
+      out.push_back(std::move(t));
   return out;
 }
 
@@ -57,11 +34,11 @@ struct Criteria {
   std::string status;                        // the first replay that was not ok, else ""
 };
 
-Criteria Replay(const nlohmann::json& model, const std::vector<TestRecord>& tests) {
+Criteria Replay(const nlohmann::json& model, const std::vector<RecordedTest>& tests) {
   Criteria c;
   double overshoot = 0.0, diameter = 0.0;
   int zigzags = 0, circles = 0;
-  for (const TestRecord& t : tests) {
+  for (const RecordedTest& t : tests) {
     const nlohmann::json score = t.scorer.Score(model);
     if (score.value("status", std::string()) != "ok") {
       c.status = t.spec + ": " + score.value("status", std::string("no status"));
@@ -121,13 +98,13 @@ nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
         "read from the records: the free runs chose";
     return report;
   }
-  const std::vector<TestRecord> tests = TestRecords(train, vessel);
+  const std::vector<RecordedTest> tests = TestRecords(train, vessel);
   if (tests.empty()) {
     report["reason"] =
         "no zig-zag or turning circle among the training records: the free runs chose";
     return report;
   }
-  for (const TestRecord& t : tests) report["maneuvers"].push_back(t.spec);
+  for (const RecordedTest& t : tests) report["maneuvers"].push_back(t.spec);
   // The lowest free-run error among the admissible: the alternatives are replayed in the order
   // of their free-run errors, and the first admissible one is chosen; alternatives[0] is the
   // vessel as given (methods/gp/grey_box.h), admissible by definition, so none with a higher

@@ -5,12 +5,11 @@
 #include <vector>
 
 #include "core/derived_channels.h"
-#include "core/error.h"
 #include "core/expression.h"
 #include "core/parse_number.h"
-#include "core/records.h"
 #include "metrics/closed_loop_choice.h"
 #include "metrics/closed_loop_replay.h"
+#include "metrics/recorded_tests.h"
 
 namespace usvid {
 namespace {
@@ -35,29 +34,6 @@ ConstantAndRest SplitConstant(const std::string& equation) {
       (tail.empty() || tail.starts_with(" + ") || tail.starts_with(" - ")))
     return {n.value, tail};
   return {0.0, " + (" + equation + ")"};
-}
-
-struct ZigzagRecord {
-  std::string spec;
-  ManeuverScorer scorer;
-};
-
-// The records of `train` that hold a zig-zag, each with its time from 0.
-std::vector<ZigzagRecord> ZigzagRecords(const Dataset& train, const std::string& vessel) {
-  std::vector<ZigzagRecord> out;
-  const std::vector<long> starts = RecordStarts(train.t());
-  for (size_t i = 0; i < starts.size(); ++i) {
-    const long end = i + 1 < starts.size() ? starts[i + 1] : static_cast<long>(train.rows());
-    Dataset record = train.Rows(starts[i], end - starts[i]);
-    record.SetTime(record.t().array() - record.t()(0));
-    try {
-      const std::string spec = RecordedManeuverSpec("zigzag", vessel, record);
-      if (spec.starts_with("zigzag:")) out.push_back({spec, ManeuverScorer(vessel, spec, record)});
-    } catch (const InputError&) {
-      continue;  // no heading or rudder: no zig-zag to read
-    }
-  }
-  return out;
 }
 
 // The spread (standard deviation) of the r equation over the rows where it is defined.
@@ -99,12 +75,12 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
     report["reason"] = "no vessel to take the replay's rudder from";
     return report;
   }
-  const std::vector<ZigzagRecord> zigzags = ZigzagRecords(train, vessel);
+  const std::vector<RecordedTest> zigzags = RecordedTests(train, vessel, {"zigzag"});
   if (zigzags.empty()) {
     report["reason"] = "no zig-zag among the training records";
     return report;
   }
-  for (const ZigzagRecord& z : zigzags) report["maneuvers"].push_back(z.spec);
+  for (const RecordedTest& z : zigzags) report["maneuvers"].push_back(z.spec);
 
   const std::string equation = model["equations"]["r"].get<std::string>();
   const ConstantAndRest split = SplitConstant(equation);
@@ -114,7 +90,7 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
     trial["equations"]["r"] = with_constant(split.constant + shift);
     CriteriaCost e;
     double cost = 0.0;
-    for (const ZigzagRecord& z : zigzags) {
+    for (const RecordedTest& z : zigzags) {
       const nlohmann::json score = z.scorer.Score(trial);
       const nlohmann::json& first = score["first_overshoot_error_deg"];
       const nlohmann::json& second = score["second_overshoot_error_deg"];

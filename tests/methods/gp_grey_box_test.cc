@@ -9,24 +9,15 @@
 
 #include "core/error.h"
 #include "core/expression.h"
-#include "effects/effect_values.h"
-#include "maneuvers/maneuver_factory.h"
 #include "methods/gp/grey_box.h"
-#include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
+#include "tests/methods/odin3dof_record.h"
 
 namespace usvid {
 namespace {
 
 Dataset Simulate(const std::vector<Effect>& effects, double seconds, uint64_t seed) {
-  const VesselSimulator& sim = FindVessel("odin3dof");
-  const VesselInfo& info = sim.Info();
-  auto m = MakeManeuver("random-steps", info.actuation, seconds, seed);
-  Dataset d = sim.RunManeuver(*m, info.default_params, ValuesOf(effects, info.inputs, info.states),
-                              RunOptions{})
-                  .data;
-  AddGaussianNoise(d, info.states, 0.005, seed);
-  return d;
+  return fixtures::Odin3dofRandomSteps(effects, seconds, seed);
 }
 
 gp::GreyBoxOptions SmallSearch() {
@@ -39,7 +30,7 @@ gp::GreyBoxOptions SmallSearch() {
   return o;
 }
 
-const Effect kCrossFlowYaw{EffectKind::kMissingTerm, {{"coefficient", 0.05}}, {}, "r", "abs(v)*v"};
+using fixtures::kCrossFlowYaw;
 
 // The sum of the kept corrections to `state` at (v, everything else 0).
 double CorrectionAt(const std::vector<Effect>& terms, const std::string& state, double v) {

@@ -22,29 +22,23 @@
 #include "preprocessing/pipeline.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
+#include "tests/methods/odin3dof_record.h"
 
 namespace usvid {
 namespace {
 
 Dataset Simulate(const std::vector<Effect>& effects, double seconds, uint64_t seed) {
-  const VesselSimulator& sim = FindVessel("odin3dof");
-  const VesselInfo& info = sim.Info();
-  auto m = MakeManeuver("random-steps", info.actuation, seconds, seed);
-  Dataset d = sim.RunManeuver(*m, info.default_params, ValuesOf(effects, info.inputs, info.states),
-                              RunOptions{})
-                  .data;
-  AddGaussianNoise(d, info.states, 0.005, seed);
-  return d;
+  return fixtures::Odin3dofRandomSteps(effects, seconds, seed);
 }
 
-const Effect kCrossFlowYaw{EffectKind::kMissingTerm, {{"coefficient", 0.05}}, {}, "r", "abs(v)*v"};
+using fixtures::kCrossFlowYaw;
 
 TEST(HybridTest, AddsTheMissingCrossFlowYawTermAndOnlyThat) {
   const Dataset data = Simulate({kCrossFlowYaw}, 900, 3);
   hybrid::HybridOptions options;
   options.refit.threads = 2;
-  const hybrid::HybridResult h =
-      hybrid::IdentifyHybrid("odin3dof", data, FindVessel("odin3dof").Info().default_params, options);
+  const hybrid::HybridResult h = hybrid::IdentifyHybrid(
+      "odin3dof", data, FindVessel("odin3dof").Info().default_params, options);
   ASSERT_EQ(h.fit.terms.size(), 1u);
   EXPECT_EQ(h.fit.terms[0].state, "r");
   EXPECT_EQ(h.fit.terms[0].term, "abs(v)*v");
@@ -78,8 +72,8 @@ TEST(HybridTest, AddsNothingToTheVesselAsItIs) {
   const Dataset data = Simulate({}, 600, 4);
   hybrid::HybridOptions options;
   options.refit.threads = 2;
-  const hybrid::HybridResult h =
-      hybrid::IdentifyHybrid("odin3dof", data, FindVessel("odin3dof").Info().default_params, options);
+  const hybrid::HybridResult h = hybrid::IdentifyHybrid(
+      "odin3dof", data, FindVessel("odin3dof").Info().default_params, options);
   EXPECT_TRUE(h.fit.terms.empty());
   ASSERT_EQ(h.rounds.size(), 1u);
   EXPECT_LT(h.rounds[0].likelihood_ratio, options.critical_ratio);
@@ -136,9 +130,9 @@ TEST(HybridTest, RefusesWhatItCannotDo) {
   options.set_aside_cosine = 1.5;
   EXPECT_THROW(hybrid::IdentifyHybrid("odin3dof", data, start, options), InputError);
   options = {};
-  EXPECT_THROW(hybrid::IdentifyHybrid("odin-hs", data,
-                                      FindVessel("odin-hs").Info().default_params, options),
-               InputError);
+  EXPECT_THROW(
+      hybrid::IdentifyHybrid("odin-hs", data, FindVessel("odin-hs").Info().default_params, options),
+      InputError);
 }
 
 // A residual of r' that is 2 v r + 0.3 u exactly: FROLS proposes those two terms first, with

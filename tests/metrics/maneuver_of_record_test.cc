@@ -110,12 +110,18 @@ TEST(ManeuverOfRecordTest, TheLogsNameOfItsManeuverIsUsedAndCheckedAgainstTheRec
   }
 }
 
-TEST(ManeuverOfRecordTest, EachSharedEssoOsakaTestGivesTheStudysSpec) {
-  const std::filesystem::path data = std::string(USVID_SHARED_DATA_DIR) + "/esso-osaka";
-  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
+// One of Esso Osaka's shared runs, its heading, rudder and track mapped.
+Dataset EssoOsakaRun(const std::filesystem::path& file) {
   const std::vector<ColumnMapping> map = ParseColumnMap(
       {"t=t [s]", "north=x_position_mid [m]", "east=y_position_mid [m]", "psi=psi_hat [rad]",
        "r=r_angvelo [rad/s]", "n=n_prop [rps]", "delta=delta_rudder [rad]"});
+  ImportReport report;
+  return ImportCsvLog(file.string(), map, report);
+}
+
+TEST(ManeuverOfRecordTest, EachSharedEssoOsakaTestGivesTheStudysSpec) {
+  const std::filesystem::path data = std::string(USVID_SHARED_DATA_DIR) + "/esso-osaka";
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
   const std::pair<const char*, const char*> runs[] = {
       {"zigzag/zigzag_31-Jul-2020_13_04_24.csv", "zigzag:20/20"},
       {"zigzag/zigzag_31-Jul-2020_13_14_21.csv", "zigzag:30/30"},
@@ -130,8 +136,7 @@ TEST(ManeuverOfRecordTest, EachSharedEssoOsakaTestGivesTheStudysSpec) {
       {"turning/turn_14-Sep-2020_15_47_33.csv", "turning:-35"},
       {"turning/turn_14-Oct-2020_15_21_57.csv", "turning:-35"}};
   for (const auto& [file, spec] : runs) {
-    ImportReport report;
-    const Dataset d = ImportCsvLog((data / file).string(), map, report);
+    const Dataset d = EssoOsakaRun(data / file);
     EXPECT_EQ(ManeuverOfRecord(d, std::string(spec).substr(0, std::string(spec).find(':'))), spec)
         << file;
     EXPECT_EQ(ManeuverOfRecord(d, "any"), spec) << file;
@@ -153,14 +158,10 @@ TEST(ManeuverOfRecordTest, RandomStepsHoldNoTest) {
 TEST(ManeuverOfRecordTest, ARandomRunsScatteredReversalsAreNoZigzag) {
   const std::filesystem::path data = std::string(USVID_SHARED_DATA_DIR) + "/esso-osaka";
   if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
-  const std::vector<ColumnMapping> map = ParseColumnMap(
-      {"t=t [s]", "north=x_position_mid [m]", "east=y_position_mid [m]", "psi=psi_hat [rad]",
-       "r=r_angvelo [rad/s]", "n=n_prop [rps]", "delta=delta_rudder [rad]"});
   for (const char* file :
        {"random/random_03-Aug-2020_11_04_37.csv", "random/random_31-Jul-2020_12_29_58.csv",
         "random/random_31-Jul-2020_14_52_18.csv"}) {
-    ImportReport report;
-    const Dataset d = ImportCsvLog((data / file).string(), map, report);
+    const Dataset d = EssoOsakaRun(data / file);
     const ZigzagCheckReading check = ReadZigzagCheck(d, "psi", "delta", 35);
     EXPECT_FALSE(check.Consistent())
         << file << ": " << check.agreeing << " of " << check.half_swings << " half swings agree";
