@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "core/error.h"
 #include "core/stretches.h"
@@ -13,7 +15,8 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
                                           const std::vector<double>& params,
                                           const EffectValues<double>& effects, const Dataset& data,
                                           const std::vector<std::string>& channels,
-                                          double segment_s, const RunOptions& options) {
+                                          double segment_s, const RunOptions& options,
+                                          const SegmentStop& stop) {
   if (!(segment_s > 0)) throw InputError("segment length must be positive");
   std::vector<double> variance;
   for (const std::string& c : channels) {
@@ -27,9 +30,9 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
       variance.push_back(std::max(sampled.select((v - mean).square(), 0.0).sum() / n, 1e-300));
     }
   }
-  SegmentedError out;
-  double total = 0.0;
-  long count = 0;
+  // The segments: [first, last] rows, within segment_s and across no gap; each run from its
+  // first row's measured state.
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> segments;
   const Eigen::VectorXd& t = data.t();
   const double gap = GapLimit(t, kRawGapFactor);  // no segment runs across a gap
   Eigen::Index start = 0;
@@ -42,8 +45,27 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
     while (end + 1 < data.rows() && t(end + 1) - t(start) <= segment_s &&
            t(end + 1) - t(end) <= gap)
       ++end;
+    segments.emplace_back(start, end);
+    start = end;
+  }
+  // The rows the error averages over, known before any run: each segment's sampled values.
+  long count = 0;
+  for (const auto& [first, last] : segments)
+    for (const std::string& c : channels)
+      count += data[c].segment(first, last - first + 1).array().isFinite().count();
+  SegmentedError out;
+  double total = 0.0;
+  for (const auto& [first, last] : segments) {
+    if (out.diverged && stop.at_divergence) {
+      out.stopped = true;
+      break;
+    }
+    if (count > 0 && total / static_cast<double>(count) > stop.above) {
+      out.stopped = true;
+      break;
+    }
     std::vector<bool> keep(data.rows(), false);
-    for (Eigen::Index i = start; i <= end; ++i) keep[i] = true;
+    for (Eigen::Index i = first; i <= last; ++i) keep[i] = true;
     Dataset segment = data;
     segment.KeepRows(keep);
     const SimulationResult r = sim.RunInputs(segment, params, effects, options);
@@ -64,10 +86,8 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
         if (!std::isfinite(y(k))) continue;  // not sampled there
         const double e = k < r.data.rows() ? (*simulated[c])(k)-y(k) : y(k);
         total += e * e / variance[c];
-        ++count;
       }
     }
-    start = end;
   }
   out.error = count > 0 ? total / static_cast<double>(count) : 0.0;
   return out;

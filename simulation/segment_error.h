@@ -8,6 +8,7 @@
 // free run (the hybrid's check of its terms, methods/hybrid/heldout_free_run.h).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -19,13 +20,24 @@ struct SegmentedError {
   double error = 0.0;
   // Whether a segment's run stopped early or left the bounds of simulation/divergence_bounds.h.
   bool diverged = false;
+  // Whether the segments were left unrun at a SegmentStop: `error` is then what the segments
+  // run so far add over all rows, a lower bound of the whole.
+  bool stopped = false;
+};
+
+// When a caller that needs only a bound may leave the remaining segments unrun: at the first
+// that diverges, and once the error is sure to exceed `above` (the squared errors only add).
+struct SegmentStop {
+  bool at_divergence = false;
+  double above = std::numeric_limits<double>::infinity();
 };
 
 SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
                                           const std::vector<double>& params,
                                           const EffectValues<double>& effects, const Dataset& data,
                                           const std::vector<std::string>& channels,
-                                          double segment_s, const RunOptions& options = {});
+                                          double segment_s, const RunOptions& options = {},
+                                          const SegmentStop& stop = {});
 
 // The error alone.
 double SegmentedSimulationError(const VesselSimulator& sim, const std::vector<double>& params,

@@ -186,11 +186,13 @@ nlohmann::json FiniteOrDiverged(double error) {
 // (methods/gp/grey_box.h) the closed-loop choice weighs.
 void WriteGreyBoxSearch(const gp::GreyBoxResult& r, nlohmann::json& model) {
   nlohmann::json tried = nlohmann::json::array(), alternatives = nlohmann::json::array();
-  for (const gp::GreyBoxCandidate& c : r.tried)
+  for (const gp::GreyBoxCandidate& c : r.tried) {
     tried.push_back({{"state", c.state},
                      {"correction", c.equation},
                      {"round", c.round},
                      {"free_run_error", FiniteOrDiverged(c.free_run_error)}});
+    if (c.free_run_error_at_least) tried.back()["free_run_error_at_least"] = true;
+  }
   for (const gp::GreyBoxAlternative& a : r.alternatives) {
     nlohmann::json terms = nlohmann::json::array();
     for (const Effect& e : a.terms) terms.push_back(EffectToJson(e));
@@ -198,6 +200,7 @@ void WriteGreyBoxSearch(const gp::GreyBoxResult& r, nlohmann::json& model) {
                             {"corrections", a.corrections},
                             {"effects", terms},
                             {"free_run_error", FiniteOrDiverged(a.free_run_error)}});
+    if (a.free_run_error_at_least) alternatives.back()["free_run_error_at_least"] = true;
   }
   model["gp"]["tried"] = tried;
   model["alternatives"] = alternatives;

@@ -121,6 +121,7 @@ struct ForwardSelection {
   std::vector<const Candidate*> kept;
   std::vector<double> errors;
   std::vector<double> alone;
+  double alone_bound = 0.0;  // above it, an error in `alone` is a lower bound
 };
 
 ForwardSelection SelectForward(const GreyBoxFit& fit, const Dataset& heldout,
@@ -132,6 +133,12 @@ ForwardSelection SelectForward(const GreyBoxFit& fit, const Dataset& heldout,
   double error = hybrid::HeldoutFreeRunError(fit.vessel, heldout, fit.params, {}, fit.states);
   result.vessel_free_run_error = error;
   for (int round = 0; round < static_cast<int>(fit.states.size()); ++round) {
+    // What a candidate's error can matter up to: to be kept, within the parsimony of an error
+    // low enough to keep; in the first round also below the vessel's own, the alternatives the
+    // closed-loop choice replays (metrics/closed_loop_choice.h). A free run is stopped once its
+    // error is sure to exceed this, and its error is then a lower bound.
+    const double keepable = (1.0 + options.parsimony) * (1.0 - options.min_gain) * error;
+    const double matters = round == 0 ? std::max(error, keepable) : keepable;
     std::vector<double> errors(candidates.size(), kDiverged);
     ParallelFor(static_cast<int>(candidates.size()), options.search.threads, [&](int i) {
       if (corrected.contains(candidates[i].state)) return;
@@ -139,17 +146,21 @@ ForwardSelection SelectForward(const GreyBoxFit& fit, const Dataset& heldout,
       for (Effect& e : AsEffects(candidates[i].model, fit.problem.names, candidates[i].state))
         terms.push_back(std::move(e));
       try {
-        errors[i] = hybrid::HeldoutFreeRunError(fit.vessel, heldout, fit.params, terms, fit.states);
+        errors[i] = hybrid::HeldoutFreeRunError(fit.vessel, heldout, fit.params, terms, fit.states,
+                                                matters);
       } catch (const std::exception&) {
         // A term the vessel cannot evaluate is not chosen (its error stays infinite).
       }
     });
-    if (round == 0) out.alone = errors;
+    if (round == 0) {
+      out.alone = errors;
+      out.alone_bound = matters;
+    }
     int lowest = -1;
     for (size_t i = 0; i < candidates.size(); ++i) {
       if (corrected.contains(candidates[i].state)) continue;
-      result.tried.push_back(
-          {candidates[i].state, candidates[i].model.Equation(fit.problem.names), errors[i], round});
+      result.tried.push_back({candidates[i].state, candidates[i].model.Equation(fit.problem.names),
+                              errors[i], round, std::isfinite(errors[i]) && errors[i] > matters});
       if (lowest < 0 || errors[i] < errors[lowest]) lowest = static_cast<int>(i);
     }
     if (lowest < 0 || !(errors[lowest] <= (1.0 - options.min_gain) * error)) break;
@@ -180,7 +191,7 @@ void RefitOnEveryRow(const GreyBoxFit& fit, const Dataset& data,
       DerivativeResidual(fit.vessel, all.data, fit.params);
   GpProblem whole = Variables(all.data, fit.states, fit.inputs, options.features);
   const auto refitted = [&](const std::vector<const Candidate*>& corrections, double error) {
-    GreyBoxAlternative a{"", {}, {}, error};
+    GreyBoxAlternative a{"", {}, {}, error, false};
     for (const Candidate* c : corrections) {
       whole.target = residual.at(c->state);
       const Model m = FitTerms(c->model.tree, whole);
@@ -193,8 +204,11 @@ void RefitOnEveryRow(const GreyBoxFit& fit, const Dataset& data,
     return a;
   };
   result.alternatives.push_back(refitted({}, result.vessel_free_run_error));
-  for (size_t i = 0; i < candidates.size(); ++i)
+  for (size_t i = 0; i < candidates.size(); ++i) {
     result.alternatives.push_back(refitted({&candidates[i]}, selection.alone[i]));
+    result.alternatives.back().free_run_error_at_least =
+        std::isfinite(selection.alone[i]) && selection.alone[i] > selection.alone_bound;
+  }
   std::vector<const Candidate*> path;
   for (size_t k = 0; k < selection.kept.size(); ++k) {
     path.push_back(selection.kept[k]);

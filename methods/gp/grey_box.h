@@ -48,6 +48,9 @@ struct GreyBoxCandidate {
   std::string equation;       // the correction, as fitted on the first part
   double free_run_error = 0;  // the held-out free runs with it added (infinity: diverged)
   int round = -1;             // the round it was tried in
+  // Its free runs were stopped once the error was sure to exceed what could be kept (or, in the
+  // first round, the vessel's own): free_run_error is a lower bound.
+  bool free_run_error_at_least = false;
 };
 
 // A model the selection weighed: the vessel with some corrections, their weights on every row.
@@ -55,7 +58,8 @@ struct GreyBoxAlternative {
   std::string label;  // "vessel", or the corrections: "r (size 9) + u (size 5)"
   std::vector<Effect> terms;
   std::map<std::string, std::string> corrections;  // state -> the correction
-  double free_run_error = 0.0;  // on the held-out parts, weights of the first parts
+  double free_run_error = 0.0;           // on the held-out parts, weights of the first parts
+  bool free_run_error_at_least = false;  // a lower bound, above the vessel's own
 };
 
 struct GreyBoxResult {

@@ -10,13 +10,14 @@ namespace usvid::hybrid {
 
 double HeldoutFreeRunError(const std::string& vessel, const Dataset& heldout,
                            const std::vector<double>& params, const std::vector<Effect>& terms,
-                           const std::vector<std::string>& states) {
+                           const std::vector<std::string>& states, double stop_above) {
   const VesselSimulator& simulator = FindVessel(vessel);
   const VesselInfo& info = simulator.Info();
   // One segment per stretch between gaps: each record (core/records.h) is one free run.
   const SegmentedError run =
       SegmentedSimulationErrorOf(simulator, params, ValuesOf(terms, info.inputs, info.states),
-                                 heldout, states, std::numeric_limits<double>::infinity());
+                                 heldout, states, std::numeric_limits<double>::infinity(), {},
+                                 SegmentStop{.at_divergence = true, .above = stop_above});
   return run.diverged ? std::numeric_limits<double>::infinity() : run.error;
 }
 

@@ -8,6 +8,7 @@
 // runs do not get worse with it (hybrid.h).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -19,9 +20,12 @@ namespace usvid::hybrid {
 // The free runs' error of simulation/segment_error.h, each record of `heldout` (and each stretch
 // between a log's own gaps) run whole from its first row: the squared errors of the `states`
 // over each one's variance, averaged over the rows where it was sampled; +infinity when a run
-// leaves the bounds of simulation/divergence_bounds.h.
+// leaves the bounds of simulation/divergence_bounds.h. A caller that weighs a model only against
+// a bound passes it as `stop_above`: once the error is sure to exceed it, the records left are
+// not run and the error so far (a lower bound, above `stop_above`) is returned.
 double HeldoutFreeRunError(const std::string& vessel, const Dataset& heldout,
                            const std::vector<double>& params, const std::vector<Effect>& terms,
-                           const std::vector<std::string>& states);
+                           const std::vector<std::string>& states,
+                           double stop_above = std::numeric_limits<double>::infinity());
 
 }  // namespace usvid::hybrid

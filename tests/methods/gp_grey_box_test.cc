@@ -72,7 +72,7 @@ TEST(GpGreyBoxTest, RefusesARecordWithoutTheVesselsStates) {
   Dataset data = Simulate({}, 60, 5);
   Dataset no_v;
   no_v.SetTime(data.t());
-  for (const std::string& c : {"u", "r", "tau_x", "tau_y", "tau_n"}) no_v.Set(c, data[c]);
+  for (const char* c : {"u", "r", "tau_x", "tau_y", "tau_n"}) no_v.Set(c, data[c]);
   try {
     gp::IdentifyGreyBox("odin3dof", FindVessel("odin3dof").Info().default_params, no_v,
                         SmallSearch());
