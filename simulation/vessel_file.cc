@@ -1,7 +1,5 @@
 #include "simulation/vessel_file.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,112 +11,16 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
+#include "core/yaml_section.h"
 #include "simulation/mmg_estimates.h"
 #include "simulation/wind_estimates.h"
 #include "simulators/mmg.h"
 
 namespace usvid {
-namespace {
-
-// A YAML mapping read key by key: every key must be known, and errors name file:line.
-class Section {
- public:
-  Section(const std::string& file, const YAML::Node& node, std::string path)
-      : file_(file), node_(node), path_(std::move(path)) {
-    if (!node_.IsMap()) {
-      const YAML::Mark m = node_.Mark();
-      throw InputError(
-          Located(file_, m.is_null() ? 0 : m.line + 1, 0,
-                  (path_.empty() ? std::string("the file") : path_.substr(0, path_.size() - 1)) +
-                      ": expected a mapping of key: value"));
-    }
-  }
-
-  [[noreturn]] void Fail(const YAML::Node& at, const std::string& what) const {
-    const YAML::Mark m = at.Mark();
-    throw InputError(
-        Located(file_, m.is_null() ? 0 : m.line + 1, m.is_null() ? 0 : m.column + 1, path_ + what));
-  }
-  [[noreturn]] void FailKey(const std::string& key, const std::string& what) const {
-    Fail(Has(key) ? node_[key] : node_, key + ": " + what);
-  }
-  [[noreturn]] void FailHere(const std::string& what) const { Fail(node_, what); }
-
-  bool Has(const std::string& key) const { return node_[key].IsDefined(); }
-
-  std::optional<double> Number(const std::string& key) {
-    known_.insert(key);
-    const YAML::Node v = node_[key];
-    if (!v.IsDefined()) return std::nullopt;
-    double x = 0.0;
-    if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x))
-      Fail(v, key + ": '" + (v.IsScalar() ? v.Scalar() : std::string("(not a number)")) +
-                  "' is not a finite number");
-    return x;
-  }
-  double Required(const std::string& key, const std::string& what) {
-    const std::optional<double> x = Number(key);
-    if (!x) FailHere(key + ": missing (" + what + ")");
-    return *x;
-  }
-  double Positive(const std::string& key, const std::string& what) {
-    const double x = Required(key, what);
-    if (x <= 0) FailKey(key, "must be above 0, got " + FormatNumber(x));
-    return x;
-  }
-  std::optional<std::string> Text(const std::string& key) {
-    known_.insert(key);
-    const YAML::Node v = node_[key];
-    if (!v.IsDefined()) return std::nullopt;
-    if (!v.IsScalar()) Fail(v, key + ": expected a text");
-    return v.Scalar();
-  }
-  std::optional<Section> Child(const std::string& key) {
-    known_.insert(key);
-    if (!Has(key)) return std::nullopt;
-    return Section(file_, node_[key], path_ + key + ".");
-  }
-  Section RequiredChild(const std::string& key, const std::string& what) {
-    std::optional<Section> s = Child(key);
-    if (!s) FailHere(key + ": missing (" + what + ")");
-    return *s;
-  }
-  // Every key of the mapping, with its node (for free-form sections: coefficients).
-  std::vector<std::pair<std::string, YAML::Node>> Items() const {
-    std::vector<std::pair<std::string, YAML::Node>> out;
-    for (const auto& kv : node_) out.emplace_back(kv.first.Scalar(), kv.second);
-    return out;
-  }
-  // Fails on the first key that was never asked for.
-  void RefuseUnknown(const std::string& known_list) const {
-    for (const auto& kv : node_)
-      if (!known_.count(kv.first.Scalar()))
-        Fail(kv.first, kv.first.Scalar() + ": unknown key (known: " + known_list + ")");
-  }
-
- private:
-  std::string file_;
-  YAML::Node node_;
-  std::string path_;
-  std::set<std::string> known_;
-};
-
-YAML::Node Load(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such vessel file");
-  try {
-    return YAML::LoadFile(path);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(Located(path, e.mark.line + 1, e.mark.column + 1, e.msg));
-  } catch (const YAML::Exception& e) {
-    throw InputError(path + ": " + e.what());
-  }
-}
-
-}  // namespace
 
 VesselFile ReadVesselFile(const std::string& path) {
-  const YAML::Node root = Load(path);
-  Section top(path, root, "");
+  const YAML::Node root = LoadYamlFile(path, "vessel file");
+  YamlSection top(path, root, "");
   VesselFile out;
   out.name = top.Text("name").value_or(std::filesystem::path(path).stem().string());
 
@@ -126,7 +28,7 @@ VesselFile ReadVesselFile(const std::string& path) {
   h.rho = top.Number("rho").value_or(1025.0);
   if (h.rho <= 0) top.FailKey("rho", "must be above 0, got " + FormatNumber(h.rho));
 
-  Section hull = top.RequiredChild("hull", "the main particulars");
+  YamlSection hull = top.RequiredChild("hull", "the main particulars");
   h.L = hull.Positive("L", "length between perpendiculars [m]");
   h.B = hull.Positive("B", "breadth [m]");
   h.d = hull.Positive("d", "draft [m]");
@@ -144,18 +46,18 @@ VesselFile ReadVesselFile(const std::string& path) {
     hull.FailKey(k_zz ? "k_zz" : "I_zG", "must be above 0");
   hull.RefuseUnknown("L, B, d, C_b, mass, x_G, k_zz, I_zG");
 
-  Section prop = top.RequiredChild("propeller", "diameter and position");
+  YamlSection prop = top.RequiredChild("propeller", "diameter and position");
   h.D_P = prop.Positive("D", "propeller diameter [m]");
   const double x_P = prop.Number("x").value_or(-0.48 * h.L);
   prop.RefuseUnknown("D, x");
 
-  Section rud = top.RequiredChild("rudder", "area, span and position");
+  YamlSection rud = top.RequiredChild("rudder", "area, span and position");
   h.A_R = rud.Positive("area", "rudder area [m^2]");
   h.H_R = rud.Positive("span", "rudder span H_R [m]");
   const double x_R = rud.Number("x").value_or(-0.5 * h.L);
   rud.RefuseUnknown("area, span, x");
 
-  Section ctl = top.RequiredChild("controls", "the rudder's sign and range, the propeller's");
+  YamlSection ctl = top.RequiredChild("controls", "the rudder's sign and range, the propeller's");
   const std::string sign = ctl.Text("rudder_sign").value_or("");
   if (sign != "mmg" && sign != "ittc")
     ctl.FailKey("rudder_sign", "give mmg (a positive delta turns to starboard) or ittc (to port)");
@@ -172,7 +74,7 @@ VesselFile ReadVesselFile(const std::string& path) {
   ctl.RefuseUnknown("rudder_sign, rudder_max_deg, rudder_rate_deg_s, n_min, n_max, n_cruise");
 
   // The body above the water: Fujiwara et al. 1998's inputs.
-  std::optional<Section> wind = top.Child("wind");
+  std::optional<YamlSection> wind = top.Child("wind");
   WindBody body;
   double rho_air = 1.22;
   bool wind_in_model = false;
@@ -204,7 +106,7 @@ VesselFile ReadVesselFile(const std::string& path) {
 
   // Coefficients: what is given, else the estimate.
   std::map<std::string, double> given;
-  std::optional<Section> coefficients = top.Child("coefficients");
+  std::optional<YamlSection> coefficients = top.Child("coefficients");
   std::vector<MmgEstimate> estimates = EstimateMmgCoefficients(h);
   if (wind)
     for (MmgEstimate& e : EstimateWindCoefficients(body)) estimates.push_back(std::move(e));
