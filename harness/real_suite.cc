@@ -11,6 +11,7 @@
 #include "harness/embedded_suites.h"
 #include "harness/suite_data.h"
 #include "harness/suite_methods.h"
+#include "harness/track_file.h"
 #include "methods/hybrid/hybrid.h"
 #include "methods/identify_request.h"
 #include "methods/refit/refit.h"
@@ -29,27 +30,34 @@ constexpr long kCrossValidationFitRows = 20000;
 
 // A folder scanned for further test runs, from the data folder, and the test its runs hold:
 // "zigzag", "turning", "any" (either, read from each record) or "" (free runs alone).
-struct RunFolder {
-  const char* path;
-  const char* tests;
-};
+using RunFolder = TrackRunFolder;
 
 // A further run's file extension and the suite format it is read in; "" for the format of the
 // track's listed runs (with their column map).
 struct RunFormat {
-  const char* extension;
-  const char* format;
+  std::string extension;
+  std::string format;
 };
 
 struct TrackSpec {
-  const char* name;
-  const char* json;
+  std::string name;
+  std::string json;
   std::vector<RunFolder> folders;
   std::vector<RunFormat> formats;
   // Trained in one tank and scored in another: not cross-validated over its runs (its folds would
   // mix the tanks), and skipped, with a note, when either tank's folder is absent.
   bool cross_facility = false;
+  // A vessel folder's track (harness/track_file.h): cross-validated unless its track file splits
+  // the runs.
+  bool vessel_folder = false;
+  bool split = true;
+  nlohmann::json read;  // the keys its runs are read with; a built-in track's first test's
 };
+
+// The keys a track's further runs are read with (format, column map, end, scale, rate).
+const nlohmann::json& ReadKeys(const TrackSpec& spec, const nlohmann::json& suite) {
+  return spec.vessel_folder ? spec.read : suite["data"]["test"].at(0);
+}
 
 // KVLCC2's folder also takes data files of usvid's own format (docs/data.md): another tank's
 // tests, imported (and Froude-scaled) with usvid import. HSVA's folder is a track of its own, and
@@ -79,9 +87,9 @@ const std::vector<TrackSpec>& Tracks() {
 
 // The format `path` is read in, as `spec` maps its extension; nullptr for a file it does not
 // read.
-const char* FormatOf(const TrackSpec& spec, const fs::path& path) {
+const std::string* FormatOf(const TrackSpec& spec, const fs::path& path) {
   for (const RunFormat& f : spec.formats)
-    if (path.extension() == f.extension) return f.format;
+    if (path.extension() == f.extension) return &f.format;
   return nullptr;
 }
 
@@ -124,7 +132,7 @@ void Resolve(nlohmann::json& suite, const fs::path& data_dir, std::set<std::stri
 // maneuver and is contradicted by its record, or names one usvid does not know, stops the suite
 // (InputError naming the file): a test misread is worse than one left out.
 std::string ManeuverOfFurtherRun(const nlohmann::json& entry, const RunFolder& folder) {
-  if (std::string(folder.tests).empty()) return "";
+  if (folder.tests.empty()) return "";
   Dataset data;
   try {
     data = LoadSuiteData(ParseSuiteData(entry, "", "further run"));
@@ -152,15 +160,15 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
     const fs::path folder = spec.folders[i].path;
     for (const fs::directory_entry& e : fs::directory_iterator(data_dir / folder, ec)) {
       if (!e.is_regular_file() || FormatOf(spec, e.path()) == nullptr) continue;
-      const std::string relative = (folder / e.path().filename()).string();
+      const std::string relative = (folder / e.path().filename()).lexically_normal().string();
       if (!listed.contains(relative)) found.emplace_back(relative, i);
     }
   }
   std::sort(found.begin(), found.end());
   std::vector<nlohmann::json> out;
-  const nlohmann::json& like = suite["data"]["test"].at(0);
+  const nlohmann::json& like = ReadKeys(spec, suite);
   for (const auto& [f, folder] : found) {
-    const std::string format = FormatOf(spec, f);
+    const std::string format = *FormatOf(spec, f);
     nlohmann::json entry = {
         {"name", fs::path(f).stem().string()},
         {"format", format.empty() ? like.at("format").get<std::string>() : format},
@@ -168,6 +176,7 @@ std::vector<nlohmann::json> FurtherRuns(const TrackSpec& spec, const nlohmann::j
     if (like.contains("end_at_stop")) entry["end_at_stop"] = like["end_at_stop"];
     if (like.contains("map") && format.empty()) entry["map"] = like["map"];
     if (like.contains("scale") && format.empty()) entry["scale"] = like["scale"];
+    if (like.contains("rate_from")) entry["rate_from"] = like["rate_from"];
     if (const std::string maneuver = ManeuverOfFurtherRun(entry, spec.folders[folder]);
         !maneuver.empty())
       entry["maneuver"] = maneuver;
@@ -202,7 +211,7 @@ std::string WholeRunOf(const std::string& file) {
 // whole is left out. What was done goes to `notes`.
 void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const fs::path& data_dir,
                             nlohmann::json& suite, std::vector<std::string>& notes) {
-  const nlohmann::json like = suite["data"]["test"].at(0);
+  const nlohmann::json like = ReadKeys(spec, suite);
   nlohmann::json train = nlohmann::json::array();
   for (const nlohmann::json& entry : suite["data"]["train"]) {
     const std::vector<std::string> files = FilesOf(entry);
@@ -242,7 +251,10 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
       kept.push_back(run);
     }
     runs += kept.size();
-    suite["data"][part] = kept;
+    if (kept.empty() && std::string(part) == "test")
+      suite["data"].erase("test");  // every run trains, and each is held out in turn
+    else
+      suite["data"][part] = kept;
   }
   suite["cv"] = cv;
   // diagnose and hybrid search and refit the vessel for each candidate: 200-500 s a fit on the
@@ -287,6 +299,131 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
                        : std::string(")")));
 }
 
+// The vessel folders of `data_dir` (harness/track_file.h): its subfolders with a track.yaml.
+std::vector<fs::path> VesselFolders(const fs::path& data_dir) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(data_dir, ec))
+    if (e.is_directory() && fs::is_regular_file(e.path() / "track.yaml")) out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The runs of a vessel folder's track: every file of its folders in the track's format, relative
+// to the data folder, sorted.
+std::vector<std::string> RunsOf(const TrackSpec& spec, const fs::path& data_dir) {
+  std::vector<std::string> runs;
+  for (const RunFolder& folder : spec.folders) {
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(data_dir / folder.path, ec))
+      if (e.is_regular_file() && FormatOf(spec, e.path()) != nullptr)
+        runs.push_back((fs::path(folder.path) / e.path().filename()).lexically_normal().string());
+  }
+  std::sort(runs.begin(), runs.end());
+  return runs;
+}
+
+// A split's training runs as one entry, fitted on jointly: "<n> runs" (or the one run's name,
+// with its cut).
+nlohmann::json JoinedTraining(const TrackFile& track, const fs::path& folder) {
+  if (track.train.size() == 1) {
+    nlohmann::json entry = track.train[0];
+    entry["file"] = (folder / entry["file"].get<std::string>()).lexically_normal().string();
+    return entry;
+  }
+  // Read as its runs are, which must agree.
+  nlohmann::json entry = track.train[0];
+  entry.erase("maneuver");
+  entry["name"] = std::to_string(track.train.size()) + " runs";
+  entry["file"] = nlohmann::json::array();
+  for (const nlohmann::json& run : track.train) {
+    if (run.contains("from_s") || run.contains("to_s"))
+      throw InputError(track.file + ": split.train: " + run["file"].get<std::string>() +
+                       ": a cut (from_s, to_s) applies to a training run alone; the runs of a "
+                       "split are fitted on jointly");
+    for (const char* key : {"end_at_stop", "rate_from"})
+      if (run.value(key, "") != track.train[0].value(key, ""))
+        throw InputError(track.file + ": split.train: " + run["file"].get<std::string>() + ": " +
+                         key +
+                         " differs from the first training run's; the runs of a split "
+                         "are read alike and fitted on jointly");
+    entry["file"].push_back((folder / run["file"].get<std::string>()).lexically_normal().string());
+  }
+  return entry;
+}
+
+// A vessel folder's track (harness/track_file.h): its spec and its suite, files relative to
+// `data_dir`. False, with the reason in `skipped`, for a folder without runs.
+bool VesselFolderTrack(const fs::path& path, const fs::path& data_dir, TrackSpec& spec,
+                       nlohmann::json& suite, std::string& skipped) {
+  const TrackFile track = ReadTrackFile((path / "track.yaml").string());
+  const fs::path folder = path.lexically_relative(data_dir);
+  spec.name = track.name;
+  spec.vessel_folder = true;
+  spec.split = track.split;
+  spec.read = track.read;
+  const std::string format = track.read["format"].get<std::string>();
+  for (const std::string& ext : RunExtensions(format)) spec.formats.push_back({ext, ""});
+  for (const TrackRunFolder& f : track.folders)
+    spec.folders.push_back({(folder / f.path).lexically_normal().string(), f.tests});
+  if (track.folders.empty()) {  // the folder and every folder below it, tests read from each run
+    spec.folders.push_back({folder.string(), "any"});
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::recursive_directory_iterator(path, ec))
+      if (e.is_directory())
+        spec.folders.push_back({e.path().lexically_relative(data_dir).string(), "any"});
+    std::sort(spec.folders.begin() + 1, spec.folders.end(),
+              [](const RunFolder& a, const RunFolder& b) { return a.path < b.path; });
+  }
+  const std::vector<std::string> runs = RunsOf(spec, data_dir);
+  if (runs.empty()) {
+    std::string extensions;
+    for (const RunFormat& f : spec.formats)
+      extensions += (extensions.empty() ? "" : ", ") + f.extension;
+    skipped = track.name + " (" + path.string() + "): no runs (" + extensions +
+              " files of format " + format + ") in the folder or below it";
+    return false;
+  }
+  for (const std::string& run : runs) CheckColumnsOf(track, (data_dir / run).string());
+  suite = {{"name", "real-" + track.name},
+           {"vessels",
+            track.vessel.empty() ? nlohmann::json::array() : nlohmann::json::array({track.vessel})},
+           {"data", {{"train", nlohmann::json::array()}, {"test", nlohmann::json::array()}}},
+           {"methods", track.methods},
+           {"seeds", {1}}};
+  nlohmann::json& data = suite["data"];
+  if (track.split) {
+    data["train"].push_back(JoinedTraining(track, folder));
+    for (nlohmann::json entry : track.test) {
+      entry["file"] = (folder / entry["file"].get<std::string>()).lexically_normal().string();
+      data["test"].push_back(entry);
+    }
+  } else if (runs.size() == 1) {
+    // One run, no split: its first two thirds train, its last third tests.
+    SuiteData whole = ParseSuiteData(
+        [&] {
+          nlohmann::json e = track.read;
+          e["name"] = "run";
+          e["file"] = (data_dir / runs[0]).string();
+          return e;
+        }(),
+        "", track.file);
+    const Dataset d = LoadSuiteData(whole);
+    const double cut = d.t()(0) + 2.0 / 3.0 * (d.t()(d.rows() - 1) - d.t()(0));
+    const std::string stem = fs::path(runs[0]).stem().string();
+    nlohmann::json first = track.read, last = track.read;
+    first["name"] = stem + ", first two thirds";
+    first["file"] = runs[0];
+    first["to_s"] = cut;
+    last["name"] = stem + ", last third";
+    last["file"] = runs[0];
+    last["from_s"] = cut;
+    data["train"].push_back(first);
+    data["test"].push_back(last);
+  }
+  return true;
+}
+
 }  // namespace
 
 const std::vector<std::string>& EmbeddedSuiteNames() {
@@ -304,9 +441,17 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
   std::vector<SuiteTrack> tracks;
   std::vector<std::string> missing;
   std::vector<nlohmann::json> jsons;
-  std::vector<std::string> skipped;
+  std::vector<std::string> skipped, skipped_folders;
+  // A data folder of vessel folders runs them; a built-in track's folder with a track file of its
+  // own is such a folder, and a built-in track none of whose runs are there is left out.
+  const std::vector<fs::path> vessel_folders = VesselFolders(data_dir);
+  std::set<std::string> own;
+  for (const fs::path& f : vessel_folders) own.insert(f.filename().string());
+  std::vector<std::string> absent;
+  bool partly_missing = false;
   for (const TrackSpec& spec : Tracks()) {
     if (spec.cross_facility && !cv.empty()) continue;  // its folds would mix the tanks
+    if (own.contains(fs::path(spec.folders[0].path).begin()->string())) continue;
     nlohmann::json suite =
         nlohmann::json::parse(spec.json, nullptr, true, /*ignore_comments=*/true);
     std::set<std::string> listed;
@@ -316,14 +461,17 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
     // runs the other tracks.
     const bool hsva = std::string(spec.name).find("hsva") != std::string::npos;
     if (hsva && !lacks.empty() && !fs::is_directory(fs::path(data_dir) / "kvlcc2-hsva")) {
-      skipped.push_back(spec.name);
+      (vessel_folders.empty() ? skipped : absent).push_back(spec.name);
       continue;
     }
-    if (lacks.size() == listed.size())  // the whole vessel is absent: name its folder
+    if (lacks.size() == listed.size()) {  // the whole vessel is absent: name its folder
       missing.push_back(fs::path(spec.folders[0].path).begin()->string() + "/ (all " +
                         std::to_string(listed.size()) + " of the track's runs)");
-    else
-      missing.insert(missing.end(), lacks.begin(), lacks.end());
+      absent.push_back(spec.name);
+      continue;
+    }
+    partly_missing = partly_missing || !lacks.empty();
+    missing.insert(missing.end(), lacks.begin(), lacks.end());
     SuiteTrack track;
     track.name = spec.name;
     const std::vector<nlohmann::json> further = FurtherRuns(spec, suite, data_dir, listed);
@@ -342,7 +490,50 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
     jsons.push_back(std::move(suite));
     tracks.push_back(std::move(track));
   }
-  if (!missing.empty()) {
+  for (const fs::path& path : vessel_folders) {
+    TrackSpec spec;
+    nlohmann::json suite;
+    std::string why;
+    if (!VesselFolderTrack(path, data_dir, spec, suite, why)) {
+      skipped_folders.push_back(why);
+      continue;
+    }
+    for (const SuiteTrack& t : tracks)
+      if (t.name == spec.name)
+        throw InputError((path / "track.yaml").string() + ": a second track named '" + spec.name +
+                         "' in " + data_dir + " (give each vessel folder's track its own name:)");
+    std::set<std::string> listed;
+    std::vector<std::string> lacks;
+    Resolve(suite, data_dir, listed, lacks);
+    SuiteTrack track;
+    track.name = spec.name;
+    const std::vector<nlohmann::json> further = FurtherRuns(spec, suite, data_dir, listed);
+    const bool one_run = RunsOf(spec, data_dir).size() == 1;
+    // Without a split every run is one to train on, and each is held out in turn.
+    const char* part = spec.split || one_run ? "test" : "train";
+    for (const nlohmann::json& entry : further) suite["data"][part].push_back(entry);
+    const size_t runs = further.size() + listed.size();
+    track.notes.push_back("the vessel folder " + path.string() +
+                          " (its track.yaml): " + std::to_string(RunsOf(spec, data_dir).size()) +
+                          (one_run      ? " run: its first two thirds trained on, its last third "
+                                          "scored"
+                           : spec.split ? " runs: trained on the split's " +
+                                              std::to_string(runs - suite["data"]["test"].size()) +
+                                              ", scored on the other " +
+                                              std::to_string(suite["data"]["test"].size())
+                                        : " runs, each held out in turn (no split in track.yaml)"));
+    std::string kind = cv;
+    if (!spec.split && !one_run) kind = kCrossValidationRuns;
+    if (one_run && !kind.empty()) {
+      track.notes.push_back("not cross-validated: one run");
+      kind.clear();
+    }
+    if (!kind.empty()) PrepareCrossValidation(spec, kind, data_dir, suite, track.notes);
+    jsons.push_back(std::move(suite));
+    tracks.push_back(std::move(track));
+  }
+  // A track with some of its runs is an error; one with none is left out when another runs.
+  if (partly_missing || (tracks.empty() && skipped_folders.empty() && !missing.empty())) {
     std::string list;
     for (const std::string& f : missing) list += (list.empty() ? "" : ", ") + f;
     throw InputError("compare --suite real: the data folder " + data_dir + " lacks " + list +
@@ -368,6 +559,18 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
     for (const std::string& n : skipped) names += (names.empty() ? "" : ", ") + n;
     tracks.front().notes.push_back("tracks " + names + " skipped: the data folder " + data_dir +
                                    " has no kvlcc2-hsva/");
+  }
+  if (tracks.empty())
+    throw InputError("compare --suite real: no track to run in " + data_dir +
+                     (skipped_folders.empty() ? std::string() : ": " + skipped_folders.front()) +
+                     " (docs/tracks.md)");
+  for (const std::string& why : skipped_folders)
+    tracks.front().notes.push_back("vessel folder skipped: " + why);
+  if (!absent.empty()) {
+    std::string names;
+    for (const std::string& n : absent) names += (names.empty() ? "" : ", ") + n;
+    tracks.front().notes.push_back("built-in tracks " + names +
+                                   " left out: none of their runs in " + data_dir);
   }
   return tracks;
 }

@@ -18,5 +18,6 @@ void AddEvaluateCommand(CLI::App& app);
 void AddCompareCommand(CLI::App& app);
 void AddDiagnoseCommand(CLI::App& app);
 void AddDesignCommand(CLI::App& app);
+void AddInitTrackCommand(CLI::App& app);
 
 }  // namespace usvid

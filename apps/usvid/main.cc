@@ -38,6 +38,7 @@ int Run(int argc, char** argv) {
   usvid::AddCompareCommand(app);
   usvid::AddDiagnoseCommand(app);
   usvid::AddDesignCommand(app);
+  usvid::AddInitTrackCommand(app);
   if (argc > 1 && argv[1][0] != '-') {
     const auto subcommands = app.get_subcommands({});
     if (std::none_of(subcommands.begin(), subcommands.end(),
