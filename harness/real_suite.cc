@@ -47,16 +47,19 @@ struct TrackSpec {
   // Trained in one tank and scored in another: not cross-validated over its runs (its folds would
   // mix the tanks), and skipped, with a note, when either tank's folder is absent.
   bool cross_facility = false;
-  // A vessel folder's track (harness/track_file.h): cross-validated unless its track file splits
-  // the runs.
-  bool vessel_folder = false;
+  // A track file's track (a vessel folder's, harness/track_file.h, or a built-in one's,
+  // harness/tracks/): cross-validated unless its track file splits the runs.
+  bool from_track_file = false;
   bool split = true;
   nlohmann::json read;  // the keys its runs are read with; a built-in track's first test's
+  // A built-in track given as a track file: its text and its vessel file's, embedded.
+  std::string track_yaml;
+  std::string vessel_file;
 };
 
 // The keys a track's further runs are read with (format, column map, end, scale, rate).
 const nlohmann::json& ReadKeys(const TrackSpec& spec, const nlohmann::json& suite) {
-  return spec.vessel_folder ? spec.read : suite["data"]["test"].at(0);
+  return spec.from_track_file ? spec.read : suite["data"]["test"].at(0);
 }
 
 // KVLCC2's folder also takes data files of usvid's own format (docs/data.md): another tank's
@@ -64,13 +67,11 @@ const nlohmann::json& ReadKeys(const TrackSpec& spec, const nlohmann::json& suit
 // the two tanks each train the model the other scores (the cross-facility tracks).
 const std::vector<TrackSpec>& Tracks() {
   static const std::vector<TrackSpec> tracks = {
-      {"kvlcc2", kRealKvlcc2SuiteJson, {{"kvlcc2-marin", "any"}}, {{".dat", ""}, {".csv", "csv"}}},
-      {"esso-osaka",
-       kRealEssoOsakaSuiteJson,
-       {{"esso-osaka/zigzag", "zigzag"},
-        {"esso-osaka/turning", "turning"},
-        {"esso-osaka/random", ""}},
-       {{".csv", ""}}},
+      {.name = "kvlcc2", .folders = {{"kvlcc2-marin", ""}}, .track_yaml = kRealKvlcc2TrackYaml},
+      {.name = "esso-osaka",
+       .folders = {{"esso-osaka", ""}},
+       .track_yaml = kRealEssoOsakaTrackYaml,
+       .vessel_file = "esso-osaka.yaml"},
       {"kvlcc2-hsva", kRealKvlcc2HsvaSuiteJson, {{"kvlcc2-hsva", "any"}}, {{".dat", ""}}},
       {"kvlcc2-hsva-to-marin",
        kRealKvlcc2HsvaToMarinSuiteJson,
@@ -352,21 +353,25 @@ nlohmann::json JoinedTraining(const TrackFile& track, const fs::path& folder) {
   return entry;
 }
 
-// A vessel folder's track (harness/track_file.h): its spec and its suite, files relative to
-// `data_dir`. False, with the reason in `skipped`, for a folder without runs.
-bool VesselFolderTrack(const fs::path& path, const fs::path& data_dir, TrackSpec& spec,
-                       nlohmann::json& suite, std::string& skipped) {
-  const TrackFile track = ReadTrackFile((path / "track.yaml").string());
+// The spec of a track file's track: its name, the folders of its runs (relative to the data
+// folder; by default the vessel folder `path` and every folder below it, tests read from each
+// run) and the format they are read in.
+TrackSpec SpecOfTrack(const TrackFile& track, const fs::path& path, const fs::path& data_dir) {
   const fs::path folder = path.lexically_relative(data_dir);
+  TrackSpec spec;
   spec.name = track.name;
-  spec.vessel_folder = true;
+  spec.from_track_file = true;
   spec.split = track.split;
   spec.read = track.read;
-  const std::string format = track.read["format"].get<std::string>();
-  for (const std::string& ext : RunExtensions(format)) spec.formats.push_back({ext, ""});
-  for (const TrackRunFolder& f : track.folders)
-    spec.folders.push_back({(folder / f.path).lexically_normal().string(), f.tests});
-  if (track.folders.empty()) {  // the folder and every folder below it, tests read from each run
+  for (const std::string& ext : RunExtensions(track.read["format"].get<std::string>()))
+    spec.formats.push_back({ext, ""});
+  for (const auto& [ext, format] : track.also) spec.formats.push_back({ext, format});
+  for (const TrackRunFolder& f : track.folders) {
+    fs::path runs = (folder / f.path).lexically_normal();
+    if (!runs.has_filename()) runs = runs.parent_path();  // "NAME/." is NAME
+    spec.folders.push_back({runs.string(), f.tests});
+  }
+  if (track.folders.empty()) {
     spec.folders.push_back({folder.string(), "any"});
     std::error_code ec;
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(path, ec))
@@ -375,22 +380,20 @@ bool VesselFolderTrack(const fs::path& path, const fs::path& data_dir, TrackSpec
     std::sort(spec.folders.begin() + 1, spec.folders.end(),
               [](const RunFolder& a, const RunFolder& b) { return a.path < b.path; });
   }
-  const std::vector<std::string> runs = RunsOf(spec, data_dir);
-  if (runs.empty()) {
-    std::string extensions;
-    for (const RunFormat& f : spec.formats)
-      extensions += (extensions.empty() ? "" : ", ") + f.extension;
-    skipped = track.name + " (" + path.string() + "): no runs (" + extensions +
-              " files of format " + format + ") in the folder or below it";
-    return false;
-  }
-  for (const std::string& run : runs) CheckColumnsOf(track, (data_dir / run).string());
-  suite = {{"name", "real-" + track.name},
-           {"vessels",
-            track.vessel.empty() ? nlohmann::json::array() : nlohmann::json::array({track.vessel})},
-           {"data", {{"train", nlohmann::json::array()}, {"test", nlohmann::json::array()}}},
-           {"methods", track.methods},
-           {"seeds", {1}}};
+  return spec;
+}
+
+// The suite of a track file's track, its files relative to the data folder: the split's runs,
+// or with one run and no split its two parts; the further runs are added as for every track.
+nlohmann::json SuiteOfTrack(const TrackFile& track, const fs::path& folder,
+                            const std::vector<std::string>& runs, const fs::path& data_dir) {
+  nlohmann::json suite = {
+      {"name", "real-" + track.name},
+      {"vessels",
+       track.vessel.empty() ? nlohmann::json::array() : nlohmann::json::array({track.vessel})},
+      {"data", {{"train", nlohmann::json::array()}, {"test", nlohmann::json::array()}}},
+      {"methods", track.methods},
+      {"seeds", {1}}};
   nlohmann::json& data = suite["data"];
   if (track.split) {
     data["train"].push_back(JoinedTraining(track, folder));
@@ -400,15 +403,10 @@ bool VesselFolderTrack(const fs::path& path, const fs::path& data_dir, TrackSpec
     }
   } else if (runs.size() == 1) {
     // One run, no split: its first two thirds train, its last third tests.
-    SuiteData whole = ParseSuiteData(
-        [&] {
-          nlohmann::json e = track.read;
-          e["name"] = "run";
-          e["file"] = (data_dir / runs[0]).string();
-          return e;
-        }(),
-        "", track.file);
-    const Dataset d = LoadSuiteData(whole);
+    nlohmann::json whole = track.read;
+    whole["name"] = "run";
+    whole["file"] = (data_dir / runs[0]).string();
+    const Dataset d = LoadSuiteData(ParseSuiteData(whole, "", track.file));
     const double cut = d.t()(0) + 2.0 / 3.0 * (d.t()(d.rows() - 1) - d.t()(0));
     const std::string stem = fs::path(runs[0]).stem().string();
     nlohmann::json first = track.read, last = track.read;
@@ -421,7 +419,45 @@ bool VesselFolderTrack(const fs::path& path, const fs::path& data_dir, TrackSpec
     data["train"].push_back(first);
     data["test"].push_back(last);
   }
+  return suite;
+}
+
+// A vessel folder's track (harness/track_file.h): its spec and its suite, files relative to
+// `data_dir`. False, with the reason in `skipped`, for a folder without runs.
+bool VesselFolderTrack(const fs::path& path, const fs::path& data_dir, TrackSpec& spec,
+                       nlohmann::json& suite, std::string& skipped) {
+  const TrackFile track = ReadTrackFile((path / "track.yaml").string());
+  spec = SpecOfTrack(track, path, data_dir);
+  const std::vector<std::string> runs = RunsOf(spec, data_dir);
+  if (runs.empty()) {
+    std::string extensions;
+    for (const RunFormat& f : spec.formats)
+      extensions += (extensions.empty() ? "" : ", ") + f.extension;
+    skipped = track.name + " (" + path.string() + "): no runs (" + extensions +
+              " files of format " + track.read["format"].get<std::string>() +
+              ") in the folder or below it";
+    return false;
+  }
+  for (const std::string& run : runs) CheckColumnsOf(track, (data_dir / run).string());
+  suite = SuiteOfTrack(track, path.lexically_relative(data_dir), runs, data_dir);
   return true;
+}
+
+// A built-in track's spec and suite: its own suite file, or its track file read as the track
+// file of its folder in `data_dir`, the embedded vessel named "@FILE".
+void BuiltInTrack(const TrackSpec& built_in, const fs::path& data_dir, TrackSpec& spec,
+                  nlohmann::json& suite) {
+  if (built_in.track_yaml.empty()) {
+    spec = built_in;
+    suite = nlohmann::json::parse(built_in.json, nullptr, true, /*ignore_comments=*/true);
+    return;
+  }
+  const fs::path path = data_dir / built_in.folders[0].path;
+  TrackFile track = ReadBuiltInTrack(
+      built_in.track_yaml, "harness/tracks/" + built_in.name + ".yaml (built in)", path.string());
+  if (!built_in.vessel_file.empty()) track.vessel = "@" + built_in.vessel_file;
+  spec = SpecOfTrack(track, path, data_dir);
+  suite = SuiteOfTrack(track, path.lexically_relative(data_dir), {}, data_dir);
 }
 
 }  // namespace
@@ -449,11 +485,12 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
   for (const fs::path& f : vessel_folders) own.insert(f.filename().string());
   std::vector<std::string> absent;
   bool partly_missing = false;
-  for (const TrackSpec& spec : Tracks()) {
-    if (spec.cross_facility && !cv.empty()) continue;  // its folds would mix the tanks
-    if (own.contains(fs::path(spec.folders[0].path).begin()->string())) continue;
-    nlohmann::json suite =
-        nlohmann::json::parse(spec.json, nullptr, true, /*ignore_comments=*/true);
+  for (const TrackSpec& built_in : Tracks()) {
+    if (built_in.cross_facility && !cv.empty()) continue;  // its folds would mix the tanks
+    if (own.contains(fs::path(built_in.folders[0].path).begin()->string())) continue;
+    TrackSpec spec;
+    nlohmann::json suite;
+    BuiltInTrack(built_in, data_dir, spec, suite);
     std::set<std::string> listed;
     std::vector<std::string> lacks;
     Resolve(suite, data_dir, listed, lacks);

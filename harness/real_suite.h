@@ -1,11 +1,16 @@
 // The embedded suite on measured data (usvid compare --suite real; docs/compare.md#the-real-suite):
 // one track per vessel, each a suite of its own with its own verdict, its files read from a data
 // folder (../shared/data by default):
-// - kvlcc2: MARIN's free-running KVLCC2 tests (harness/suites/real-kvlcc2.json);
-// - esso-osaka: the Esso Osaka pond tests, with the particulars-only vessel file
-//   (harness/suites/real-esso-osaka.json, docs/vessels/files/esso-osaka.yaml, both embedded).
+// - kvlcc2: MARIN's free-running KVLCC2 tests (the track file harness/tracks/kvlcc2.yaml);
+// - esso-osaka: the Esso Osaka pond tests, with the particulars-only vessel file: the track file
+//   harness/tracks/esso-osaka.yaml, read as its folder's track.yaml would be, with
+//   docs/vessels/files/esso-osaka.yaml (both embedded);
+// - kvlcc2-hsva and the cross-facility tracks between the two tanks (harness/suites/);
+// - every vessel folder DIR/NAME of the data folder with a track.yaml (harness/track_file.h,
+//   docs/tracks.md): split as its track file says, else cross-validated over its runs.
 // Each track trains on fixed shared runs and tests on the other shared runs and on every further
 // run of its folders: a folder that also holds the papers' test runs scores the models on them.
+// A built-in track none of whose runs are in the data folder is left out when another runs.
 // Cross-validated (usvid compare --suite real --cv runs; harness/cross_validation.h), every one
 // of those runs is left out in turn, each read as the track's test runs are (ended where the
 // propeller stopped), a zig-zag or turn among the training runs too re-run closed-loop as its

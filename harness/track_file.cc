@@ -75,10 +75,10 @@ nlohmann::json ToJson(const YAML::Node& node) {
   if (node.Tag() != "!") {  // not quoted
     long long i = 0;
     double x = 0.0;
-    bool b = false;
     if (YAML::convert<long long>::decode(node, i)) return i;
     if (YAML::convert<double>::decode(node, x)) return x;
-    if (YAML::convert<bool>::decode(node, b)) return b;
+    // true and false alone: YAML 1.1's y, n, on, off are channel names here (inputs: [n, delta]).
+    if (s == "true" || s == "false") return s == "true";
   }
   return s;
 }
@@ -120,7 +120,7 @@ void ReadFolders(YamlSection& top, TrackFile& track) {
   for (const auto& [path, value] : runs->Items()) {
     if (!value.IsScalar() || !kTests.contains(value.Scalar()))
       runs->Fail(value, path + ": the tests its runs hold: " + Joined(kTests));
-    if (!fs::is_directory(fs::path(track.folder) / path))
+    if (track.check_runs && !fs::is_directory(fs::path(track.folder) / path))
       runs->Fail(value, path + ": no such subfolder of " + track.folder);
     track.folders.push_back({path, value.Scalar() == "none" ? "" : value.Scalar()});
   }
@@ -152,7 +152,7 @@ nlohmann::json SplitEntry(const YamlSection& split, const YAML::Node& item, cons
     s.RefuseUnknown("file, name, maneuver, from_s, to_s, end_at_stop, rate_from");
   }
   const std::string file = entry["file"].get<std::string>();
-  if (!fs::is_regular_file(fs::path(track.folder) / file))
+  if (track.check_runs && !fs::is_regular_file(fs::path(track.folder) / file))
     split.Fail(item, part + ": " + file + ": no such run in " + track.folder);
   if (!entry.contains("name")) entry["name"] = fs::path(file).stem().string();
   return entry;
@@ -197,13 +197,11 @@ std::vector<std::string> RunExtensions(const std::string& format) {
   return {".csv"};
 }
 
-TrackFile ReadTrackFile(const std::string& path) {
-  const YAML::Node root = LoadYamlFile(path, "track file");
+namespace {
+
+TrackFile ParseTrack(const YAML::Node& root, TrackFile track) {
+  const std::string& path = track.file;
   YamlSection top(path, root, "");
-  TrackFile track;
-  track.file = path;
-  track.folder = fs::path(path).parent_path().string();
-  if (track.folder.empty()) track.folder = ".";
   track.name = top.Text("name").value_or(fs::absolute(track.folder).lexically_normal().filename());
   if (track.name.empty()) track.name = fs::absolute(track.folder).parent_path().filename();
   if (const std::optional<std::string> vessel = top.Text("vessel")) {
@@ -221,6 +219,16 @@ TrackFile ReadTrackFile(const std::string& path) {
   for (const char* key : {"rate_from", "end_at_stop"})
     if (const std::optional<std::string> v = top.Text(key)) track.read[key] = *v;
   if (top.Has("scale")) track.read["scale"] = top.Positive("scale", "the Froude scale");
+  if (std::optional<YamlSection> also = top.Child("also")) {
+    static const std::set<std::string> kNamed = {"csv", "hsva-dat", "marin-dat"};
+    for (const auto& [extension, value] : also->Items()) {
+      if (!extension.starts_with(".") || extension.size() < 2)
+        also->Fail(value, extension + ": expected a file extension (.csv)");
+      if (!value.IsScalar() || !kNamed.contains(value.Scalar()))
+        also->Fail(value, extension + ": the format its files are read in: " + Joined(kNamed));
+      track.also.emplace_back(extension, value.Scalar());
+    }
+  }
   ReadFolders(top, track);
   ReadSplit(top, track);
   const YAML::Node methods = top.Node("methods");
@@ -236,8 +244,33 @@ TrackFile ReadTrackFile(const std::string& path) {
     track.methods = DefaultTrackMethods(!track.vessel.empty(), channels);
   }
   top.RefuseUnknown(
-      "name, vessel, format, columns, rate_from, end_at_stop, scale, runs, split, methods");
+      "name, vessel, format, also, columns, rate_from, end_at_stop, scale, runs, split, methods");
   return track;
+}
+
+}  // namespace
+
+TrackFile ReadTrackFile(const std::string& path) {
+  TrackFile track;
+  track.file = path;
+  track.folder = fs::path(path).parent_path().string();
+  if (track.folder.empty()) track.folder = ".";
+  return ParseTrack(LoadYamlFile(path, "track file"), std::move(track));
+}
+
+TrackFile ReadBuiltInTrack(const std::string& text, const std::string& label,
+                           const std::string& folder) {
+  TrackFile track;
+  track.file = label;
+  track.folder = folder;
+  track.check_runs = false;
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(Located(label, e.mark.line + 1, e.mark.column + 1, e.msg));
+  }
+  return ParseTrack(root, std::move(track));
 }
 
 void CheckColumnsOf(const TrackFile& track, const std::string& run) {

@@ -8,6 +8,8 @@
 //                                 # when the folder has one, else none: data-driven methods only)
 //   format: csv-log               # csv-log (any CSV, with columns), csv (usvid's), marin-dat,
 //                                 # hsva-dat
+//   also: {.csv: csv}             # other files of the folders, by extension, and their format
+//                                 # (csv, marin-dat, hsva-dat: no columns)
 //   columns:                      # usvid's channel: the log's column[:unit] (csv-log only)
 //     t: time
 //     psi: heading:deg
@@ -54,10 +56,14 @@ struct TrackFile {
   nlohmann::json read;  // the suite data keys every run is read with (harness/suite_data.h)
   std::vector<TrackColumn> columns;
   std::vector<TrackRunFolder> folders;
+  std::vector<std::pair<std::string, std::string>> also;  // extension -> format
   bool split = false;
   nlohmann::json train = nlohmann::json::array();  // suite data entries, files from the folder
   nlohmann::json test = nlohmann::json::array();
   nlohmann::json methods = nlohmann::json::array();
+  // Whether the split's runs and the run folders must be there (a built-in track's absence is
+  // the real suite's to report, as the files its data folder lacks).
+  bool check_runs = true;
 };
 
 // The methods a track without "methods" compares: the particulars-only model and the
@@ -72,6 +78,11 @@ std::vector<std::string> RunExtensions(const std::string& format);
 // Reads and checks DIR/NAME/track.yaml (`path`): unknown keys, channels, formats, tests and a
 // scale not above 0 are refused with the file, line and key.
 TrackFile ReadTrackFile(const std::string& path);
+
+// A built-in track (harness/tracks/*.yaml, embedded): `text` read as the track file of `folder`,
+// its errors named by `label`; its runs need not be there.
+TrackFile ReadBuiltInTrack(const std::string& text, const std::string& label,
+                           const std::string& folder);
 
 // Checks that every column the track maps is in the header of the log `run` (format csv-log):
 // InputError at the track file's line of the first that is not, naming the run.

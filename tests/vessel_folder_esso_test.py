@@ -1,17 +1,17 @@
 #!/usr/bin/env python3
 """A vessel folder gives the built-in track's rows (issue 72): Esso Osaka's shared runs, linked
 into a folder of another name under other file names (every file "trial-" + its name), with the
-particulars file as vessel.yaml and a track.yaml that says what the built-in track says
-(harness/suites/real-esso-osaka.json: its column map, end, folders, split, test names and
-maneuvers, methods), run through `usvid compare --suite real --quick`. Every row must equal the
-built-in track's, run alone on the shared folder, but for the names that come from the files
-(the further runs' names) and the vessel's path.
+particulars file as vessel.yaml and the built-in track's own file (harness/tracks/esso-osaka.yaml)
+as track.yaml, its runs renamed, run through `usvid compare --suite real --quick`. Every row must
+equal the built-in track's, run alone on the shared folder, but for the names that come from the
+files (the further runs' names) and the vessel's path.
 
 Usage: vessel_folder_esso_test.py USVID SOURCE_DIR SHARED_DATA_DIR WORK_DIR
 Exit 77 (skipped) without the shared data; 1 on a failure.
 """
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -19,16 +19,7 @@ import sys
 SKIP = 77
 
 
-def suite_json(path):
-    text = "\n".join(l for l in open(path).read().splitlines() if not l.strip().startswith("//"))
-    return json.loads(text)
-
-
-def make_folder(suite, shared, source, folder):
-    def renamed(f):
-        f = f[len("esso-osaka/"):]
-        return os.path.join(os.path.dirname(f), "trial-" + os.path.basename(f))
-
+def make_folder(track_text, shared, source, folder):
     for sub in ("zigzag", "turning", "random"):
         os.makedirs(os.path.join(folder, sub))
         for f in os.listdir(os.path.join(shared, "esso-osaka", sub)):
@@ -36,21 +27,11 @@ def make_folder(suite, shared, source, folder):
                        os.path.join(folder, sub, "trial-" + f))
     shutil.copy(os.path.join(source, "docs/vessels/files/esso-osaka.yaml"),
                 os.path.join(folder, "vessel.yaml"))
-    test0 = suite["data"]["test"][0]
-    lines = ["name: esso-osaka", "format: csv-log", "columns:"]
-    lines += ['  %s: "%s"' % tuple(item.split("=", 1)) for item in test0["map"].split(",")]
-    lines += ["end_at_stop: %s" % test0["end_at_stop"],
-              "runs: {zigzag: zigzag, turning: turning, random: none}", "split:", "  train:"]
-    # The built-in track reads its training runs whole (no end_at_stop).
-    lines += ['    - {file: "%s", end_at_stop: none}' % renamed(f)
-              for f in suite["data"]["train"][0]["file"]]
-    lines.append("  test:")
-    for t in suite["data"]["test"]:
-        maneuver = ', maneuver: "%s"' % t["maneuver"] if "maneuver" in t else ""
-        lines.append('    - {file: "%s", name: "%s"%s}' % (renamed(t["file"]), t["name"], maneuver))
-    lines.append("methods: " + json.dumps(suite["methods"]))
+    renamed = re.sub(r"file: (\w+)/", r"file: \1/trial-", track_text)
+    if renamed == track_text:
+        raise SystemExit("no run named in the track file")
     with open(os.path.join(folder, "track.yaml"), "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write(renamed)
 
 
 def rows(results):
@@ -67,11 +48,12 @@ def main():
         print("skipped: no esso-osaka/ in " + shared)
         return SKIP
     shutil.rmtree(work, ignore_errors=True)
-    suite = suite_json(os.path.join(source, "harness/suites/real-esso-osaka.json"))
+    track_text = open(os.path.join(source, "harness/tracks/esso-osaka.yaml")).read()
     os.makedirs(os.path.join(work, "builtin"))
     os.symlink(os.path.join(os.path.abspath(shared), "esso-osaka"),
                os.path.join(work, "builtin", "esso-osaka"))
-    make_folder(suite, os.path.abspath(shared), source, os.path.join(work, "folders", "my-tanker"))
+    make_folder(track_text, os.path.abspath(shared), source,
+                os.path.join(work, "folders", "my-tanker"))
     for data in ("builtin", "folders"):
         run = subprocess.run([usvid, "compare", "--suite", "real", "--quick", "--threads", "2",
                               "--data-dir", os.path.join(work, data),
@@ -82,7 +64,7 @@ def main():
             return 1
     builtin = rows(os.path.join(work, "builtin-out", "esso-osaka", "results.json"))
     folder = rows(os.path.join(work, "folders-out", "esso-osaka", "results.json"))
-    listed = {t["name"] for t in suite["data"]["test"]}
+    listed = set(re.findall(r'name: "([^"]+)"', track_text))
     failures = 0
     if len(builtin) != len(folder):
         print("rows: %d built-in, %d from the folder" % (len(builtin), len(folder)))

@@ -49,22 +49,23 @@ class TrackFileTest : public ::testing::Test {
 };
 
 TEST_F(TrackFileTest, ATrackFileBecomesTheSuitesReadKeys) {
-  const TrackFile t =
-      ReadTrackFile(Track("name: my-usv\n"
-                          "format: csv-log\n"
-                          "columns:\n"
-                          "  t: time\n"
-                          "  psi: heading [deg]:deg\n"
-                          "  delta: rudder\n"
-                          "rate_from: psi\n"
-                          "scale: 2.5\n"
-                          "runs:\n"
-                          "  zigzag: zigzag\n"
-                          "split:\n"
-                          "  train: [zigzag/a.csv]\n"
-                          "  test:\n"
-                          "    - {file: zigzag/b.csv, maneuver: 'zigzag:20/20', name: the other}\n"
-                          "methods: [sindy, {method: gp, population: 300, base: vessel}]\n"));
+  const TrackFile t = ReadTrackFile(
+      Track("name: my-usv\n"
+            "format: csv-log\n"
+            "columns:\n"
+            "  t: time\n"
+            "  psi: heading [deg]:deg\n"
+            "  delta: rudder\n"
+            "rate_from: psi\n"
+            "scale: 2.5\n"
+            "runs:\n"
+            "  zigzag: zigzag\n"
+            "split:\n"
+            "  train: [zigzag/a.csv]\n"
+            "  test:\n"
+            "    - {file: zigzag/b.csv, maneuver: 'zigzag:20/20', name: the other}\n"
+            "methods: [sindy, {method: gp, population: 300, base: vessel, inputs: [n, delta],\n"
+            "          rudder_inflow: true, operators: '+,-'}]\n"));
   EXPECT_EQ(t.name, "my-usv");
   EXPECT_EQ(t.vessel, "");  // no vessel.yaml beside it
   EXPECT_EQ(t.read["map"], "t=time,psi=heading [deg]:deg,delta=rudder");
@@ -79,6 +80,9 @@ TEST_F(TrackFileTest, ATrackFileBecomesTheSuitesReadKeys) {
   EXPECT_EQ(t.test[0]["name"], "the other");
   EXPECT_EQ(t.methods[1]["population"], 300);  // a number, as a suite file gives it
   EXPECT_EQ(t.methods[1]["base"], "vessel");
+  EXPECT_EQ(t.methods[1]["inputs"], (nlohmann::json{"n", "delta"}));  // n, not YAML 1.1's false
+  EXPECT_EQ(t.methods[1]["rudder_inflow"], true);
+  EXPECT_EQ(t.methods[1]["operators"], "+,-");
 }
 
 TEST_F(TrackFileTest, WithoutMethodsTheDataDrivenOnesRunAndTheVesselsWithAVessel) {

@@ -4,7 +4,7 @@
 // logged rudder a little off its order), every zig-zag and turning circle gives the spec the
 // study replays it with (docs/studies/esso-osaka-mmg.json). Either kind is told from the record
 // itself: MARIN's KVLCC2 zig-zags and turning circle, in one folder, give the specs the real
-// suite's KVLCC2 track names by hand (harness/suites/real-kvlcc2.json), and zz_20 its mirror.
+// suite's KVLCC2 track names by hand (harness/tracks/kvlcc2.yaml), and zz_20 its mirror.
 #include "metrics/maneuver_of_record.h"
 
 #include <gmock/gmock.h>
