@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/yaml_section.h"
 #include "harness/track_init.h"
+#include "importers/column_map.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/nominal/nominal.h"
@@ -100,9 +101,14 @@ void ReadColumns(YamlSection& top, TrackFile& track) {
       columns->Fail(value, target + ": unknown channel (known: " + Joined(KnownChannels()) + ")");
     if (!value.IsScalar() || value.Scalar().empty())
       columns->Fail(value, target + ": expected the log's column name");
-    std::string source = value.Scalar();
-    if (const size_t colon = source.rfind(':'); colon != std::string::npos)
-      source = source.substr(0, colon);  // the unit
+    if (value.Scalar().find(',') != std::string::npos)
+      columns->Fail(value, target + ": a column name with a comma cannot be mapped");
+    std::string source;
+    try {  // the column and its unit, as `usvid import --map` reads them
+      source = ParseColumnMap({target + "=" + value.Scalar()}).at(0).source;
+    } catch (const InputError& e) {
+      columns->Fail(value, target + ": " + e.what());
+    }
     const YAML::Mark m = value.Mark();
     track.columns.push_back({target, source, m.line + 1, m.column + 1});
     map += (map.empty() ? "" : ",") + target + "=" + value.Scalar();

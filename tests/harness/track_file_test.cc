@@ -109,6 +109,8 @@ TEST_F(TrackFileTest, MistakesNameTheLineAndTheKey) {
   EXPECT_THAT(ErrorOf("columns: {t: time}\nscale: 0\n"),
               HasSubstr(file + ":2:8: scale: must be above 0, got 0"));
   EXPECT_THAT(ErrorOf("columns: {psi: heading}\n"), HasSubstr("t: missing"));
+  EXPECT_THAT(ErrorOf("columns:\n  t: time\n  u: speed:furlongs\n"),
+              HasSubstr(file + ":3:6: columns.u: --map 'u=speed:furlongs': unknown unit"));
   EXPECT_THAT(ErrorOf("columns: {t: time}\nruns: {zigzag: zig}\n"),
               HasSubstr(file + ":2:16: runs.zigzag: the tests its runs hold"));
   EXPECT_THAT(ErrorOf("columns: {t: time}\nsplit: {train: [nope.csv], test: [zigzag/a.csv]}\n"),
