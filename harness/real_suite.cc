@@ -472,19 +472,30 @@ bool IsSuiteName(const std::string& suite) {
   return suite.find('/') == std::string::npos && suite.find('.') == std::string::npos;
 }
 
-std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::string& vessel_dir,
-                                        const std::string& cv) {
+namespace {
+
+// What the real suite found in a data folder: its tracks, each with its suite, and what it left
+// out and why.
+struct Gathered {
   std::vector<SuiteTrack> tracks;
-  std::vector<std::string> missing;
-  std::vector<nlohmann::json> jsons;
-  std::vector<std::string> skipped, skipped_folders;
-  // A data folder of vessel folders runs them; a built-in track's folder with a track file of its
-  // own is such a folder, and a built-in track none of whose runs are there is left out.
-  const std::vector<fs::path> vessel_folders = VesselFolders(data_dir);
-  std::set<std::string> own;
-  for (const fs::path& f : vessel_folders) own.insert(f.filename().string());
-  std::vector<std::string> absent;
-  bool partly_missing = false;
+  std::vector<nlohmann::json> suites;
+  std::vector<std::string> missing;          // runs absent, or "FOLDER/ (all N ...)"
+  bool partly_missing = false;               // a track with some of its runs
+  std::vector<std::string> no_hsva;          // tracks skipped for want of kvlcc2-hsva/
+  std::vector<std::string> absent;           // built-in tracks none of whose runs are there
+  std::vector<std::string> skipped_folders;  // vessel folders without runs, and why
+};
+
+std::string CommaList(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+// The built-in tracks whose runs the data folder holds; one whose folder holds a track file of
+// its own is a vessel folder's (`own`).
+void AddBuiltInTracks(const std::string& data_dir, const std::string& cv,
+                      const std::set<std::string>& own, bool vessel_folders, Gathered& g) {
   for (const TrackSpec& built_in : Tracks()) {
     if (built_in.cross_facility && !cv.empty()) continue;  // its folds would mix the tanks
     if (own.contains(fs::path(built_in.folders[0].path).begin()->string())) continue;
@@ -498,17 +509,17 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
     // runs the other tracks.
     const bool hsva = std::string(spec.name).find("hsva") != std::string::npos;
     if (hsva && !lacks.empty() && !fs::is_directory(fs::path(data_dir) / "kvlcc2-hsva")) {
-      (vessel_folders.empty() ? skipped : absent).push_back(spec.name);
+      (vessel_folders ? g.absent : g.no_hsva).push_back(spec.name);
       continue;
     }
     if (lacks.size() == listed.size()) {  // the whole vessel is absent: name its folder
-      missing.push_back(fs::path(spec.folders[0].path).begin()->string() + "/ (all " +
-                        std::to_string(listed.size()) + " of the track's runs)");
-      absent.push_back(spec.name);
+      g.missing.push_back(fs::path(spec.folders[0].path).begin()->string() + "/ (all " +
+                          std::to_string(listed.size()) + " of the track's runs)");
+      g.absent.push_back(spec.name);
       continue;
     }
-    partly_missing = partly_missing || !lacks.empty();
-    missing.insert(missing.end(), lacks.begin(), lacks.end());
+    g.partly_missing = g.partly_missing || !lacks.empty();
+    g.missing.insert(g.missing.end(), lacks.begin(), lacks.end());
     SuiteTrack track;
     track.name = spec.name;
     const std::vector<nlohmann::json> further = FurtherRuns(spec, suite, data_dir, listed);
@@ -524,18 +535,23 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
                             "zig-zags and turns also re-run closed-loop, their angle and side "
                             "read from the record)");
     if (!cv.empty()) PrepareCrossValidation(spec, cv, data_dir, suite, track.notes);
-    jsons.push_back(std::move(suite));
-    tracks.push_back(std::move(track));
+    g.suites.push_back(std::move(suite));
+    g.tracks.push_back(std::move(track));
   }
-  for (const fs::path& path : vessel_folders) {
+}
+
+// Every vessel folder's track: split as its track file says, else each run held out in turn.
+void AddVesselFolderTracks(const std::string& data_dir, const std::string& cv,
+                           const std::vector<fs::path>& folders, Gathered& g) {
+  for (const fs::path& path : folders) {
     TrackSpec spec;
     nlohmann::json suite;
     std::string why;
     if (!VesselFolderTrack(path, data_dir, spec, suite, why)) {
-      skipped_folders.push_back(why);
+      g.skipped_folders.push_back(why);
       continue;
     }
-    for (const SuiteTrack& t : tracks)
+    for (const SuiteTrack& t : g.tracks)
       if (t.name == spec.name)
         throw InputError((path / "track.yaml").string() + ": a second track named '" + spec.name +
                          "' in " + data_dir + " (give each vessel folder's track its own name:)");
@@ -545,71 +561,77 @@ std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::
     SuiteTrack track;
     track.name = spec.name;
     const std::vector<nlohmann::json> further = FurtherRuns(spec, suite, data_dir, listed);
-    const bool one_run = RunsOf(spec, data_dir).size() == 1;
+    const size_t runs = RunsOf(spec, data_dir).size();
     // Without a split every run is one to train on, and each is held out in turn.
-    const char* part = spec.split || one_run ? "test" : "train";
+    const char* part = spec.split || runs == 1 ? "test" : "train";
     for (const nlohmann::json& entry : further) suite["data"][part].push_back(entry);
-    const size_t runs = further.size() + listed.size();
-    track.notes.push_back("the vessel folder " + path.string() +
-                          " (its track.yaml): " + std::to_string(RunsOf(spec, data_dir).size()) +
-                          (one_run      ? " run: its first two thirds trained on, its last third "
-                                          "scored"
-                           : spec.split ? " runs: trained on the split's " +
-                                              std::to_string(runs - suite["data"]["test"].size()) +
-                                              ", scored on the other " +
-                                              std::to_string(suite["data"]["test"].size())
-                                        : " runs, each held out in turn (no split in track.yaml)"));
-    std::string kind = cv;
-    if (!spec.split && !one_run) kind = kCrossValidationRuns;
-    if (one_run && !kind.empty()) {
+    const size_t tests = suite["data"]["test"].size();
+    track.notes.push_back(
+        "the vessel folder " + path.string() + " (its track.yaml): " + std::to_string(runs) +
+        (runs == 1    ? " run: its first two thirds trained on, its last third scored"
+         : spec.split ? " runs: trained on the split's " + std::to_string(runs - tests) +
+                            ", scored on the other " + std::to_string(tests)
+                      : " runs, each held out in turn (no split in track.yaml)"));
+    std::string kind = spec.split || runs == 1 ? cv : std::string(kCrossValidationRuns);
+    if (runs == 1 && !kind.empty()) {
       track.notes.push_back("not cross-validated: one run");
       kind.clear();
     }
     if (!kind.empty()) PrepareCrossValidation(spec, kind, data_dir, suite, track.notes);
-    jsons.push_back(std::move(suite));
-    tracks.push_back(std::move(track));
+    g.suites.push_back(std::move(suite));
+    g.tracks.push_back(std::move(track));
   }
+}
+
+// The embedded vessel files a track names ("@FILE") written to `vessel_dir`, and named there.
+void WriteEmbeddedVessels(nlohmann::json& suite, const std::string& vessel_dir) {
+  for (nlohmann::json& vessel : suite["vessels"]) {
+    const std::string name = vessel.get<std::string>();
+    if (!name.starts_with("@")) continue;
+    for (const EmbeddedVessel& v : kVessels)
+      if (name.substr(1) == v.name) {
+        EnsureOutputDirectory(vessel_dir);
+        const std::string path = (fs::path(vessel_dir) / v.name).string();
+        WriteFileAtomically(path, v.text);
+        vessel = path;
+      }
+  }
+}
+
+}  // namespace
+
+std::vector<SuiteTrack> RealSuiteTracks(const std::string& data_dir, const std::string& vessel_dir,
+                                        const std::string& cv) {
+  // A data folder of vessel folders runs them; a built-in track's folder with a track file of its
+  // own is such a folder, and a built-in track none of whose runs are there is left out.
+  const std::vector<fs::path> vessel_folders = VesselFolders(data_dir);
+  std::set<std::string> own;
+  for (const fs::path& f : vessel_folders) own.insert(f.filename().string());
+  Gathered g;
+  AddBuiltInTracks(data_dir, cv, own, !vessel_folders.empty(), g);
+  AddVesselFolderTracks(data_dir, cv, vessel_folders, g);
   // A track with some of its runs is an error; one with none is left out when another runs.
-  if (partly_missing || (tracks.empty() && skipped_folders.empty() && !missing.empty())) {
-    std::string list;
-    for (const std::string& f : missing) list += (list.empty() ? "" : ", ") + f;
-    throw InputError("compare --suite real: the data folder " + data_dir + " lacks " + list +
-                     " (docs/compare.md#the-real-suite)");
+  if (g.partly_missing || (g.tracks.empty() && g.skipped_folders.empty() && !g.missing.empty()))
+    throw InputError("compare --suite real: the data folder " + data_dir + " lacks " +
+                     CommaList(g.missing) + " (docs/compare.md#the-real-suite)");
+  if (g.tracks.empty())
+    throw InputError(
+        "compare --suite real: no track to run in " + data_dir +
+        (g.skipped_folders.empty() ? std::string() : ": " + g.skipped_folders.front()) +
+        " (docs/tracks.md)");
+  for (size_t i = 0; i < g.tracks.size(); ++i) {
+    WriteEmbeddedVessels(g.suites[i], vessel_dir);
+    g.tracks[i].suite = ParseSuite(g.suites[i], "embedded suite real, track " + g.tracks[i].name);
   }
-  for (size_t i = 0; i < tracks.size(); ++i) {
-    nlohmann::json& suite = jsons[i];
-    for (nlohmann::json& vessel : suite["vessels"]) {
-      const std::string name = vessel.get<std::string>();
-      if (!name.starts_with("@")) continue;
-      for (const EmbeddedVessel& v : kVessels)
-        if (name.substr(1) == v.name) {
-          EnsureOutputDirectory(vessel_dir);
-          const std::string path = (fs::path(vessel_dir) / v.name).string();
-          WriteFileAtomically(path, v.text);
-          vessel = path;
-        }
-    }
-    tracks[i].suite = ParseSuite(suite, "embedded suite real, track " + tracks[i].name);
-  }
-  if (!skipped.empty() && !tracks.empty()) {
-    std::string names;
-    for (const std::string& n : skipped) names += (names.empty() ? "" : ", ") + n;
-    tracks.front().notes.push_back("tracks " + names + " skipped: the data folder " + data_dir +
-                                   " has no kvlcc2-hsva/");
-  }
-  if (tracks.empty())
-    throw InputError("compare --suite real: no track to run in " + data_dir +
-                     (skipped_folders.empty() ? std::string() : ": " + skipped_folders.front()) +
-                     " (docs/tracks.md)");
-  for (const std::string& why : skipped_folders)
-    tracks.front().notes.push_back("vessel folder skipped: " + why);
-  if (!absent.empty()) {
-    std::string names;
-    for (const std::string& n : absent) names += (names.empty() ? "" : ", ") + n;
-    tracks.front().notes.push_back("built-in tracks " + names +
-                                   " left out: none of their runs in " + data_dir);
-  }
-  return tracks;
+  std::vector<std::string>& notes = g.tracks.front().notes;
+  if (!g.no_hsva.empty())
+    notes.push_back("tracks " + CommaList(g.no_hsva) + " skipped: the data folder " + data_dir +
+                    " has no kvlcc2-hsva/");
+  for (const std::string& why : g.skipped_folders) notes.push_back("vessel folder skipped: " + why);
+  if (!g.absent.empty())
+    notes.push_back("built-in tracks " + CommaList(g.absent) + " left out: none of their runs in " +
+                    data_dir);
+  return g.tracks;
 }
 
 }  // namespace usvid
