@@ -23,32 +23,12 @@ namespace fs = std::filesystem;
 // The channels a log's column may be mapped to (docs/data.md#channels): states, derived states,
 // earth-fixed velocities (turned to body axes), inputs and the wind.
 const std::set<std::string>& KnownChannels() {
-  static const std::set<std::string> known = {"t",
-                                              "north",
-                                              "east",
-                                              "psi",
-                                              "u",
-                                              "v",
-                                              "r",
-                                              "U",
-                                              "chi",
-                                              "vn",
-                                              "ve",
-                                              "delta",
-                                              "n",
-                                              "rev",
-                                              "rpm",
-                                              "throttle",
-                                              "nozzle",
-                                              "bucket",
-                                              "tau_x",
-                                              "tau_y",
-                                              "tau_n",
-                                              "phi",
-                                              "wind_speed",
-                                              "wind_direction",
-                                              "wind_speed_true",
-                                              "wind_direction_true"};
+  // clang-format off
+  static const std::set<std::string> known = {
+      "t", "north", "east", "psi", "u", "v", "r", "U", "chi", "vn", "ve", "phi",
+      "delta", "n", "rev", "rpm", "throttle", "nozzle", "bucket", "tau_x", "tau_y", "tau_n",
+      "wind_speed", "wind_direction", "wind_speed_true", "wind_direction_true"};
+  // clang-format on
   return known;
 }
 
