@@ -441,7 +441,12 @@ std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
 
 std::string CellProgress(size_t finished, size_t total, const FitJob& job,
                          const std::vector<ResultRow>& rows) {
-  std::string line = "[" + std::to_string(finished) + "/" + std::to_string(total) + "] " + job.Id();
+  // The job's id with its vessel named as a reader knows it (a vessel file's name:, not its path).
+  const std::string id = job.Id();
+  std::string line = "[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
+                     (id.starts_with(job.vessel) && !job.vessel.empty()
+                          ? VesselLabel(job.vessel) + id.substr(job.vessel.size())
+                          : id);
   // A fit that failed fails every test row the same way: say it once.
   if (!rows.empty() && rows.front().status != "ok" &&
       std::all_of(rows.begin(), rows.end(),
