@@ -30,17 +30,11 @@ struct InitTrackOptions {
   bool force = false;
 };
 
-// `file` inside `folder` (or below it), as it is; otherwise copied into it, and said.
-std::string IntoFolder(const std::string& file, const fs::path& folder) {
-  if (!fs::is_regular_file(file)) throw InputError(file + ": no such log");
+// Whether `file` is inside `folder` (or below it).
+bool Inside(const std::string& file, const fs::path& folder) {
   const fs::path relative =
       fs::weakly_canonical(file).lexically_relative(fs::weakly_canonical(folder));
-  if (!relative.empty() && *relative.begin() != "..") return file;
-  const fs::path copy = folder / fs::path(file).filename();
-  if (fs::exists(copy)) throw InputError(copy.string() + ": already there (a run of that name)");
-  WriteFileAtomically(copy.string(), ReadTextFile(file));
-  std::cerr << "usvid init-track: copied " << file << " into " << folder.string() << '\n';
-  return copy.string();
+  return !relative.empty() && *relative.begin() != "..";
 }
 
 void RunInitTrack(const InitTrackOptions& o) {
@@ -48,11 +42,24 @@ void RunInitTrack(const InitTrackOptions& o) {
   const fs::path track_path = folder / "track.yaml";
   if (fs::exists(track_path) && !o.force)
     throw InputError(track_path.string() + ": already there (--force writes over it)");
-  // Everything is checked before anything is written.
+  // Everything is checked before anything is written: the logs, the copies they need, the
+  // first one's header and the vessel file.
+  std::vector<std::string> copies;
+  for (const std::string& f : o.data) {
+    if (!fs::is_regular_file(f)) throw InputError(f + ": no such log");
+    if (Inside(f, folder)) continue;
+    if (fs::exists(folder / fs::path(f).filename()))
+      throw InputError((folder / fs::path(f).filename()).string() +
+                       ": already there (a run of that name)");
+    copies.push_back(f);
+  }
   const std::vector<std::string> columns = HeaderColumns(o.data.at(0));
   if (!o.vessel.empty()) ReadVesselFile(o.vessel);
   EnsureOutputDirectory(folder.string());
-  for (const std::string& f : o.data) IntoFolder(f, folder);
+  for (const std::string& f : copies) {
+    WriteFileAtomically((folder / fs::path(f).filename()).string(), ReadTextFile(f));
+    std::cerr << "usvid init-track: copied " << f << " into " << folder.string() << '\n';
+  }
   if (!o.vessel.empty()) {
     WriteFileAtomically((folder / "vessel.yaml").string(), ReadTextFile(o.vessel));
     std::cerr << "usvid init-track: copied " << o.vessel << " to "
@@ -60,7 +67,10 @@ void RunInitTrack(const InitTrackOptions& o) {
   }
   const bool has_vessel = fs::is_regular_file(folder / "vessel.yaml");
   const RecognisedColumns recognised = RecogniseColumns(columns);
-  const std::string name = fs::absolute(folder).lexically_normal().filename().string();
+  fs::path clean = folder.lexically_normal();
+  if (!clean.has_filename()) clean = clean.parent_path();  // DIR/NAME/
+  const fs::path vessels = clean.parent_path();            // DIR, what compare is given
+  const std::string name = fs::absolute(clean).filename().string();
   WriteFileAtomically(track_path.string(),
                       TrackFileText(name.empty() ? "vessel" : name, recognised,
                                     fs::path(o.data[0]).filename().string(), has_vessel));
@@ -71,8 +81,7 @@ void RunInitTrack(const InitTrackOptions& o) {
     std::cout << ", " << channel << "=" << column;
   std::cout << "; " << recognised.unmapped.size() << " not recognised (listed in the file)\n"
             << "next: usvid compare --suite real --data-dir "
-            << (folder.parent_path().empty() ? std::string(".") : folder.parent_path().string())
-            << '\n';
+            << (vessels.empty() ? std::string(".") : vessels.string()) << '\n';
 }
 
 }  // namespace
