@@ -8,15 +8,28 @@
 
 namespace usvid {
 
+namespace {
+
+template <typename Load>
+YAML::Node Loaded(const std::string& label, Load load) {
+  try {
+    return load();
+  } catch (const YAML::ParserException& e) {
+    throw InputError(Located(label, e.mark.line + 1, e.mark.column + 1, e.msg));
+  } catch (const YAML::Exception& e) {
+    throw InputError(label + ": " + e.what());
+  }
+}
+
+}  // namespace
+
 YAML::Node LoadYamlFile(const std::string& path, const std::string& kind) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such " + kind);
-  try {
-    return YAML::LoadFile(path);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(Located(path, e.mark.line + 1, e.mark.column + 1, e.msg));
-  } catch (const YAML::Exception& e) {
-    throw InputError(path + ": " + e.what());
-  }
+  return Loaded(path, [&] { return YAML::LoadFile(path); });
+}
+
+YAML::Node LoadYamlText(const std::string& text, const std::string& label) {
+  return Loaded(label, [&] { return YAML::Load(text); });
 }
 
 YamlSection::YamlSection(std::string file, const YAML::Node& node, std::string path)

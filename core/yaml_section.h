@@ -16,6 +16,8 @@ namespace usvid {
 // The YAML document of `path`; InputError "path:line:column: what" on a syntax error, and
 // "path: no such KIND" when there is no such file.
 YAML::Node LoadYamlFile(const std::string& path, const std::string& kind);
+// The YAML document `text` (an embedded file), its syntax errors named by `label`.
+YAML::Node LoadYamlText(const std::string& text, const std::string& label);
 
 class YamlSection {
  public:

@@ -422,13 +422,14 @@ nlohmann::json SuiteOfTrack(const TrackFile& track, const fs::path& folder,
   return suite;
 }
 
-// A vessel folder's track (harness/track_file.h): its spec and its suite, files relative to
-// `data_dir`. False, with the reason in `skipped`, for a folder without runs.
+// A vessel folder's track (harness/track_file.h): its spec, its suite and its runs, files
+// relative to `data_dir`. False, with the reason in `skipped`, for a folder without runs.
 bool VesselFolderTrack(const fs::path& path, const fs::path& data_dir, TrackSpec& spec,
-                       nlohmann::json& suite, std::string& skipped) {
+                       nlohmann::json& suite, std::vector<std::string>& runs,
+                       std::string& skipped) {
   const TrackFile track = ReadTrackFile((path / "track.yaml").string());
   spec = SpecOfTrack(track, path, data_dir);
-  const std::vector<std::string> runs = RunsOf(spec, data_dir);
+  runs = RunsOf(spec, data_dir);
   if (runs.empty()) {
     std::string extensions;
     for (const RunFormat& f : spec.formats)
@@ -546,8 +547,9 @@ void AddVesselFolderTracks(const std::string& data_dir, const std::string& cv,
   for (const fs::path& path : folders) {
     TrackSpec spec;
     nlohmann::json suite;
+    std::vector<std::string> run_files;
     std::string why;
-    if (!VesselFolderTrack(path, data_dir, spec, suite, why)) {
+    if (!VesselFolderTrack(path, data_dir, spec, suite, run_files, why)) {
       g.skipped_folders.push_back(why);
       continue;
     }
@@ -561,7 +563,7 @@ void AddVesselFolderTracks(const std::string& data_dir, const std::string& cv,
     SuiteTrack track;
     track.name = spec.name;
     const std::vector<nlohmann::json> further = FurtherRuns(spec, suite, data_dir, listed);
-    const size_t runs = RunsOf(spec, data_dir).size();
+    const size_t runs = run_files.size();
     // Without a split every run is one to train on, and each is held out in turn.
     const char* part = spec.split || runs == 1 ? "test" : "train";
     for (const nlohmann::json& entry : further) suite["data"][part].push_back(entry);

@@ -6,8 +6,8 @@
 
 #include "core/error.h"
 #include "core/yaml_section.h"
-#include "harness/track_init.h"
 #include "importers/column_map.h"
+#include "importers/csv_log.h"
 #include "methods/fossen_ceres/fossen_fit.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/nominal/nominal.h"
@@ -250,18 +250,12 @@ TrackFile ReadBuiltInTrack(const std::string& text, const std::string& label,
   track.file = label;
   track.folder = folder;
   track.check_runs = false;
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(Located(label, e.mark.line + 1, e.mark.column + 1, e.msg));
-  }
-  return ParseTrack(root, std::move(track));
+  return ParseTrack(LoadYamlText(text, label), std::move(track));
 }
 
 void CheckColumnsOf(const TrackFile& track, const std::string& run) {
   if (track.columns.empty()) return;
-  const std::vector<std::string> header = HeaderColumns(run);
+  const std::vector<std::string> header = CsvLogColumns(run);
   const std::set<std::string> have(header.begin(), header.end());
   for (const TrackColumn& c : track.columns)
     if (!have.contains(c.source))

@@ -4,7 +4,6 @@
 #include <cctype>
 #include <set>
 
-#include "core/csv_tokenizer.h"
 #include "core/error.h"
 
 namespace usvid {
@@ -129,26 +128,6 @@ std::string TrackFileText(const std::string& name, const RecognisedColumns& colu
       "#   train: [a.csv, b.csv]\n"
       "#   test: [{file: c.csv, maneuver: zigzag:20/20}]\n"
       "# methods: [sindy, gp]  # default: every method that needs no settings\n";
-  return out;
-}
-
-std::vector<std::string> HeaderColumns(const std::string& path) {
-  const std::string text = ReadTextFile(path);
-  std::string header = text.substr(0, text.find('\n'));
-  if (!header.empty() && header.back() == '\r') header.pop_back();
-  if (header.empty()) throw InputError(path + ":1: no header line");
-  const char separator = header.find(';') != std::string::npos    ? ';'
-                         : header.find('\t') != std::string::npos ? '\t'
-                                                                  : ',';
-  CsvRow row;
-  SplitCsvLine(header, path, 1, separator, row);
-  std::vector<std::string> out;
-  for (CsvField& f : row.fields) {
-    std::string n = f.text;
-    while (!n.empty() && (n.back() == ' ' || n.back() == '\r')) n.pop_back();
-    while (!n.empty() && n.front() == ' ') n.erase(n.begin());
-    out.push_back(n);
-  }
   return out;
 }
 

@@ -24,7 +24,4 @@ RecognisedColumns RecogniseColumns(const std::vector<std::string>& columns);
 std::string TrackFileText(const std::string& name, const RecognisedColumns& columns,
                           const std::string& log, bool has_vessel);
 
-// The columns of a CSV log's header line (',', ';' or tab separated), trimmed.
-std::vector<std::string> HeaderColumns(const std::string& path);
-
 }  // namespace usvid

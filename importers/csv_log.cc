@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -53,6 +54,20 @@ void UnwrapHeadings(Dataset& data, ImportReport& report) {
 }
 
 }  // namespace
+
+std::vector<std::string> CsvLogColumns(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open file for reading");
+  std::string header;
+  std::getline(in, header);
+  if (!header.empty() && header.back() == '\r') header.pop_back();
+  if (header.empty()) throw InputError(Located(path, 1, 0, "no header line"));
+  CsvRow row;
+  SplitCsvLine(header, path, 1, DetectSeparator(header), row);
+  std::vector<std::string> out;
+  for (const CsvField& f : row.fields) out.push_back(f.text);
+  return out;
+}
 
 Dataset ParseCsvLog(const std::string& text, const std::string& file,
                     const std::vector<ColumnMapping>& map, ImportReport& report) {

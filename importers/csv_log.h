@@ -19,4 +19,8 @@ Dataset ImportCsvLog(const std::string& path, const std::vector<ColumnMapping>& 
 Dataset ParseCsvLog(const std::string& text, const std::string& file,
                     const std::vector<ColumnMapping>& map, ImportReport& report);
 
+// The columns of a CSV log's header line, named as ImportCsvLog names them (the separator
+// detected alike); only the header is read. Throws InputError for a file without one.
+std::vector<std::string> CsvLogColumns(const std::string& path);
+
 }  // namespace usvid

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "harness/track_file.h"
 #include "harness/track_init.h"
+#include "importers/csv_log.h"
 #include "simulation/vessel_file.h"
 
 namespace usvid {
@@ -53,7 +54,7 @@ void RunInitTrack(const InitTrackOptions& o) {
                        ": already there (a run of that name)");
     copies.push_back(f);
   }
-  const std::vector<std::string> columns = HeaderColumns(o.data.at(0));
+  const std::vector<std::string> columns = CsvLogColumns(o.data.at(0));
   if (!o.vessel.empty()) ReadVesselFile(o.vessel);
   EnsureOutputDirectory(folder.string());
   for (const std::string& f : copies) {

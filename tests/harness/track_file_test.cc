@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "harness/track_init.h"
+#include "importers/csv_log.h"
 
 namespace usvid {
 namespace {
@@ -165,7 +166,7 @@ TEST(TrackInitTest, RecognisesTheSharedLogsColumns) {
 
 TEST_F(TrackFileTest, TheFirstTrackFileReadsBackWithRFromTheHeading) {
   const std::string text = TrackFileText(
-      "usv", RecogniseColumns(HeaderColumns((dir_ / "zigzag" / "a.csv").string())), "a.csv", false);
+      "usv", RecogniseColumns(CsvLogColumns((dir_ / "zigzag" / "a.csv").string())), "a.csv", false);
   const TrackFile t = ReadTrackFile(Track(text));
   EXPECT_EQ(t.read["map"], "t=time,north=x0,east=y0,psi=heading [deg]:deg,delta=rudder");
   EXPECT_EQ(t.read["rate_from"], "psi");
