@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
+#include <sstream>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -12,6 +14,7 @@
 #include "harness/suite_data.h"
 #include "harness/suite_methods.h"
 #include "harness/track_file.h"
+#include "methods/gp/gp_identify.h"
 #include "methods/hybrid/hybrid.h"
 #include "methods/identify_request.h"
 #include "methods/refit/refit.h"
@@ -493,10 +496,136 @@ std::string CommaList(const std::vector<std::string>& items) {
   return out;
 }
 
+// One tank's KVLCC2 runs, as its track reads them, for the track of both tanks: the shared runs
+// (the track's training and test entries, one file each) and the further runs of its folder,
+// each named with its tank; cross-validated, every run is shared (its track made each a run).
+struct TankRuns {
+  std::string tank;
+  std::optional<size_t> track;  // its track's index among the gathered ones
+  nlohmann::json shared = nlohmann::json::array(), further = nlohmann::json::array();
+  nlohmann::json methods;
+  std::vector<std::string> notes;
+};
+
+TankRuns TankRunsOf(const std::string& tank, const TrackSpec& spec, const nlohmann::json& suite,
+                    const std::vector<nlohmann::json>& further, const fs::path& data_dir,
+                    const std::string& cv) {
+  TankRuns runs;
+  runs.tank = tank;
+  auto named = [&](nlohmann::json run) {
+    const std::string name = run.at("name").get<std::string>();
+    if (name.find(runs.tank) == std::string::npos) run["name"] = runs.tank + " " + name;
+    return run;
+  };
+  const size_t n_further = cv.empty() ? further.size() : 0;  // cross-validated: runs like any
+  for (const char* part : {"train", "test"}) {
+    const nlohmann::json& entries = suite["data"].value(part, nlohmann::json::array());
+    const size_t shared = std::string(part) == "test" ? entries.size() - n_further : entries.size();
+    for (size_t i = 0; i < entries.size(); ++i) {
+      if (i >= shared) {
+        runs.further.push_back(named(entries[i]));
+        continue;
+      }
+      const std::vector<std::string> files = FilesOf(entries[i]);
+      for (const std::string& f : files) {
+        nlohmann::json run = entries[i];
+        run["file"] = f;
+        if (files.size() > 1)  // as a cross-validated track names the runs of such an entry
+          run["name"] = run["name"].get<std::string>() + ": " + fs::path(f).stem().string();
+        // A shared run trains: it keeps the maneuver its record holds, for the methods that
+        // choose among their models by re-running the training runs' tests (grey-box GP).
+        const int folder = FolderOf(spec, data_dir, f);
+        if (!run.contains("maneuver") && folder >= 0)
+          if (const std::string m = ManeuverOfFurtherRun(run, spec.folders[folder]); !m.empty())
+            run["maneuver"] = m;
+        runs.shared.push_back(named(run));
+      }
+    }
+  }
+  runs.methods = suite["methods"];
+  return runs;
+}
+
+// Whether a suite's method entry is grey-box GP (GP given a base model).
+bool IsGreyBoxGp(const nlohmann::json& m) {
+  return m.is_object() && m.value("method", "") == gp::kMethodName && m.contains("base");
+}
+
+// KVLCC2 of both tanks as one track (docs/compare.md#kvlcc2-both-tanks): MARIN's shared runs and
+// HSVA's, trained on jointly. Without --cv it scores the further runs of both folders (none:
+// no track, a note on MARIN's); cross-validated it takes the place of the two tanks' own tracks,
+// every run of both left out in turn, so that a KVLCC2 model is judged over all twelve shared
+// runs rather than MARIN's three. diagnose and hybrid (hundreds of seconds a fit on the joined
+// runs) are left out, and cross-validated grey-box GP too: its choice re-runs the training runs'
+// tests, 58 s a fold on eleven runs against GP's 17 s.
+void AddTwoTankTrack(const TankRuns& marin, const TankRuns& hsva, const std::string& cv,
+                     Gathered& g) {
+  const bool cross_validated = !cv.empty();
+  nlohmann::json further = marin.further;
+  further.insert(further.end(), hsva.further.begin(), hsva.further.end());
+  if (!cross_validated && further.empty()) {
+    g.tracks[*marin.track].notes.push_back(
+        "kvlcc2-both-tanks not run: no further run in kvlcc2-marin/ or kvlcc2-hsva/ to score "
+        "the model of both tanks' shared runs on (--cv runs judges it over those runs)");
+    return;
+  }
+  nlohmann::json suite = g.suites[*marin.track];
+  suite["name"] = "real-kvlcc2-both-tanks";
+  nlohmann::json runs = marin.shared;
+  runs.insert(runs.end(), hsva.shared.begin(), hsva.shared.end());
+  suite["data"] = {{"train", runs}};
+  if (!further.empty()) suite["data"]["test"] = further;
+  nlohmann::json methods = nlohmann::json::array();
+  bool grey_box = false;
+  for (const nlohmann::json& m : marin.methods) {
+    const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
+    if (name == kDiagnoseMethod || name == hybrid::kMethodName) continue;
+    if (cross_validated && IsGreyBoxGp(m)) {
+      grey_box = true;
+      continue;
+    }
+    methods.push_back(m);
+  }
+  suite["methods"] = methods;
+  SuiteTrack track;
+  track.name = "kvlcc2-both-tanks";
+  const size_t n = marin.shared.size() + hsva.shared.size();
+  std::ostringstream what;
+  what << "KVLCC2 of both tanks as one track: MARIN's " << marin.shared.size()
+       << " runs and HSVA's " << hsva.shared.size();
+  if (cross_validated)
+    what << ", each left out in turn, every method fitted on the other " << n - 1
+         << " jointly (in the place of the two tanks' own tracks)";
+  else
+    what << ", trained on jointly, scored on " << further.size()
+         << (further.size() == 1 ? " further run" : " further runs") << " of the two folders";
+  track.notes.push_back(what.str() + "; diagnose and hybrid left out (hundreds of seconds a fit)" +
+                        (grey_box ? ", and grey-box GP (its choice re-runs the training runs' "
+                                    "tests: about a minute a fold)"
+                                  : ""));
+  std::set<std::string> said;
+  for (const TankRuns* tank : {&marin, &hsva})
+    for (const std::string& note : tank->notes)
+      if (!note.starts_with("leave-one-run-out") && !note.starts_with("diagnose and hybrid") &&
+          said.insert(note).second)
+        track.notes.push_back(tank->tank + ": " + note);
+  if (!cross_validated) {
+    g.suites.push_back(std::move(suite));
+    g.tracks.push_back(std::move(track));
+    return;
+  }
+  suite["cv"] = cv;
+  g.suites[*marin.track] = std::move(suite);
+  g.tracks[*marin.track] = std::move(track);
+  g.suites.erase(g.suites.begin() + static_cast<std::ptrdiff_t>(*hsva.track));
+  g.tracks.erase(g.tracks.begin() + static_cast<std::ptrdiff_t>(*hsva.track));
+}
+
 // The built-in tracks whose runs the data folder holds; one whose folder holds a track file of
 // its own is a vessel folder's (`own`).
 void AddBuiltInTracks(const std::string& data_dir, const std::string& cv,
                       const std::set<std::string>& own, bool vessel_folders, Gathered& g) {
+  TankRuns marin_runs, hsva_runs;
   for (const TrackSpec& built_in : Tracks()) {
     if (built_in.cross_facility && !cv.empty()) continue;  // its folds would mix the tanks
     if (own.contains(fs::path(built_in.folders[0].path).begin()->string())) continue;
@@ -536,9 +665,17 @@ void AddBuiltInTracks(const std::string& data_dir, const std::string& cv,
                             "zig-zags and turns also re-run closed-loop, their angle and side "
                             "read from the record)");
     if (!cv.empty()) PrepareCrossValidation(spec, cv, data_dir, suite, track.notes);
+    if (spec.name == "kvlcc2" || spec.name == "kvlcc2-hsva") {
+      const bool at_marin = spec.name == "kvlcc2";
+      TankRuns& tank = at_marin ? marin_runs : hsva_runs;
+      tank = TankRunsOf(at_marin ? "MARIN" : "HSVA", spec, suite, further, data_dir, cv);
+      tank.track = g.tracks.size();
+      tank.notes = track.notes;
+    }
     g.suites.push_back(std::move(suite));
     g.tracks.push_back(std::move(track));
   }
+  if (marin_runs.track && hsva_runs.track) AddTwoTankTrack(marin_runs, hsva_runs, cv, g);
 }
 
 // Every vessel folder's track: split as its track file says, else each run held out in turn.

@@ -6,6 +6,9 @@
 //   harness/tracks/esso-osaka.yaml, read as its folder's track.yaml would be, with
 //   docs/vessels/files/esso-osaka.yaml (both embedded);
 // - kvlcc2-hsva and the cross-facility tracks between the two tanks (harness/suites/);
+// - kvlcc2-both-tanks: KVLCC2 trained on both tanks' shared runs jointly, scored on the further
+//   runs of either folder (without any, not run); cross-validated, it takes the place of the two
+//   tanks' own tracks, all twelve shared runs left out in turn;
 // - every vessel folder DIR/NAME of the data folder with a track.yaml (harness/track_file.h,
 //   docs/tracks.md): split as its track file says, else cross-validated over its runs.
 // Each track trains on fixed shared runs and tests on the other shared runs and on every further

@@ -69,8 +69,8 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
   const SuiteTrack& esso = tracks[1];
   EXPECT_EQ(kvlcc2.name, "kvlcc2");
   EXPECT_THAT(TestNames(kvlcc2.suite),
-              ::testing::ElementsAre("zigzag -20/20", "turning 35", "other_tank_a",
-                                     "other_tank_b", "other_tank_c"));
+              ::testing::ElementsAre("zigzag -20/20", "turning 35", "other_tank_a", "other_tank_b",
+                                     "other_tank_c"));
   // The folder holds both kinds of test: each further run's is read from its record, and is
   // the spec the track gives the same record by hand.
   const std::vector<SuiteData>& tests = kvlcc2.suite.test_data;
@@ -126,7 +126,9 @@ TEST(RealSuiteTest, FurtherRunsOfTheFolderAreScoredAsHeldOutTests) {
 // Cross-validated (--cv runs), a track's runs are its training files and its test runs, the
 // further runs among them. Each is read as the test runs are (Esso Osaka's ended where the
 // propeller stopped), a zig-zag or turn among the training files re-run closed-loop as its record
-// says, and the cut copy of a run the folder holds whole is no run of its own.
+// says, and the cut copy of a run the folder holds whole is no run of its own. KVLCC2 is judged
+// over both tanks' runs at once where the folder holds both: one track of MARIN's three and HSVA's
+// nine, each left out in turn, in the place of each tank's own.
 TEST(RealSuiteTest, CrossValidatedTracksLeaveOutEveryRunOfTheFolder) {
   if (!fs::exists(kShared / "esso-osaka") || !fs::exists(kShared / "kvlcc2-marin"))
     GTEST_SKIP() << "shared data absent: " << kShared;
@@ -134,22 +136,41 @@ TEST(RealSuiteTest, CrossValidatedTracksLeaveOutEveryRunOfTheFolder) {
   const std::vector<SuiteTrack> plain = RealSuiteTracks(kShared.string(), (dir / "p").string());
   const std::vector<SuiteTrack> tracks =
       RealSuiteTracks(kShared.string(), (dir / "cv").string(), "runs");
-  // KVLCC2 in each tank and Esso Osaka; the cross-facility tracks train in one tank and score in
-  // the other by design, and are not cross-validated.
-  ASSERT_EQ(tracks.size(), fs::exists(kShared / "kvlcc2-hsva") ? 3u : 2u);
-  if (tracks.size() == 3) {
-    EXPECT_EQ(tracks[2].name, "kvlcc2-hsva");
-    EXPECT_EQ(tracks[2].suite.test_data.size(), 9u);
-    // Its training run first, read as its header names it.
-    EXPECT_EQ(tracks[2].suite.test_data[0].maneuver, "zigzag:20/10");
-  }
+  // KVLCC2 and Esso Osaka; the cross-facility tracks train in one tank and score in the other by
+  // design, and are not cross-validated.
+  ASSERT_EQ(tracks.size(), 2u);
   const Suite& kvlcc2 = tracks[0].suite;
   EXPECT_TRUE(kvlcc2.cv.On());
-  EXPECT_THAT(TestNames(kvlcc2),
-              ::testing::ElementsAre("zigzag 20/-20", "zigzag -20/20", "turning 35"));
+  if (fs::exists(kShared / "kvlcc2-hsva")) {
+    EXPECT_EQ(tracks[0].name, "kvlcc2-both-tanks");
+    const std::vector<std::string> runs = TestNames(kvlcc2);
+    ASSERT_EQ(runs.size(), 12u);
+    EXPECT_THAT(std::vector<std::string>(runs.begin(), runs.begin() + 4),
+                ::testing::ElementsAre("MARIN zigzag 20/-20", "MARIN zigzag -20/20",
+                                       "MARIN turning 35", "HSVA zigzag 20/10 S"));
+    // HSVA's training run too is read as its header names it.
+    EXPECT_EQ(kvlcc2.test_data[3].maneuver, "zigzag:20/10");
+    EXPECT_EQ(kvlcc2.test_data[3].format, "hsva-dat");
+    EXPECT_EQ(kvlcc2.train_maneuvers.size(), 12u);
+    // GP and SINDy are judged on both tanks; diagnose, hybrid and grey-box GP (a minute a fold)
+    // are not run over the folds.
+    std::vector<std::string> methods;
+    for (const SuiteMethod& m : kvlcc2.methods) methods.push_back(m.Label());
+    EXPECT_THAT(methods, ::testing::Contains("gp[+,-,*,abs]"));
+    EXPECT_THAT(methods, ::testing::Contains("sindy"));
+    for (const std::string& m : methods) {
+      EXPECT_THAT(m, ::testing::Not(HasSubstr("vessel"))) << "grey-box GP cross-validated";
+      EXPECT_THAT(m, ::testing::Not(::testing::AnyOf("diagnose", "hybrid")));
+    }
+    EXPECT_THAT(::testing::PrintToString(tracks[0].notes),
+                HasSubstr("MARIN's 3 runs and HSVA's 9, each left out in turn"));
+  } else {
+    EXPECT_EQ(tracks[0].name, "kvlcc2");
+    EXPECT_THAT(TestNames(kvlcc2),
+                ::testing::ElementsAre("zigzag 20/-20", "zigzag -20/20", "turning 35"));
+  }
   // MARIN's zz_20 reads as zigzag:-20/20 (maneuver_of_record_test).
   EXPECT_EQ(kvlcc2.test_data[0].maneuver, "zigzag:-20/20");
-  EXPECT_EQ(kvlcc2.train_maneuvers.size(), 3u);
 
   const Suite& esso = tracks[1].suite;
   const std::vector<std::string> names = TestNames(esso);
@@ -182,6 +203,47 @@ TEST(RealSuiteTest, CrossValidatedTracksLeaveOutEveryRunOfTheFolder) {
   EXPECT_THAT(notes, HasSubstr("each fold's refit fits at most 20000 rows"));
   EXPECT_THAT(notes, HasSubstr("a cut copy of 'turn_14-Sep-2020_15_58_08'"));
   EXPECT_THAT(notes, HasSubstr("cross-validation over " + std::to_string(names.size()) + " runs"));
+}
+
+// Without --cv, KVLCC2 of both tanks is a track where a further run of either tank's folder can
+// score it: trained on all twelve shared runs jointly (each named with its tank, the training runs
+// with the tests their records hold), scored on the further runs. With the shared runs alone it
+// has nothing held out, and MARIN's track says so.
+TEST(RealSuiteTest, BothTanksTrainOnEverySharedRunAndScoreTheFurtherOnes) {
+  if (!fs::exists(kShared / "kvlcc2-hsva") || !fs::exists(kShared / "kvlcc2-marin"))
+    GTEST_SKIP() << "shared data absent: " << kShared;
+  const fs::path dir = TempDir("tanks");
+  const fs::path data = dir / "data";
+  for (const char* tank : {"kvlcc2-marin", "kvlcc2-hsva"}) {
+    fs::create_directories(data / tank);
+    for (const auto& e : fs::directory_iterator(kShared / tank))
+      fs::create_symlink(fs::absolute(e.path()), data / tank / e.path().filename());
+  }
+  const std::vector<SuiteTrack> shared_only =
+      RealSuiteTracks(data.string(), (dir / "out1").string());
+  for (const SuiteTrack& t : shared_only) EXPECT_NE(t.name, "kvlcc2-both-tanks");
+  EXPECT_THAT(::testing::PrintToString(shared_only.at(0).notes),
+              HasSubstr("kvlcc2-both-tanks not run: no further run"));
+
+  fs::create_symlink(fs::absolute(kShared / "kvlcc2-hsva/HSVA_CPMC_KVLCC2_Z_20_05.dat"),
+                     data / "kvlcc2-hsva/HSVA_held_out_20_05.dat");
+  const std::vector<SuiteTrack> tracks = RealSuiteTracks(data.string(), (dir / "out2").string());
+  const auto both = std::find_if(tracks.begin(), tracks.end(),
+                                 [](const SuiteTrack& t) { return t.name == "kvlcc2-both-tanks"; });
+  ASSERT_NE(both, tracks.end());
+  const Suite& suite = both->suite;
+  EXPECT_FALSE(suite.cv.On());
+  ASSERT_EQ(suite.train_data.size(), 12u);
+  EXPECT_EQ(suite.train_data[0].name, "MARIN zigzag 20/-20");
+  EXPECT_EQ(suite.train_data[0].maneuver, "zigzag:-20/20");  // read from the record
+  EXPECT_EQ(suite.train_data[3].name, "HSVA zigzag 20/10 S");
+  EXPECT_EQ(suite.train_data[3].maneuver, "zigzag:20/10");
+  EXPECT_EQ(suite.train_data[3].format, "hsva-dat");
+  EXPECT_THAT(TestNames(suite), ::testing::ElementsAre("HSVA_held_out_20_05"));
+  EXPECT_EQ(suite.test_data[0].maneuver, "zigzag:20/5");
+  EXPECT_EQ(suite.test_data[0].format, "hsva-dat");
+  EXPECT_THAT(::testing::PrintToString(both->notes),
+              HasSubstr("trained on jointly, scored on 1 further run of the two folders"));
 }
 
 }  // namespace
