@@ -208,13 +208,12 @@ std::string WholeRunOf(const std::string& file) {
   return "";
 }
 
-// A track cross-validated over its runs (harness/cross_validation.h): each training file is an
-// entry of its own, named as ExpandCrossValidation names a file of an entry of several, read as
-// the test runs are (their end_at_stop) and given the maneuver its record holds when its folder
-// holds tests, as a further run is (ManeuverOfFurtherRun); a cut copy of a run the track holds
-// whole is left out. What was done goes to `notes`.
-void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const fs::path& data_dir,
-                            nlohmann::json& suite, std::vector<std::string>& notes) {
+// A track's training runs for cross-validation: each training file an entry of its own, named as
+// ExpandCrossValidation names a file of an entry of several, read as the test runs are (their
+// end_at_stop) and given the maneuver its record holds when its folder holds tests, as a further
+// run is (ManeuverOfFurtherRun).
+nlohmann::json TrainingRunsOf(const TrackSpec& spec, const fs::path& data_dir,
+                              const nlohmann::json& suite) {
   const nlohmann::json like = ReadKeys(spec, suite);
   nlohmann::json train = nlohmann::json::array();
   for (const nlohmann::json& entry : suite["data"]["train"]) {
@@ -233,7 +232,13 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
       train.push_back(run);
     }
   }
-  suite["data"]["train"] = train;
+  return train;
+}
+
+// Leaves out of `suite`'s runs every cut copy of a run it holds whole (trained on while the whole
+// run is held out, it would score the run on itself), with a note; returns how many runs are
+// left. A test part left empty is erased: every run trains, and each is held out in turn.
+size_t DropCutCopies(nlohmann::json& suite, std::vector<std::string>& notes) {
   std::map<std::string, std::string> whole;  // every run's file, without its extension -> name
   for (const char* part : {"train", "test"})
     for (const nlohmann::json& run : suite["data"][part]) {
@@ -256,33 +261,37 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
     }
     runs += kept.size();
     if (kept.empty() && std::string(part) == "test")
-      suite["data"].erase("test");  // every run trains, and each is held out in turn
+      suite["data"].erase("test");
     else
       suite["data"][part] = kept;
   }
-  suite["cv"] = cv;
-  // diagnose and hybrid search and refit the vessel for each candidate: 200-500 s a fit on the
-  // tracks' joined runs, so hours over the folds (docs/compare.md#cross-validation-over-runs).
+  return runs;
+}
+
+// The methods a cross-validated track runs: without diagnose and hybrid, which search and refit
+// the vessel for each candidate (200-500 s a fit on the tracks' joined runs, so hours over the
+// folds; docs/compare.md#cross-validation-over-runs), and the refit at most
+// kCrossValidationFitRows rows a fold: a fold trains on every run but one, up to four times the
+// rows the track trains on without --cv (Esso Osaka: about 110000 against 30642), and the
+// refit's time grows with its rows (54 s a fold on 60000, 27 folds), so each fold's refit takes
+// at most kCrossValidationFitRows, spread over all the fold's runs (methods/refit/typed_refit.h).
+nlohmann::json CrossValidatedMethods(const nlohmann::json& given, std::vector<std::string>& notes) {
   nlohmann::json methods = nlohmann::json::array();
-  for (const nlohmann::json& m : suite["methods"]) {
+  for (const nlohmann::json& m : given) {
     const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
     if (name != kDiagnoseMethod && name != hybrid::kMethodName) methods.push_back(m);
   }
-  if (methods.size() < suite["methods"].size())
+  if (methods.size() < given.size())
     notes.push_back(
         "diagnose and hybrid left out of the cross-validation: each fits for 200-500 s on the "
         "joined runs, once per fold (they run in the suite without --cv)");
-  // A fold trains on every run but one, up to four times the rows the track trains on without
-  // --cv (Esso Osaka: about 110000 against 30642), and the refit's time grows with its rows (54 s
-  // a fold on 60000, 27 folds). Each fold's refit takes at most kCrossValidationFitRows, spread
-  // over all the fold's runs (methods/refit/typed_refit.h).
   bool capped = false;
   for (nlohmann::json& m : methods) {
     const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
     if (name != kRefitMethodName) continue;
     if (m.is_string()) m = nlohmann::json{{"method", name}};
-    const long given = m.value("fit_rows", kCeresFitRows);
-    if (given == 0 || given > kCrossValidationFitRows) {
+    const long rows = m.value("fit_rows", kCeresFitRows);
+    if (rows == 0 || rows > kCrossValidationFitRows) {
       m["fit_rows"] = kCrossValidationFitRows;
       capped = true;
     }
@@ -291,7 +300,19 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
     notes.push_back("each fold's refit fits at most " + std::to_string(kCrossValidationFitRows) +
                     " rows, spread over the fold's runs (the 60000 it takes at most without "
                     "--cv took 54 s a fold on Esso Osaka)");
-  suite["methods"] = methods;
+  return methods;
+}
+
+// A track cross-validated over its runs (harness/cross_validation.h): its training files and
+// test runs, each a run (TrainingRunsOf), but the cut copies of runs it holds whole
+// (DropCutCopies), and its methods as CrossValidatedMethods says. What was done goes to `notes`.
+void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const fs::path& data_dir,
+                            nlohmann::json& suite, std::vector<std::string>& notes) {
+  const nlohmann::json like = ReadKeys(spec, suite);
+  suite["data"]["train"] = TrainingRunsOf(spec, data_dir, suite);
+  const size_t runs = DropCutCopies(suite, notes);
+  suite["cv"] = cv;
+  suite["methods"] = CrossValidatedMethods(suite["methods"], notes);
   notes.push_back("leave-one-run-out cross-validation over " + std::to_string(runs) +
                   " runs: each left out in turn, every method fitted on the other " +
                   std::to_string(runs - 1) +

@@ -15,8 +15,8 @@
 namespace usvid {
 
 bool IsVesselModel(const nlohmann::json& model) {
-  return !model.contains("equations") && model.contains("vessel") && !model.at("vessel").is_null() &&
-         model.at("vessel") != "";
+  return !model.contains("equations") && model.contains("vessel") &&
+         !model.at("vessel").is_null() && model.at("vessel") != "";
 }
 
 VesselModel ParseVesselModel(const nlohmann::json& model) {
@@ -24,7 +24,7 @@ VesselModel ParseVesselModel(const nlohmann::json& model) {
   VesselModel v;
   v.simulator = &FindVessel(model.at("vessel").get<std::string>());
   v.params = v.simulator->Info().ParamsFrom(model.contains("parameters") ? model.at("parameters")
-                                                                          : nlohmann::json());
+                                                                         : nlohmann::json());
   if (model.contains("effects")) {
     if (!model.at("effects").is_array()) throw InputError("model: \"effects\" is not an array");
     for (const auto& e : model.at("effects")) v.effects.push_back(EffectFromJson(e));
@@ -48,9 +48,8 @@ FreeRun FreeRunVessel(const nlohmann::json& model, const Dataset& data, double m
   const VesselInfo& info = vessel.simulator->Info();
   RunOptions options;
   options.dt = max_step;
-  const SimulationResult result =
-      vessel.simulator->RunInputs(data, vessel.params, ValuesOf(vessel.effects, info.inputs, info.states),
-                                  options);
+  const SimulationResult result = vessel.simulator->RunInputs(
+      data, vessel.params, ValuesOf(vessel.effects, info.inputs, info.states), options);
   FreeRun run;
   run.simulated = Dataset(data.t());
   const Eigen::Index rows = result.data.rows();
@@ -184,6 +183,57 @@ FreeRun FreeRunModel(const nlohmann::json& model, const Dataset& data, double ma
   return run;
 }
 
+namespace {
+
+// A vessel model's free run of every window, each from its own first row, stitched.
+FreeRun StitchVesselWindows(const nlohmann::json& model, const Dataset& data,
+                            const std::vector<Eigen::Index>& starts, double max_step) {
+  const Eigen::Index rows = data.rows();
+  const auto windows = static_cast<Eigen::Index>(starts.size());
+  const auto end = [&](Eigen::Index j) { return j + 1 < windows ? starts[j + 1] : rows; };
+  FreeRun run;
+  run.simulated = Dataset(data.t());
+  std::map<std::string, Eigen::VectorXd> stitched;
+  for (Eigen::Index j = 0; j < windows; ++j) {
+    const FreeRun part = FreeRunModel(model, data.Rows(starts[j], end(j) - starts[j]), max_step);
+    run.channels = part.channels;
+    run.diverged |= part.diverged;
+    for (const std::string& c : part.channels) {
+      auto [it, _] = stitched.try_emplace(c, Eigen::VectorXd::Constant(rows, NAN));
+      it->second.segment(starts[j], end(j) - starts[j]) = part.simulated[c];
+    }
+  }
+  for (auto& [c, values] : stitched) run.simulated.Set(c, std::move(values));
+  return run;
+}
+
+// Each window's first state and divergence bounds, as FreeRunModel sees its window, and the
+// longest window's rows.
+struct WindowStarts {
+  Eigen::ArrayXXd x;
+  std::vector<DivergenceBounds> bounds;
+  Eigen::Index longest = 0;
+};
+template <typename End>
+WindowStarts StartsOfWindows(const Dataset& data, const std::vector<Eigen::Index>& starts,
+                             const End& end, const std::vector<std::string>& channels) {
+  const auto windows = static_cast<Eigen::Index>(starts.size());
+  const auto n = static_cast<Eigen::Index>(channels.size());
+  WindowStarts w{Eigen::ArrayXXd(windows, n), {}, 0};
+  for (Eigen::Index j = 0; j < windows; ++j) {
+    const Dataset window = data.Rows(starts[j], end(j) - starts[j]);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::string& c = channels[i];
+      w.x(j, i) = window.Has(c) && window.Get(c).IsSampled(0) ? window[c](0) : 0.0;
+    }
+    w.bounds.emplace_back(channels, window);
+    w.longest = std::max(w.longest, end(j) - starts[j]);
+  }
+  return w;
+}
+
+}  // namespace
+
 FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
                        const std::vector<Eigen::Index>& starts, double max_step) {
   const Eigen::Index rows = data.rows();
@@ -191,42 +241,20 @@ FreeRun FreeRunWindows(const nlohmann::json& model, const Dataset& data,
   USVID_CHECK(
       windows > 0 && starts.front() == 0 && std::ranges::is_sorted(starts) && starts.back() < rows,
       "window starts from 0, ascending, inside the record");
+  if (IsVesselModel(model)) return StitchVesselWindows(model, data, starts, max_step);
   const auto end = [&](Eigen::Index j) { return j + 1 < windows ? starts[j + 1] : rows; };
   FreeRun run;
   run.simulated = Dataset(data.t());
-  if (IsVesselModel(model)) {
-    std::map<std::string, Eigen::VectorXd> stitched;
-    for (Eigen::Index j = 0; j < windows; ++j) {
-      const FreeRun part = FreeRunModel(model, data.Rows(starts[j], end(j) - starts[j]), max_step);
-      run.channels = part.channels;
-      run.diverged |= part.diverged;
-      for (const std::string& c : part.channels) {
-        auto [it, _] = stitched.try_emplace(c, Eigen::VectorXd::Constant(rows, NAN));
-        it->second.segment(starts[j], end(j) - starts[j]) = part.simulated[c];
-      }
-    }
-    for (auto& [c, values] : stitched) run.simulated.Set(c, std::move(values));
-    return run;
-  }
   const EquationModel system(model, [&](const std::string& c) { return data.Has(c); });
   const std::vector<std::string>& channels = system.Channels();
   const std::vector<const Eigen::VectorXd*> inputs = InputChannels(system, data);
   const WindAboard wind(data, system.Inputs(), channels);
   const auto n = static_cast<Eigen::Index>(channels.size());
   const auto m = static_cast<Eigen::Index>(inputs.size());
-  // Each window's start, bounds and length, as FreeRunModel sees its window.
-  Eigen::ArrayXXd x(windows, n);
-  std::vector<DivergenceBounds> bounds;
-  Eigen::Index longest = 0;
-  for (Eigen::Index j = 0; j < windows; ++j) {
-    const Dataset window = data.Rows(starts[j], end(j) - starts[j]);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const std::string& c = channels[i];
-      x(j, i) = window.Has(c) && window.Get(c).IsSampled(0) ? window[c](0) : 0.0;
-    }
-    bounds.emplace_back(channels, window);
-    longest = std::max(longest, end(j) - starts[j]);
-  }
+  WindowStarts first = StartsOfWindows(data, starts, end, channels);
+  Eigen::ArrayXXd& x = first.x;
+  const std::vector<DivergenceBounds>& bounds = first.bounds;
+  const Eigen::Index longest = first.longest;
   Eigen::MatrixXd out(rows, n);
   for (Eigen::Index j = 0; j < windows; ++j) out.row(starts[j]) = x.row(j).matrix();
   std::vector<bool> diverged(static_cast<size_t>(windows), false), advance(diverged.size());

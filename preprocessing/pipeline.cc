@@ -77,6 +77,93 @@ SmoothedSignal SmoothStretches(const Eigen::VectorXd& y, double dt, const Deriva
   return out;
 }
 
+// The grid's rows that have every used channel, in stretches of at least kMinStretchRows (the
+// shorter ones dropped and counted in `short_stretches`).
+std::vector<bool> RowsToKeep(const Dataset& grid, const std::vector<std::string>& states,
+                             const std::vector<std::string>& inputs, long& short_stretches) {
+  std::vector<bool> keep(grid.rows(), true);
+  for (const auto& names : {states, inputs})
+    for (const std::string& n : names)
+      for (Eigen::Index k = 0; k < grid.rows(); ++k) keep[k] = keep[k] && grid.Get(n).IsSampled(k);
+  short_stretches = 0;
+  for (Eigen::Index k = 0; k < grid.rows();) {
+    if (!keep[k]) {
+      ++k;
+      continue;
+    }
+    Eigen::Index end = k;
+    while (end < grid.rows() && keep[end]) ++end;
+    if (end - k < kMinStretchRows) {
+      std::fill(keep.begin() + k, keep.begin() + end, false);
+      ++short_stretches;
+    }
+    k = end;
+  }
+  return keep;
+}
+
+// The grid points left out that lie between records, or in a dropout of the whole log: no data
+// lost, counted apart.
+long BetweenRecords(const Dataset& data, const Dataset& grid, const std::vector<bool>& keep) {
+  long between = 0;
+  const std::vector<Stretch> raw = Stretches(data.t(), kRawGapFactor);
+  size_t s = 0;
+  for (Eigen::Index k = 0; k < grid.rows(); ++k) {
+    const double t = grid.t()(k);
+    while (s + 1 < raw.size() && t >= data.t()(raw[s + 1].first)) ++s;
+    if (!keep[k] && t > data.t()(raw[s].end - 1)) ++between;
+  }
+  return between;
+}
+
+// The input delay by the equation-error scan, on derivatives without breaks (the breaks depend
+// on the delay).
+DelayEstimate EstimateDelay(const Dataset& grid, const std::vector<std::string>& states,
+                            const std::vector<std::string>& inputs, double dt,
+                            const std::vector<Stretch>& stretches,
+                            const PreprocessOptions& options) {
+  DelayProblem p;
+  p.dt = dt;
+  for (const std::string& s : states) {
+    const SmoothedSignal sm = SmoothStretches(grid[s], dt, options.derivative, stretches, {});
+    p.states.push_back({s, sm.value});
+    p.derivatives.push_back({s + "_dot", sm.derivative});
+  }
+  for (const std::string& u : inputs) p.inputs.push_back({u, grid[u]});
+  return ScanDelay(p, std::min(options.max_delay_s, 0.2 * grid.duration()));
+}
+
+// The rows where the (shifted) inputs step, within each stretch; none, with a note, when the
+// steps leave half the record in pieces under options.min_piece_s (inputs not piecewise
+// constant).
+std::vector<Eigen::Index> InputStepBreaks(const std::vector<Eigen::VectorXd>& shifted,
+                                          const std::vector<Stretch>& stretches, Eigen::Index rows,
+                                          double dt, const PreprocessOptions& options,
+                                          std::vector<std::string>& notes) {
+  std::vector<Eigen::Index> breaks;
+  if (!options.step_breaks) return breaks;
+  for (const Stretch& st : stretches) {
+    std::vector<Eigen::VectorXd> piece;
+    for (const Eigen::VectorXd& u : shifted) piece.push_back(u.segment(st.first, st.rows()));
+    for (const Eigen::Index b : StepBreaks(piece)) breaks.push_back(st.first + b);
+  }
+  if (breaks.empty()) return breaks;
+  std::vector<Eigen::Index> edges = breaks;  // the stretches' ends cut pieces too
+  for (const Stretch& st : stretches)
+    if (st.first > 0) edges.push_back(st.first);
+  std::ranges::sort(edges);
+  const double typical_s = static_cast<double>(TypicalPiece(edges, rows)) * dt;
+  if (typical_s < options.min_piece_s) {
+    std::ostringstream d;
+    d << "no step breaks: the inputs' " << breaks.size()
+      << " changes leave half the record in stretches under " << typical_s
+      << " s, so they are not piecewise constant";
+    notes.push_back(d.str());
+    breaks.clear();
+  }
+  return breaks;
+}
+
 }  // namespace
 
 PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& states,
@@ -97,38 +184,11 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
   ro.channels.insert(ro.channels.end(), inputs.begin(), inputs.end());
   ResampleReport report;
   Dataset grid = Resample(data, ro, &report);
-  // Rows where any used channel is missing (ends, long gaps) are dropped.
-  std::vector<bool> keep(grid.rows(), true);
-  for (const auto& names : {states, inputs})
-    for (const std::string& n : names)
-      for (Eigen::Index k = 0; k < grid.rows(); ++k) keep[k] = keep[k] && grid.Get(n).IsSampled(k);
-  // Stretches too short to differentiate (under 10 rows) are dropped too.
+  // Rows where any used channel is missing (ends, long gaps) are dropped, and stretches too short
+  // to differentiate.
   long short_stretches = 0;
-  for (Eigen::Index k = 0; k < grid.rows();) {
-    if (!keep[k]) {
-      ++k;
-      continue;
-    }
-    Eigen::Index end = k;
-    while (end < grid.rows() && keep[end]) ++end;
-    if (end - k < kMinStretchRows) {
-      std::fill(keep.begin() + k, keep.begin() + end, false);
-      ++short_stretches;
-    }
-    k = end;
-  }
-  // Grid points between records, or in a dropout of the whole log, are not data lost: counted
-  // apart.
-  long between = 0;
-  {
-    const std::vector<Stretch> raw = Stretches(data.t(), kRawGapFactor);
-    size_t s = 0;
-    for (Eigen::Index k = 0; k < grid.rows(); ++k) {
-      const double t = grid.t()(k);
-      while (s + 1 < raw.size() && t >= data.t()(raw[s + 1].first)) ++s;
-      if (!keep[k] && t > data.t()(raw[s].end - 1)) ++between;
-    }
-  }
+  const std::vector<bool> keep = RowsToKeep(grid, states, inputs, short_stretches);
+  const long between = BetweenRecords(data, grid, keep);
   const long dropped = std::count(keep.begin(), keep.end(), false) - between;
   const std::vector<Stretch> stretches = KeptStretches(keep);
   if (dropped + between > 0) grid.KeepRows(keep);
@@ -146,18 +206,9 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
          << " stretches between gaps or records, each smoothed and differentiated on its own";
   out.notes.push_back(note.str());
 
-  // Delay: estimated on derivatives without breaks (the breaks depend on the delay).
   out.delay_s = options.delay_s;
   if (options.estimate_delay) {
-    DelayProblem p;
-    p.dt = dt;
-    for (const std::string& s : states) {
-      const SmoothedSignal sm = SmoothStretches(grid[s], dt, options.derivative, stretches, {});
-      p.states.push_back({s, sm.value});
-      p.derivatives.push_back({s + "_dot", sm.derivative});
-    }
-    for (const std::string& u : inputs) p.inputs.push_back({u, grid[u]});
-    out.delay_estimate = ScanDelay(p, std::min(options.max_delay_s, 0.2 * grid.duration()));
+    out.delay_estimate = EstimateDelay(grid, states, inputs, dt, stretches, options);
     out.delay_s = out.delay_estimate->delay_s;
     std::ostringstream d;
     d << "input delay estimated by the equation-error scan: " << out.delay_s << " s";
@@ -169,28 +220,8 @@ PreparedData Preprocess(const Dataset& data, const std::vector<std::string>& sta
   Dataset result(grid.t());
   std::vector<Eigen::VectorXd> shifted;
   for (const std::string& u : inputs) shifted.push_back(Shift(grid[u], shift, stretches));
-  std::vector<Eigen::Index> breaks;
-  if (options.step_breaks)
-    for (const Stretch& st : stretches) {
-      std::vector<Eigen::VectorXd> piece;
-      for (const Eigen::VectorXd& u : shifted) piece.push_back(u.segment(st.first, st.rows()));
-      for (const Eigen::Index b : StepBreaks(piece)) breaks.push_back(st.first + b);
-    }
-  if (!breaks.empty()) {
-    std::vector<Eigen::Index> edges = breaks;  // the stretches' ends cut pieces too
-    for (const Stretch& st : stretches)
-      if (st.first > 0) edges.push_back(st.first);
-    std::ranges::sort(edges);
-    const double typical_s = static_cast<double>(TypicalPiece(edges, grid.rows())) * dt;
-    if (typical_s < options.min_piece_s) {
-      std::ostringstream d;
-      d << "no step breaks: the inputs' " << breaks.size()
-        << " changes leave half the record in stretches under " << typical_s
-        << " s, so they are not piecewise constant";
-      out.notes.push_back(d.str());
-      breaks.clear();
-    }
-  }
+  const std::vector<Eigen::Index> breaks =
+      InputStepBreaks(shifted, stretches, grid.rows(), dt, options, out.notes);
   for (const std::string& s : states) {
     const SmoothedSignal sm = SmoothStretches(grid[s], dt, options.derivative, stretches, breaks);
     result.Set(s, sm.value);

@@ -131,6 +131,67 @@ Eigen::VectorXd StRidge(const Eigen::MatrixXd& columns, const Eigen::VectorXd& t
                max_iterations);
 }
 
+namespace {
+
+// The stretches of the grid between its gaps, as row ranges.
+std::vector<RowRange> GridStretches(const Eigen::VectorXd& t) {
+  std::vector<RowRange> pieces;
+  for (const Stretch& s : Stretches(t, kGridGapFactor)) pieces.emplace_back(s.first, s.end);
+  return pieces;
+}
+
+// The candidate thresholds: the options', or the default grid; sorted, each once.
+std::vector<double> CandidateThresholds(const SindyOptions& options) {
+  std::vector<double> thresholds =
+      options.thresholds.empty() ? DefaultThresholds() : options.thresholds;
+  std::sort(thresholds.begin(), thresholds.end());
+  thresholds.erase(std::unique(thresholds.begin(), thresholds.end()), thresholds.end());
+  return thresholds;
+}
+
+// The mean held-out MSE over the folds and its standard error, per threshold, and the path
+// model.json gives (each threshold's scores and the terms it keeps on all rows).
+struct ThresholdPath {
+  std::vector<double> mean, se;
+  nlohmann::json rows = nlohmann::json::array();
+};
+
+template <typename Fit>
+ThresholdPath ScoreThresholds(const Eigen::MatrixXd& columns, const Eigen::VectorXd& y,
+                              const std::vector<Fold>& folds, const std::vector<double>& thresholds,
+                              const Fit& fit) {
+  std::vector<ScaledProblem> train;
+  for (const Fold& f : folds) train.push_back(MakeProblem(columns, y, f.train));
+  const ScaledProblem all = MakeProblem(columns, y, {{0, columns.rows()}});
+  const auto k = static_cast<double>(folds.size());
+  ThresholdPath p;
+  p.mean.resize(thresholds.size());
+  p.se.resize(thresholds.size());
+  for (size_t t = 0; t < thresholds.size(); ++t) {
+    Eigen::VectorXd mse(static_cast<Eigen::Index>(folds.size()));
+    for (size_t f = 0; f < folds.size(); ++f) {
+      const Eigen::VectorXd w = fit(train[f], thresholds[t]);
+      double sse = 0.0;
+      Eigen::Index held = 0;
+      for (const auto& [begin, end] : folds[f].held_out) {
+        sse += (y.segment(begin, end - begin) - columns.middleRows(begin, end - begin) * w)
+                   .squaredNorm();
+        held += end - begin;
+      }
+      mse(static_cast<Eigen::Index>(f)) = sse / static_cast<double>(held);
+    }
+    p.mean[t] = mse.mean();
+    p.se[t] = std::sqrt((mse.array() - p.mean[t]).square().sum() / (k - 1) / k);
+    p.rows.push_back({{"threshold", thresholds[t]},
+                      {"heldout_mse", p.mean[t]},
+                      {"heldout_se", p.se[t]},
+                      {"terms", (fit(all, thresholds[t]).array() != 0.0).count()}});
+  }
+  return p;
+}
+
+}  // namespace
+
 SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
                                       const std::vector<std::string>& states,
                                       const std::vector<std::string>& variables,
@@ -160,20 +221,11 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
                      " are too few for " + std::to_string(options.folds) +
                      " folds (at least 10 a fold)");
 
-  std::vector<double> thresholds =
-      options.thresholds.empty() ? DefaultThresholds() : options.thresholds;
-  std::sort(thresholds.begin(), thresholds.end());
-  thresholds.erase(std::unique(thresholds.begin(), thresholds.end()), thresholds.end());
+  const std::vector<double> thresholds = CandidateThresholds(options);
   // Each record (or stretch between gaps) is cut into the folds' blocks, so every fold holds
   // out a share of every maneuver.
-  std::vector<RowRange> pieces;
-  if (weak) {
-    pieces = windows.stretches;
-  } else {
-    for (const Stretch& s : Stretches(data.t(), kGridGapFactor))
-      pieces.emplace_back(s.first, s.end);
-  }
-  const std::vector<Fold> folds = BlockFolds(pieces, options.folds);
+  const std::vector<Fold> folds =
+      BlockFolds(weak ? windows.stretches : GridStretches(data.t()), options.folds);
   const auto fit = [&](const ScaledProblem& p, double threshold) {
     return Solve(p, threshold, options.ridge, options.max_iterations);
   };
@@ -187,41 +239,15 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
       weak_y = WeakTarget(windows, data.Has(raw) ? data[raw] : data[state]);
     }
     const Eigen::VectorXd& y = weak ? weak_y : data[state + "_dot"];
-    std::vector<ScaledProblem> train;
-    for (const Fold& f : folds) train.push_back(MakeProblem(columns, y, f.train));
-    const ScaledProblem all = MakeProblem(columns, y, {{0, rows}});
-
-    // Mean held-out MSE and its standard error over the folds, per threshold.
-    const auto k = static_cast<double>(folds.size());
-    std::vector<double> mean(thresholds.size()), se(thresholds.size());
-    nlohmann::json path = nlohmann::json::array();
-    for (size_t t = 0; t < thresholds.size(); ++t) {
-      Eigen::VectorXd mse(static_cast<Eigen::Index>(folds.size()));
-      for (size_t f = 0; f < folds.size(); ++f) {
-        const Eigen::VectorXd w = fit(train[f], thresholds[t]);
-        double sse = 0.0;
-        Eigen::Index held = 0;
-        for (const auto& [begin, end] : folds[f].held_out) {
-          sse += (y.segment(begin, end - begin) - columns.middleRows(begin, end - begin) * w)
-                     .squaredNorm();
-          held += end - begin;
-        }
-        mse(static_cast<Eigen::Index>(f)) = sse / static_cast<double>(held);
-      }
-      mean[t] = mse.mean();
-      se[t] = std::sqrt((mse.array() - mean[t]).square().sum() / (k - 1) / k);
-      path.push_back({{"threshold", thresholds[t]},
-                      {"heldout_mse", mean[t]},
-                      {"heldout_se", se[t]},
-                      {"terms", (fit(all, thresholds[t]).array() != 0.0).count()}});
-    }
+    const ThresholdPath path = ScoreThresholds(columns, y, folds, thresholds, fit);
+    const std::vector<double>&mean = path.mean, &se = path.se;
     const size_t best =
         static_cast<size_t>(std::min_element(mean.begin(), mean.end()) - mean.begin());
     size_t chosen = best;
     for (size_t t = best; t < thresholds.size() && options.one_standard_error; ++t)
       if (mean[t] <= mean[best] + se[best]) chosen = t;
 
-    const Eigen::VectorXd w = fit(all, thresholds[chosen]);
+    const Eigen::VectorXd w = fit(MakeProblem(columns, y, {{0, rows}}), thresholds[chosen]);
     nlohmann::json terms = nlohmann::json::array();
     for (Eigen::Index j = 0; j < w.size(); ++j) {
       if (w(j) == 0.0) continue;
@@ -237,7 +263,7 @@ SindyIdentification IdentifyWithSindy(const PreparedData& prepared,
                           {"heldout_mse", mean[chosen]},
                           {"heldout_se", se[chosen]},
                           {"folds", options.folds},
-                          {"thresholds", path},
+                          {"thresholds", path.rows},
                           {"terms", terms},
                           {"library", lib.names},
                           {"r2_train", sst > 0 ? 1.0 - ssr / sst : 0.0},
