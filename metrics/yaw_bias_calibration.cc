@@ -60,6 +60,70 @@ struct CriteriaCost {
   std::string status;          // the first replay that was not ok
 };
 
+// The sum of the squared first and second overshoot errors of `model` replayed on every zig-zag;
+// infinite, with the status, when a replay or a record gives no second overshoot.
+CriteriaCost OvershootCost(const nlohmann::json& model, const std::vector<RecordedTest>& zigzags) {
+  CriteriaCost e;
+  double cost = 0.0;
+  for (const RecordedTest& z : zigzags) {
+    const nlohmann::json score = z.scorer.Score(model);
+    const nlohmann::json& first = score["first_overshoot_error_deg"];
+    const nlohmann::json& second = score["second_overshoot_error_deg"];
+    if (score["status"] != "ok" || !first.is_number() || !second.is_number()) {
+      e.status = z.spec + ": " +
+                 (score["status"] != "ok" ? score["status"].get<std::string>()
+                                          : "the replay or the record has no second overshoot");
+      return e;
+    }
+    e.errors.push_back(first.get<double>());
+    e.errors.push_back(second.get<double>());
+    cost += first.get<double>() * first.get<double>() + second.get<double>() * second.get<double>();
+  }
+  e.cost = cost;
+  return e;
+}
+
+// The shift of lowest cost: a scan of kScanSteps steps each side of 0, then golden-section search
+// between the best point's neighbours. `best` holds the cost at 0 on entry, the shift's on return.
+template <typename Evaluate>
+double BestShift(const Evaluate& evaluate, double step, CriteriaCost& best) {
+  double best_shift = 0.0;
+  for (int k = -kScanSteps; k <= kScanSteps; ++k) {
+    if (k == 0) continue;
+    const CriteriaCost e = evaluate(k * step);
+    if (e.cost < best.cost) {
+      best = e;
+      best_shift = k * step;
+    }
+  }
+  if (!std::isfinite(best.cost)) return best_shift;
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  double a = best_shift - step, b = best_shift + step;
+  double c = b - g * (b - a), d = a + g * (b - a);
+  CriteriaCost fc = evaluate(c), fd = evaluate(d);
+  for (int i = 0; i < kGoldenIterations; ++i) {
+    if (fc.cost < fd.cost) {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - g * (b - a);
+      fc = evaluate(c);
+    } else {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + g * (b - a);
+      fd = evaluate(d);
+    }
+  }
+  for (const auto& [shift, e] : {std::pair{c, fc}, std::pair{d, fd}})
+    if (e.cost < best.cost) {
+      best = e;
+      best_shift = shift;
+    }
+  return best_shift;
+}
+
 }  // namespace
 
 nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
@@ -88,25 +152,7 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
   nlohmann::json trial = model;
   auto evaluate = [&](double shift) {
     trial["equations"]["r"] = with_constant(split.constant + shift);
-    CriteriaCost e;
-    double cost = 0.0;
-    for (const RecordedTest& z : zigzags) {
-      const nlohmann::json score = z.scorer.Score(trial);
-      const nlohmann::json& first = score["first_overshoot_error_deg"];
-      const nlohmann::json& second = score["second_overshoot_error_deg"];
-      if (score["status"] != "ok" || !first.is_number() || !second.is_number()) {
-        e.status = z.spec + ": " +
-                   (score["status"] != "ok" ? score["status"].get<std::string>()
-                                            : "the replay or the record has no second overshoot");
-        return e;
-      }
-      e.errors.push_back(first.get<double>());
-      e.errors.push_back(second.get<double>());
-      cost +=
-          first.get<double>() * first.get<double>() + second.get<double>() * second.get<double>();
-    }
-    e.cost = cost;
-    return e;
+    return OvershootCost(trial, zigzags);
   };
 
   const CriteriaCost before = evaluate(0.0);
@@ -118,43 +164,8 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
     report["reason"] = "the r equation does not vary over the training rows";
     return report;
   }
-  // The scan, then golden-section search between the best point's neighbours.
-  double best_shift = 0.0;
   CriteriaCost best = before;
-  for (int k = -kScanSteps; k <= kScanSteps; ++k) {
-    if (k == 0) continue;
-    const CriteriaCost e = evaluate(k * step);
-    if (e.cost < best.cost) {
-      best = e;
-      best_shift = k * step;
-    }
-  }
-  if (std::isfinite(best.cost)) {
-    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-    double a = best_shift - step, b = best_shift + step;
-    double c = b - g * (b - a), d = a + g * (b - a);
-    CriteriaCost fc = evaluate(c), fd = evaluate(d);
-    for (int i = 0; i < kGoldenIterations; ++i) {
-      if (fc.cost < fd.cost) {
-        b = d;
-        d = c;
-        fd = fc;
-        c = b - g * (b - a);
-        fc = evaluate(c);
-      } else {
-        a = c;
-        c = d;
-        fc = fd;
-        d = a + g * (b - a);
-        fd = evaluate(d);
-      }
-    }
-    for (const auto& [shift, e] : {std::pair{c, fc}, std::pair{d, fd}})
-      if (e.cost < best.cost) {
-        best = e;
-        best_shift = shift;
-      }
-  }
+  const double best_shift = BestShift(evaluate, step, best);
   if (!(best.cost < before.cost)) {
     report["reason"] = std::isfinite(before.cost)
                            ? "no other constant gives the training zig-zags' overshoots closer"

@@ -82,15 +82,9 @@ std::string TruthPath(const std::string& out) {
   return (has_ext ? out.substr(0, dot) : out) + ".truth.json";
 }
 
-void RunSimulate(const SimulateOptions& o) {
-  if (o.maneuver.empty() == o.inputs.empty())
-    throw InputError("simulate: give exactly one of --maneuver and --inputs");
-  if (!(o.dt > 0) || !(o.rate_hz > 0)) throw InputError("--dt and --rate: must be positive");
-  CheckOutputFile(o.out);
-  const VesselSimulator& sim = FindVessel(o.vessel);
-  const VesselInfo& info = sim.Info();
-  // A model file given as --params brings its effects (a diagnose model.json); --effect items
-  // replace those of the same kind.
+// The effects the run hides: a model file's (--params, a diagnose model.json), and --effect items,
+// which replace those of the same kind; wind only on a vessel with a wind model.
+std::vector<Effect> SimulatedEffects(const SimulateOptions& o, const VesselInfo& info) {
   const std::vector<Effect> effects =
       MergeEffects(o.params.empty() ? std::vector<Effect>{} : EffectsOfFile(o.params),
                    ParseEffects(o.effects, o.seed));
@@ -98,6 +92,84 @@ void RunSimulate(const SimulateOptions& o) {
     if (e.kind == EffectKind::kWind && !info.wind_body)
       throw InputError("--effect wind: vessel " + info.name +
                        " has no wind model (a vessel file with a wind section has)");
+  return effects;
+}
+
+// The vessel's actuation, its cruise thrust set by --cruise when given.
+Actuation CruiseActuation(const SimulateOptions& o, const VesselInfo& info) {
+  Actuation act = info.actuation;
+  if (!o.cruise) return act;
+  if (act.thrust_input < 0)
+    throw InputError("--cruise: vessel " + info.name + " has no thrust input");
+  if (!(*o.cruise >= act.input_min[act.thrust_input] &&
+        *o.cruise <= act.input_max[act.thrust_input]))
+    throw InputError("--cruise: " + std::to_string(*o.cruise) + " is outside the range of " +
+                     act.input_names[act.thrust_input]);
+  act.thrust_cruise = *o.cruise;
+  return act;
+}
+
+// --maneuver run on the vessel, under --wind and --gusts (those written to `truth`).
+SimulationResult SimulateManeuver(const SimulateOptions& o, const VesselSimulator& sim,
+                                  const std::vector<double>& params,
+                                  const EffectValues<double>& values, RunOptions& run,
+                                  std::optional<WindGusts>& gusts, nlohmann::json& truth) {
+  const VesselInfo& info = sim.Info();
+  // Multi-rate sensors need an output grid at least as fast as the fastest sensor.
+  for (const auto& [_, hz] : ParseRateItems(o.rates)) run.rate_hz = std::max(run.rate_hz, hz);
+  const Actuation act = CruiseActuation(o, info);
+  auto maneuver = MakeManeuver(o.maneuver, act, o.duration, o.seed);
+  if (!o.wind.empty())
+    maneuver = UnderTrueWind(std::move(maneuver), act, ParseWind(o.wind, o.seed), o.seed);
+  if (!o.gusts.empty()) {
+    gusts = MakeWindGusts(info, o.gusts, o.seed, "--gusts '" + o.gusts + "'");
+    run.disturbance = GustDisturbance(*gusts, o.seed);
+    truth["gusts"] = WindGustsToJson(*gusts);
+    truth["gusts"]["measured"] = std::ranges::find(o.logged, "wind") != o.logged.end();
+  }
+  std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "
+            << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
+  return sim.RunManeuver(*maneuver, params, values, run);
+}
+
+// The run's truth beside what the sensors logged: the parameters, effects, noise and grid.
+void AddRunTruth(const SimulateOptions& o, const VesselInfo& info,
+                 const std::vector<double>& params, const std::vector<Effect>& effects,
+                 const std::vector<std::string>& measured, const SensorLog& logged,
+                 const RunOptions& run, const SimulationResult& result, nlohmann::json& truth) {
+  nlohmann::json p = nlohmann::json::object();
+  for (size_t i = 0; i < params.size(); ++i) p[info.params[i]] = params[i];
+  nlohmann::json e = nlohmann::json::array();
+  for (const Effect& effect : effects) e.push_back(EffectToJson(effect));
+  nlohmann::json noise_sd = nlohmann::json::object();
+  for (size_t i = 0; i < measured.size(); ++i) noise_sd[measured[i]] = logged.noise_sd[i];
+  truth.update({{"vessel", info.name},
+                {"parameters", p},
+                {"effects", e},
+                {"seed", o.seed},
+                {"noise", {{"level", o.noise}, {"sd", noise_sd}}},
+                {"states", info.states},
+                {"derived", info.derived},
+                {"inputs", info.inputs},
+                {"dt", run.dt},
+                {"rate_hz", run.rate_hz},
+                {"integrator", o.integrator},
+                {"transport_delay_s", info.transport_delay_s},
+                {"sensor_rates_hz", logged.rates},
+                {"duration_s", result.data.duration()},
+                {"run_in_s", result.run_in_s}});
+  if (!result.maneuver.is_null()) truth["maneuver"] = result.maneuver;
+  if (o.cruise) truth["cruise"] = *o.cruise;
+}
+
+void RunSimulate(const SimulateOptions& o) {
+  if (o.maneuver.empty() == o.inputs.empty())
+    throw InputError("simulate: give exactly one of --maneuver and --inputs");
+  if (!(o.dt > 0) || !(o.rate_hz > 0)) throw InputError("--dt and --rate: must be positive");
+  CheckOutputFile(o.out);
+  const VesselSimulator& sim = FindVessel(o.vessel);
+  const VesselInfo& info = sim.Info();
+  const std::vector<Effect> effects = SimulatedEffects(o, info);
   const EffectValues<double> values = ValuesOf(effects, info.inputs, info.states);
   CheckLoggedDisturbances(o.logged, !o.gusts.empty(), effects, "--logged");
   std::vector<double> params = info.default_params;
@@ -111,30 +183,7 @@ void RunSimulate(const SimulateOptions& o) {
   nlohmann::json truth;
   std::optional<WindGusts> gusts;
   if (!o.maneuver.empty()) {
-    // Multi-rate sensors need an output grid at least as fast as the fastest sensor.
-    for (const auto& [_, hz] : ParseRateItems(o.rates)) run.rate_hz = std::max(run.rate_hz, hz);
-    Actuation act = info.actuation;
-    if (o.cruise) {
-      if (act.thrust_input < 0)
-        throw InputError("--cruise: vessel " + info.name + " has no thrust input");
-      if (!(*o.cruise >= act.input_min[act.thrust_input] &&
-            *o.cruise <= act.input_max[act.thrust_input]))
-        throw InputError("--cruise: " + std::to_string(*o.cruise) + " is outside the range of " +
-                         act.input_names[act.thrust_input]);
-      act.thrust_cruise = *o.cruise;
-    }
-    auto maneuver = MakeManeuver(o.maneuver, act, o.duration, o.seed);
-    if (!o.wind.empty())
-      maneuver = UnderTrueWind(std::move(maneuver), act, ParseWind(o.wind, o.seed), o.seed);
-    if (!o.gusts.empty()) {
-      gusts = MakeWindGusts(info, o.gusts, o.seed, "--gusts '" + o.gusts + "'");
-      run.disturbance = GustDisturbance(*gusts, o.seed);
-      truth["gusts"] = WindGustsToJson(*gusts);
-      truth["gusts"]["measured"] = std::ranges::find(o.logged, "wind") != o.logged.end();
-    }
-    std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "
-              << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
-    result = sim.RunManeuver(*maneuver, params, values, run);
+    result = SimulateManeuver(o, sim, params, values, run, gusts, truth);
   } else {
     if (!o.wind.empty() || !o.gusts.empty())
       throw InputError(
@@ -159,30 +208,7 @@ void RunSimulate(const SimulateOptions& o) {
                                         WaveHullLength(info.length_m), o.seed);
   if (logged.sea) truth["waves"] = WaveSeaToJson(*logged.sea, logged.hull_length_m);
   if (!logged.dropouts.empty()) truth["dropouts"] = DropoutsToJson(logged.dropouts);
-
-  nlohmann::json p = nlohmann::json::object();
-  for (size_t i = 0; i < params.size(); ++i) p[info.params[i]] = params[i];
-  nlohmann::json e = nlohmann::json::array();
-  for (const Effect& effect : effects) e.push_back(EffectToJson(effect));
-  nlohmann::json noise_sd = nlohmann::json::object();
-  for (size_t i = 0; i < measured.size(); ++i) noise_sd[measured[i]] = logged.noise_sd[i];
-  truth.update({{"vessel", info.name},
-                {"parameters", p},
-                {"effects", e},
-                {"seed", o.seed},
-                {"noise", {{"level", o.noise}, {"sd", noise_sd}}},
-                {"states", info.states},
-                {"derived", info.derived},
-                {"inputs", info.inputs},
-                {"dt", run.dt},
-                {"rate_hz", run.rate_hz},
-                {"integrator", o.integrator},
-                {"transport_delay_s", info.transport_delay_s},
-                {"sensor_rates_hz", logged.rates},
-                {"duration_s", data.duration()},
-                {"run_in_s", result.run_in_s}});
-  if (!result.maneuver.is_null()) truth["maneuver"] = result.maneuver;
-  if (o.cruise) truth["cruise"] = *o.cruise;
+  AddRunTruth(o, info, params, effects, measured, logged, run, result, truth);
 
   WriteDatasetCsv(o.out, data);
   WriteJsonFile(TruthPath(o.out), truth);
