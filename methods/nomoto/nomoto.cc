@@ -89,6 +89,56 @@ void FitEquationError(const Dataset& d, const std::string& rate, const std::stri
   }
 }
 
+// The shooting segments, [first, last] rows of at most segment_s each, none across a gap
+// (core/stretches.h): no segment of one row (it joins the one before; after a gap, none).
+std::vector<std::pair<Eigen::Index, Eigen::Index>> ShootingSegments(const Eigen::VectorXd& t,
+                                                                    double gap, double segment_s) {
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> segments;
+  const auto rows = t.size();
+  for (Eigen::Index first = 0; first < rows;) {
+    Eigen::Index last = first;
+    while (last + 1 < rows && t(last + 1) - t(first) < segment_s && t(last + 1) - t(last) <= gap)
+      ++last;
+    const bool after_gap = first > 0 && t(first) - t(first - 1) > gap;
+    if (last == first && !segments.empty()) {
+      if (!after_gap) segments.back().second = last;
+    } else {
+      segments.emplace_back(first, last);
+    }
+    first = last + 1;
+  }
+  return segments;
+}
+
+// The smallest T the fit may take: RK4 on r' = -r/T is stable for h/T < 2.78, so half the largest
+// substep keeps every rollout stable.
+double SmallestT(const Eigen::VectorXd& t, double gap) {
+  double max_step = 0.0;
+  for (Eigen::Index k = 0; k + 1 < t.size(); ++k)
+    if (t(k + 1) - t(k) <= gap)
+      max_step = std::max(max_step, (t(k + 1) - t(k)) / Substeps(t(k + 1) - t(k)));
+  return std::max(1e-3, 0.5 * max_step);
+}
+
+// The parameters' standard deviations from Ceres' covariance into `fit` (0, with a note, when
+// it is not available).
+void AddParameterSds(ceres::Problem& problem, double* p, const ceres::Solver::Summary& summary,
+                     NomotoFit& fit) {
+  ceres::Covariance covariance{ceres::Covariance::Options{}};
+  const std::vector<std::pair<const double*, const double*>> blocks = {{p, p}};
+  if (!covariance.Compute(blocks, &problem)) {
+    fit.notes.push_back("output error: covariance not available (standard deviations 0)");
+    return;
+  }
+  double c[9];
+  covariance.GetCovarianceBlock(p, p, c);
+  // The residuals are in units of sd(r): scaled by the residual variance per degree of freedom.
+  const std::vector<double> sd = ParameterSds(c, 3, summary);
+  fit.sd_K = sd[0];
+  fit.sd_T = sd[1];
+  fit.sd_delta0 = sd[2];
+}
+
 }  // namespace
 
 NomotoFit FitNomoto(const PreparedData& prepared, const std::string& rate,
@@ -110,28 +160,10 @@ NomotoFit FitNomoto(const PreparedData& prepared, const std::string& rate,
   const Eigen::VectorXd& input = d[yaw_input];
   const Eigen::VectorXd& measured = d[d.Has(rate + "_raw") ? rate + "_raw" : rate];
   const Eigen::VectorXd& smoothed = d[rate];
-  // [first, last] rows, none across a gap (core/stretches.h).
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> segments;
   const double gap = GapLimit(t, kGridGapFactor);
-  for (Eigen::Index first = 0; first < d.rows();) {
-    Eigen::Index last = first;
-    while (last + 1 < d.rows() && t(last + 1) - t(first) < segment_s &&
-           t(last + 1) - t(last) <= gap)
-      ++last;
-    const bool after_gap = first > 0 && t(first) - t(first - 1) > gap;
-    if (last == first && !segments.empty()) {
-      if (!after_gap) segments.back().second = last;  // no segment of one row; after a gap, none
-    } else {
-      segments.emplace_back(first, last);
-    }
-    first = last + 1;
-  }
-  double max_step = 0.0;
-  for (Eigen::Index k = 0; k + 1 < d.rows(); ++k)
-    if (t(k + 1) - t(k) <= gap)
-      max_step = std::max(max_step, (t(k + 1) - t(k)) / Substeps(t(k + 1) - t(k)));
-  // RK4 on r' = -r/T is stable for h/T < 2.78: the bound keeps every rollout stable.
-  const double min_t = std::max(1e-3, 0.5 * max_step);
+  const std::vector<std::pair<Eigen::Index, Eigen::Index>> segments =
+      ShootingSegments(t, gap, segment_s);
+  const double min_t = SmallestT(t, gap);
 
   double p[3] = {fit.equation_error_K, std::max(fit.equation_error_T, min_t),
                  fit.equation_error_delta0};
@@ -179,19 +211,7 @@ NomotoFit FitNomoto(const PreparedData& prepared, const std::string& rate,
     fit.notes.push_back("output error: T at its lower bound " + FormatNumber(min_t) + " s");
   if (!fit.converged) fit.notes.push_back("output error: " + fit.termination);
 
-  ceres::Covariance covariance{ceres::Covariance::Options{}};
-  const std::vector<std::pair<const double*, const double*>> blocks = {{p, p}};
-  if (covariance.Compute(blocks, &problem)) {
-    double c[9];
-    covariance.GetCovarianceBlock(p, p, c);
-    // The residuals are in units of sd(r): scaled by the residual variance per degree of freedom.
-    const std::vector<double> sd = ParameterSds(c, 3, summary);
-    fit.sd_K = sd[0];
-    fit.sd_T = sd[1];
-    fit.sd_delta0 = sd[2];
-  } else {
-    fit.notes.push_back("output error: covariance not available (standard deviations 0)");
-  }
+  AddParameterSds(problem, p, summary, fit);
   fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return fit;
 }
