@@ -57,6 +57,78 @@ void ReportProgress(const CsvReadOptions& options, std::uint64_t done, std::uint
   next = done + total / 10;
 }
 
+// A row of as many cells as the header, else an error at its first missing or extra cell.
+void CheckRowWidth(const CsvRow& row, size_t ncol, const std::string& file) {
+  if (row.fields.size() == ncol) return;
+  const bool shorter = row.fields.size() < ncol;
+  const int column = shorter ? row.end_column : row.fields[ncol].column;
+  throw InputError(Located(file, row.line, column,
+                           std::string(shorter ? "short" : "long") +
+                               " row: " + std::to_string(row.fields.size()) +
+                               " cells, the header has " + std::to_string(ncol)));
+}
+
+// Cell `f` of row `row` into row n of its column: a number, a gap (empty, not in t), or the
+// first text of a column that has held no number yet (a text column: a mode, a comment, refused
+// only by a command that needs it as a number, Dataset::Get); anything else is an error.
+void ReadCell(ColumnBuilder& col, const CsvField& f, const CsvRow& row, Eigen::Index n,
+              bool is_time, const std::string& file) {
+  const ParsedNumber p = ParseNumber(f.text);
+  if (p.status == NumberStatus::kEmpty && !is_time) {
+    col.sampled(n) = false;
+    col.values(n) = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  if (p.status != NumberStatus::kOk) {
+    if (p.status == NumberStatus::kNotANumber && !col.numeric && !is_time) {
+      const std::string where =
+          file + ":" + std::to_string(row.line) + ":" + std::to_string(f.column);
+      col.text = Dataset::TextColumn{col.name, where, f.text};
+      col.values = Eigen::VectorXd();
+      col.sampled = Eigen::Array<bool, Eigen::Dynamic, 1>();
+      return;
+    }
+    throw InputError(
+        Located(file, row.line, f.column,
+                "column '" + col.name + "': " + DescribeNumberStatus(p.status, f.text)));
+  }
+  col.numeric = true;
+  col.sampled(n) = true;
+  col.values(n) = p.value;
+}
+
+// t at row n after row n - 1, else an error naming both.
+void CheckTimeIncreases(const Eigen::VectorXd& t, Eigen::Index n, const CsvRow& row, int column,
+                        const std::string& file) {
+  if (n == 0 || t(n) > t(n - 1)) return;
+  const bool equal = t(n) == t(n - 1);
+  throw InputError(Located(file, row.line, column,
+                           "t = " + FormatNumber(t(n)) + (equal ? " repeats" : " goes back from") +
+                               " the previous t = " + FormatNumber(t(n - 1)) +
+                               "; t must be strictly increasing (usvid import repairs such logs)"));
+}
+
+// The columns' first n rows as a dataset on t (column t_col).
+Dataset Assemble(std::vector<ColumnBuilder>& columns, size_t t_col, Eigen::Index n,
+                 const std::string& file) {
+  ColumnBuilder& time = columns[t_col];
+  time.values.conservativeResize(n);
+  Dataset data(std::move(time.values));
+  for (size_t c = 0; c < columns.size(); ++c) {
+    ColumnBuilder& col = columns[c];
+    if (c == t_col) continue;
+    if (col.text) {
+      data.AddTextColumn(std::move(*col.text));
+      continue;
+    }
+    col.values.conservativeResize(n);
+    col.sampled.conservativeResize(n);
+    data.Set(col.name, std::move(col.values), std::move(col.sampled));
+  }
+  data.metadata()["source"] = file;
+  return data;
+}
+
 template <typename Lines>
 Dataset ParseLines(Lines& lines, const CsvReadOptions& options) {
   const std::string& file = lines.file();
@@ -90,77 +162,18 @@ Dataset ParseLines(Lines& lines, const CsvReadOptions& options) {
   Eigen::Index n = 0;
   std::uint64_t next_progress = lines.size() / 10;
   while (next_row()) {
-    if (row.fields.size() != ncol) {
-      const bool shorter = row.fields.size() < ncol;
-      const int column = shorter ? row.end_column : row.fields[ncol].column;
-      throw InputError(Located(file, row.line, column,
-                               std::string(shorter ? "short" : "long") +
-                                   " row: " + std::to_string(row.fields.size()) +
-                                   " cells, the header has " + std::to_string(ncol)));
-    }
+    CheckRowWidth(row, ncol, file);
     if (n >= capacity)  // a log still being written
       throw InputError(Located(file, row.line, 0, "the file grew while it was read"));
-    for (size_t c = 0; c < ncol; ++c) {
-      ColumnBuilder& col = columns[c];
-      if (col.text) continue;
-      const CsvField& f = row.fields[c];
-      const ParsedNumber p = ParseNumber(f.text);
-      const bool is_time = c == t_col;
-      if (p.status == NumberStatus::kEmpty && !is_time) {
-        col.sampled(n) = false;
-        col.values(n) = std::numeric_limits<double>::quiet_NaN();
-        continue;
-      }
-      if (p.status != NumberStatus::kOk) {
-        // Text where the column has held no number yet: a text column (a mode, a comment),
-        // refused only by a command that needs it as a number (Dataset::Get).
-        if (p.status == NumberStatus::kNotANumber && !col.numeric && !is_time) {
-          const std::string where =
-              file + ":" + std::to_string(row.line) + ":" + std::to_string(f.column);
-          col.text = Dataset::TextColumn{col.name, where, f.text};
-          col.values = Eigen::VectorXd();
-          col.sampled = Eigen::Array<bool, Eigen::Dynamic, 1>();
-          continue;
-        }
-        throw InputError(
-            Located(file, row.line, f.column,
-                    "column '" + col.name + "': " + DescribeNumberStatus(p.status, f.text)));
-      }
-      col.numeric = true;
-      col.sampled(n) = true;
-      col.values(n) = p.value;
-    }
-    const Eigen::VectorXd& t = columns[t_col].values;
-    if (n > 0 && t(n) <= t(n - 1)) {
-      const bool equal = t(n) == t(n - 1);
-      throw InputError(
-          Located(file, row.line, row.fields[t_col].column,
-                  "t = " + FormatNumber(t(n)) + (equal ? " repeats" : " goes back from") +
-                      " the previous t = " + FormatNumber(t(n - 1)) +
-                      "; t must be strictly increasing (usvid import repairs such logs)"));
-    }
+    for (size_t c = 0; c < ncol; ++c)
+      if (!columns[c].text) ReadCell(columns[c], row.fields[c], row, n, c == t_col, file);
+    CheckTimeIncreases(columns[t_col].values, n, row, row.fields[t_col].column, file);
     ++n;
     ReportProgress(options, lines.bytes_read(), lines.size(), n, next_progress);
   }
   if (n == 0) throw InputError(Located(file, header.line, 0, "header only, no data rows"));
   if (options.progress) options.progress(1.0, n);
-
-  ColumnBuilder& time = columns[t_col];
-  time.values.conservativeResize(n);
-  Dataset data(std::move(time.values));
-  for (size_t c = 0; c < ncol; ++c) {
-    ColumnBuilder& col = columns[c];
-    if (c == t_col) continue;
-    if (col.text) {
-      data.AddTextColumn(std::move(*col.text));
-      continue;
-    }
-    col.values.conservativeResize(n);
-    col.sampled.conservativeResize(n);
-    data.Set(col.name, std::move(col.values), std::move(col.sampled));
-  }
-  data.metadata()["source"] = file;
-  return data;
+  return Assemble(columns, t_col, n, file);
 }
 
 }  // namespace
