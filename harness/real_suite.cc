@@ -208,31 +208,53 @@ std::string WholeRunOf(const std::string& file) {
   return "";
 }
 
-// A track's training runs for cross-validation: each training file an entry of its own, named as
-// ExpandCrossValidation names a file of an entry of several, read as the test runs are (their
-// end_at_stop) and given the maneuver its record holds when its folder holds tests, as a further
-// run is (ManeuverOfFurtherRun).
+// An entry's files, each a run of its own: named as ExpandCrossValidation names a file of an
+// entry of several, ended at `end_at_stop` unless the entry says otherwise (null: as given), and
+// given the maneuver its record holds when its folder holds tests, as a further run is
+// (ManeuverOfFurtherRun).
+std::vector<nlohmann::json> RunsOfEntry(const TrackSpec& spec, const fs::path& data_dir,
+                                        const nlohmann::json& entry,
+                                        const nlohmann::json& end_at_stop = nullptr) {
+  std::vector<nlohmann::json> runs;
+  const std::vector<std::string> files = FilesOf(entry);
+  for (const std::string& f : files) {
+    nlohmann::json run = entry;
+    run["file"] = f;
+    if (files.size() > 1)
+      run["name"] = entry["name"].get<std::string>() + ": " + fs::path(f).stem().string();
+    if (!end_at_stop.is_null() && !run.contains("end_at_stop")) run["end_at_stop"] = end_at_stop;
+    const int folder = FolderOf(spec, data_dir, f);
+    if (!run.contains("maneuver") && folder >= 0)
+      if (const std::string m = ManeuverOfFurtherRun(run, spec.folders[folder]); !m.empty())
+        run["maneuver"] = m;
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
+// A track's training runs for cross-validation: each training file a run (RunsOfEntry), ended as
+// the test runs are (their end_at_stop).
 nlohmann::json TrainingRunsOf(const TrackSpec& spec, const fs::path& data_dir,
                               const nlohmann::json& suite) {
   const nlohmann::json like = ReadKeys(spec, suite);
   nlohmann::json train = nlohmann::json::array();
-  for (const nlohmann::json& entry : suite["data"]["train"]) {
-    const std::vector<std::string> files = FilesOf(entry);
-    for (const std::string& f : files) {
-      nlohmann::json run = entry;
-      run["file"] = f;
-      if (files.size() > 1)
-        run["name"] = entry["name"].get<std::string>() + ": " + fs::path(f).stem().string();
-      if (like.contains("end_at_stop") && !run.contains("end_at_stop"))
-        run["end_at_stop"] = like["end_at_stop"];
-      const int folder = FolderOf(spec, data_dir, f);
-      if (!run.contains("maneuver") && folder >= 0)
-        if (const std::string m = ManeuverOfFurtherRun(run, spec.folders[folder]); !m.empty())
-          run["maneuver"] = m;
-      train.push_back(run);
-    }
-  }
+  for (const nlohmann::json& entry : suite["data"]["train"])
+    for (nlohmann::json& run :
+         RunsOfEntry(spec, data_dir, entry, like.value("end_at_stop", nlohmann::json())))
+      train.push_back(std::move(run));
   return train;
+}
+
+// A suite's method entry's name: the entry itself, or its "method".
+std::string MethodName(const nlohmann::json& m) {
+  return m.is_string() ? m.get<std::string>() : m.value("method", "");
+}
+
+// diagnose and hybrid search and refit the vessel for each candidate: hundreds of seconds a fit
+// on joined runs.
+bool SearchesTheVessel(const nlohmann::json& m) {
+  const std::string name = MethodName(m);
+  return name == kDiagnoseMethod || name == hybrid::kMethodName;
 }
 
 // Leaves out of `suite`'s runs every cut copy of a run it holds whole (trained on while the whole
@@ -277,17 +299,15 @@ size_t DropCutCopies(nlohmann::json& suite, std::vector<std::string>& notes) {
 // at most kCrossValidationFitRows, spread over all the fold's runs (methods/refit/typed_refit.h).
 nlohmann::json CrossValidatedMethods(const nlohmann::json& given, std::vector<std::string>& notes) {
   nlohmann::json methods = nlohmann::json::array();
-  for (const nlohmann::json& m : given) {
-    const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
-    if (name != kDiagnoseMethod && name != hybrid::kMethodName) methods.push_back(m);
-  }
+  for (const nlohmann::json& m : given)
+    if (!SearchesTheVessel(m)) methods.push_back(m);
   if (methods.size() < given.size())
     notes.push_back(
         "diagnose and hybrid left out of the cross-validation: each fits for 200-500 s on the "
         "joined runs, once per fold (they run in the suite without --cv)");
   bool capped = false;
   for (nlohmann::json& m : methods) {
-    const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
+    const std::string name = MethodName(m);
     if (name != kRefitMethodName) continue;
     if (m.is_string()) m = nlohmann::json{{"method", name}};
     const long rows = m.value("fit_rows", kCeresFitRows);
@@ -524,13 +544,10 @@ struct TankRuns {
   std::string tank;
   std::optional<size_t> track;  // its track's index among the gathered ones
   nlohmann::json shared = nlohmann::json::array(), further = nlohmann::json::array();
-  nlohmann::json methods;
-  std::vector<std::string> notes;
 };
 
 TankRuns TankRunsOf(const std::string& tank, const TrackSpec& spec, const nlohmann::json& suite,
-                    const std::vector<nlohmann::json>& further, const fs::path& data_dir,
-                    const std::string& cv) {
+                    size_t further, const fs::path& data_dir) {
   TankRuns runs;
   runs.tank = tank;
   auto named = [&](nlohmann::json run) {
@@ -538,32 +555,20 @@ TankRuns TankRunsOf(const std::string& tank, const TrackSpec& spec, const nlohma
     if (name.find(runs.tank) == std::string::npos) run["name"] = runs.tank + " " + name;
     return run;
   };
-  const size_t n_further = cv.empty() ? further.size() : 0;  // cross-validated: runs like any
   for (const char* part : {"train", "test"}) {
     const nlohmann::json& entries = suite["data"].value(part, nlohmann::json::array());
-    const size_t shared = std::string(part) == "test" ? entries.size() - n_further : entries.size();
+    const size_t shared = std::string(part) == "test" ? entries.size() - further : entries.size();
     for (size_t i = 0; i < entries.size(); ++i) {
       if (i >= shared) {
         runs.further.push_back(named(entries[i]));
         continue;
       }
-      const std::vector<std::string> files = FilesOf(entries[i]);
-      for (const std::string& f : files) {
-        nlohmann::json run = entries[i];
-        run["file"] = f;
-        if (files.size() > 1)  // as a cross-validated track names the runs of such an entry
-          run["name"] = run["name"].get<std::string>() + ": " + fs::path(f).stem().string();
-        // A shared run trains: it keeps the maneuver its record holds, for the methods that
-        // choose among their models by re-running the training runs' tests (grey-box GP).
-        const int folder = FolderOf(spec, data_dir, f);
-        if (!run.contains("maneuver") && folder >= 0)
-          if (const std::string m = ManeuverOfFurtherRun(run, spec.folders[folder]); !m.empty())
-            run["maneuver"] = m;
-        runs.shared.push_back(named(run));
-      }
+      // A shared run trains: with the maneuver its record holds, for the methods that choose
+      // among their models by re-running the training runs' tests (grey-box GP).
+      for (nlohmann::json& run : RunsOfEntry(spec, data_dir, entries[i]))
+        runs.shared.push_back(named(std::move(run)));
     }
   }
-  runs.methods = suite["methods"];
   return runs;
 }
 
@@ -598,9 +603,8 @@ void AddTwoTankTrack(const TankRuns& marin, const TankRuns& hsva, const std::str
   if (!further.empty()) suite["data"]["test"] = further;
   nlohmann::json methods = nlohmann::json::array();
   bool grey_box = false;
-  for (const nlohmann::json& m : marin.methods) {
-    const std::string name = m.is_string() ? m.get<std::string>() : m.value("method", "");
-    if (name == kDiagnoseMethod || name == hybrid::kMethodName) continue;
+  for (const nlohmann::json& m : g.suites[*marin.track]["methods"]) {
+    if (SearchesTheVessel(m)) continue;
     if (cross_validated && IsGreyBoxGp(m)) {
       grey_box = true;
       continue;
@@ -626,7 +630,7 @@ void AddTwoTankTrack(const TankRuns& marin, const TankRuns& hsva, const std::str
                                   : ""));
   std::set<std::string> said;
   for (const TankRuns* tank : {&marin, &hsva})
-    for (const std::string& note : tank->notes)
+    for (const std::string& note : g.tracks[*tank->track].notes)
       if (!note.starts_with("leave-one-run-out") && !note.starts_with("diagnose and hybrid") &&
           said.insert(note).second)
         track.notes.push_back(tank->tank + ": " + note);
@@ -689,9 +693,10 @@ void AddBuiltInTracks(const std::string& data_dir, const std::string& cv,
     if (spec.name == "kvlcc2" || spec.name == "kvlcc2-hsva") {
       const bool at_marin = spec.name == "kvlcc2";
       TankRuns& tank = at_marin ? marin_runs : hsva_runs;
-      tank = TankRunsOf(at_marin ? "MARIN" : "HSVA", spec, suite, further, data_dir, cv);
+      // Cross-validated, the further runs are runs like any (PrepareCrossValidation).
+      tank = TankRunsOf(at_marin ? "MARIN" : "HSVA", spec, suite, cv.empty() ? further.size() : 0,
+                        data_dir);
       tank.track = g.tracks.size();
-      tank.notes = track.notes;
     }
     g.suites.push_back(std::move(suite));
     g.tracks.push_back(std::move(track));
