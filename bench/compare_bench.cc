@@ -4,6 +4,7 @@
 // (goal: under 10 minutes on 2 cores) is timed by `time usvid compare` in docs/performance.md.
 #include <benchmark/benchmark.h>
 
+#include "harness/embedded_suites.h"
 #include "harness/run_suite.h"
 #include "harness/suite.h"
 
@@ -11,7 +12,7 @@ namespace usvid {
 namespace {
 
 void BM_CompareQuick(benchmark::State& state) {
-  const Suite suite = DefaultSuite(true);
+  const Suite suite = LoadEmbeddedSuite("quick");
   size_t rows = 0;
   for (auto _ : state) rows = RunSuite(suite, static_cast<int>(state.range(0))).size();
   state.counters["rows"] = static_cast<double>(rows);

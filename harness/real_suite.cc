@@ -44,9 +44,11 @@ struct RunFormat {
 
 struct TrackSpec {
   std::string name;
-  std::string json;
+  // A built-in track's embedded file, by its path in the repository (harness/embedded_suites.h):
+  // a suite (.json), or a track file (.yaml) read as its folder's track.yaml would be.
+  std::string file;
   std::vector<RunFolder> folders;
-  std::vector<RunFormat> formats;
+  std::vector<RunFormat> formats{};
   // Trained in one tank and scored in another: not cross-validated over its runs (its folds would
   // mix the tanks), and skipped, with a note, when either tank's folder is absent.
   bool cross_facility = false;
@@ -54,10 +56,8 @@ struct TrackSpec {
   // harness/tracks/): cross-validated unless its track file splits the runs.
   bool from_track_file = false;
   bool split = true;
-  nlohmann::json read;  // the keys its runs are read with; a built-in track's first test's
-  // A built-in track given as a track file: its text and its vessel file's, embedded.
-  std::string track_yaml;
-  std::string vessel_file;
+  nlohmann::json read;        // the keys its runs are read with; a built-in track's first test's
+  std::string vessel_file{};  // a built-in track file's vessel, embedded (a path as `file`)
 };
 
 // The keys a track's further runs are read with (format, column map, end, scale, rate).
@@ -70,22 +70,25 @@ const nlohmann::json& ReadKeys(const TrackSpec& spec, const nlohmann::json& suit
 // the two tanks each train the model the other scores (the cross-facility tracks).
 const std::vector<TrackSpec>& Tracks() {
   static const std::vector<TrackSpec> tracks = {
-      {.name = "kvlcc2", .folders = {{"kvlcc2-marin", ""}}, .track_yaml = kRealKvlcc2TrackYaml},
+      {.name = "kvlcc2", .file = "harness/tracks/kvlcc2.yaml", .folders = {{"kvlcc2-marin", ""}}},
       {.name = "esso-osaka",
+       .file = "harness/tracks/esso-osaka.yaml",
        .folders = {{"esso-osaka", ""}},
-       .track_yaml = kRealEssoOsakaTrackYaml,
-       .vessel_file = "esso-osaka.yaml"},
-      {"kvlcc2-hsva", kRealKvlcc2HsvaSuiteJson, {{"kvlcc2-hsva", "any"}}, {{".dat", ""}}},
-      {"kvlcc2-hsva-to-marin",
-       kRealKvlcc2HsvaToMarinSuiteJson,
-       {{"kvlcc2-marin", "any"}},
-       {{".dat", ""}},
-       true},
-      {"kvlcc2-marin-to-hsva",
-       kRealKvlcc2MarinToHsvaSuiteJson,
-       {{"kvlcc2-hsva", "any"}},
-       {{".dat", ""}},
-       true}};
+       .vessel_file = "docs/vessels/files/esso-osaka.yaml"},
+      {.name = "kvlcc2-hsva",
+       .file = "harness/suites/real-kvlcc2-hsva.json",
+       .folders = {{"kvlcc2-hsva", "any"}},
+       .formats = {{".dat", ""}}},
+      {.name = "kvlcc2-hsva-to-marin",
+       .file = "harness/suites/real-kvlcc2-hsva-to-marin.json",
+       .folders = {{"kvlcc2-marin", "any"}},
+       .formats = {{".dat", ""}},
+       .cross_facility = true},
+      {.name = "kvlcc2-marin-to-hsva",
+       .file = "harness/suites/real-kvlcc2-marin-to-hsva.json",
+       .folders = {{"kvlcc2-hsva", "any"}},
+       .formats = {{".dat", ""}},
+       .cross_facility = true}};
   return tracks;
 }
 
@@ -96,13 +99,6 @@ const std::string* FormatOf(const TrackSpec& spec, const fs::path& path) {
     if (path.extension() == f.extension) return &f.format;
   return nullptr;
 }
-
-// The embedded vessel files a track may name as "@FILE".
-struct EmbeddedVessel {
-  const char* name;
-  const char* text;
-};
-const EmbeddedVessel kVessels[] = {{"esso-osaka.yaml", kEssoOsakaVesselYaml}};
 
 std::vector<std::string> FilesOf(const nlohmann::json& entry) {
   const nlohmann::json& f = entry.at("file");
@@ -492,32 +488,19 @@ bool VesselFolderTrack(const fs::path& path, const fs::path& data_dir, TrackSpec
 // file of its folder in `data_dir`, the embedded vessel named "@FILE".
 void BuiltInTrack(const TrackSpec& built_in, const fs::path& data_dir, TrackSpec& spec,
                   nlohmann::json& suite) {
-  if (built_in.track_yaml.empty()) {
+  const std::string_view text = EmbeddedText(built_in.file);
+  if (!built_in.file.ends_with(".yaml")) {
     spec = built_in;
-    suite = nlohmann::json::parse(built_in.json, nullptr, true, /*ignore_comments=*/true);
+    suite = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
     return;
   }
   const fs::path path = data_dir / built_in.folders[0].path;
-  TrackFile track = ReadBuiltInTrack(
-      built_in.track_yaml, "harness/tracks/" + built_in.name + ".yaml (built in)", path.string());
+  TrackFile track =
+      ReadBuiltInTrack(std::string(text), built_in.file + " (built in)", path.string());
   if (!built_in.vessel_file.empty()) track.vessel = "@" + built_in.vessel_file;
   spec = SpecOfTrack(track, path, data_dir);
   suite = SuiteOfTrack(track, path.lexically_relative(data_dir), {}, data_dir);
 }
-
-}  // namespace
-
-const std::vector<std::string>& EmbeddedSuiteNames() {
-  static const std::vector<std::string> names = {"default", "quick", "realistic", "real",
-                                                 "realistic-measured"};
-  return names;
-}
-
-bool IsSuiteName(const std::string& suite) {
-  return suite.find('/') == std::string::npos && suite.find('.') == std::string::npos;
-}
-
-namespace {
 
 // What the real suite found in a data folder: its tracks, each with its suite, and what it left
 // out and why.
@@ -748,18 +731,16 @@ void AddVesselFolderTracks(const std::string& data_dir, const std::string& cv,
   }
 }
 
-// The embedded vessel files a track names ("@FILE") written to `vessel_dir`, and named there.
+// The embedded vessel files a track names ("@PATH", its path in the repository) written to
+// `vessel_dir` under their file names, and named there.
 void WriteEmbeddedVessels(nlohmann::json& suite, const std::string& vessel_dir) {
   for (nlohmann::json& vessel : suite["vessels"]) {
     const std::string name = vessel.get<std::string>();
     if (!name.starts_with("@")) continue;
-    for (const EmbeddedVessel& v : kVessels)
-      if (name.substr(1) == v.name) {
-        EnsureOutputDirectory(vessel_dir);
-        const std::string path = (fs::path(vessel_dir) / v.name).string();
-        WriteFileAtomically(path, v.text);
-        vessel = path;
-      }
+    EnsureOutputDirectory(vessel_dir);
+    const std::string path = (fs::path(vessel_dir) / fs::path(name.substr(1)).filename()).string();
+    WriteFileAtomically(path, std::string(EmbeddedText(name.substr(1))));
+    vessel = path;
   }
 }
 

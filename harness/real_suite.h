@@ -36,12 +36,6 @@ struct SuiteTrack {
   std::vector<std::string> notes;
 };
 
-// The names `usvid compare --suite` takes besides a file: default, quick, realistic and real.
-const std::vector<std::string>& EmbeddedSuiteNames();
-
-// Whether `suite` names an embedded suite rather than a file: no '/' and no '.' in it.
-bool IsSuiteName(const std::string& suite);
-
 // The real suite's tracks on the files of `data_dir`. The embedded vessel files are written to
 // `vessel_dir` (created), and the tracks name them there. `cv`: "" or the cross-validation's kind
 // ("runs"). Throws InputError, one line naming the folder and the files it lacks, when a track's

@@ -13,7 +13,6 @@
 #include "effects/effect.h"
 #include "effects/effect_values.h"
 #include "harness/cross_validation.h"
-#include "harness/embedded_suites.h"
 #include "maneuvers/maneuver_factory.h"
 #include "methods/registry.h"
 #include "preprocessing/derivative.h"
@@ -386,19 +385,6 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
     (std::string(key) == "train_seconds" ? s.train_seconds : s.test_seconds) = v[key].get<double>();
   }
   return s;
-}
-
-Suite DefaultSuite(bool quick) {
-  const char* text = quick ? kQuickSuiteJson : kDefaultSuiteJson;
-  return ParseSuite(nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true),
-                    "default suite");
-}
-
-Suite RealisticSuite(bool measured) {
-  return ParseSuite(
-      nlohmann::json::parse(measured ? kRealisticMeasuredSuiteJson : kRealisticSuiteJson, nullptr,
-                            true, /*ignore_comments=*/true),
-      measured ? "realistic-measured suite" : "realistic suite");
 }
 
 nlohmann::json SuiteToJson(const Suite& s) {

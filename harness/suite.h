@@ -127,17 +127,6 @@ bool IsSharedSuiteKey(const std::string& key);
 
 // Relative data paths are taken from the folder of `file`.
 Suite ParseSuite(const nlohmann::json& value, const std::string& file);
-// The embedded default (harness/suites/default.json): odin3dof and odin-hs; trained on zig-zag
-// and random steps, tested on those and the step grid; nominal, gp, sindy, fossen-ceres and
-// eb-lr; two noise levels; four seeds. `quick` (quick.json): the same vessels, maneuvers and
-// methods with one noise level, one seed, shorter records and a smaller GP search.
-Suite DefaultSuite(bool quick);
-// The embedded realistic suite (harness/suites/realistic.json, docs/compare.md#realistic): the
-// default suite's vessels under an unmeasured current and gusty wind, waves, a gyro bias, saturated
-// actuators, an IMU at 50 Hz and a GPS at 5 Hz with dropouts, trained under a heading autopilot.
-// `measured`: its measured track (harness/suites/realistic-measured.json), the same records with
-// the wind and the current logged, and the equation methods reading them.
-Suite RealisticSuite(bool measured = false);
 nlohmann::json SuiteToJson(const Suite& suite);
 
 // The fits a suite needs: every method on every training maneuver of every vessel that can run

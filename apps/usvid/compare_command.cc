@@ -21,13 +21,14 @@
 #include "core/json_file.h"
 #include "harness/cross_validation.h"
 #include "harness/distributed_run.h"
+#include "harness/embedded_suites.h"
 #include "harness/ranks.h"
 #include "harness/real_suite.h"
-#include "harness/smoke_suite.h"
 #include "harness/regression.h"
 #include "harness/report.h"
 #include "harness/results.h"
 #include "harness/run_suite.h"
+#include "harness/smoke_suite.h"
 
 namespace usvid {
 namespace {
@@ -134,30 +135,25 @@ void RunRealSuite(const CompareOptions& o) {
 
 void RunCompare(const CompareOptions& o) {
   if (o.quick && !o.suite.empty() && !IsSuiteName(o.suite))
-    throw InputError("compare: --quick makes an embedded suite seconds-long; a suite file sets "
-                     "its own size (give --suite FILE without --quick)");
+    throw InputError(
+        "compare: --quick makes an embedded suite seconds-long; a suite file sets "
+        "its own size (give --suite FILE without --quick)");
   if (!o.cv.empty() && o.cv != kCrossValidationRuns)
     throw InputError("compare: --cv '" + o.cv + "' is unknown (known: " + kCrossValidationRuns +
                      ", leave one run out)");
   if (o.suite == "real") return RunRealSuite(o);
-  const bool simulated = o.suite.empty() || o.suite == "default" || o.suite == "quick" ||
-                         o.suite == "realistic" || o.suite == "realistic-measured";
-  if (!o.cv.empty() && simulated)
+  const EmbeddedSuite* embedded = FindEmbeddedSuite(o.suite.empty() ? "default" : o.suite);
+  if (!o.cv.empty() && embedded != nullptr)
     throw InputError("compare: --cv " + o.cv + ": suite '" +
                      (o.suite.empty() ? std::string(o.quick ? "quick" : "default") : o.suite) +
                      "' is simulated and has no runs to leave out (a suite on measured data has; "
                      "docs/compare.md#cross-validation-over-runs)");
+  if (embedded == nullptr && IsSuiteName(o.suite))
+    throw InputError("compare: --suite '" + o.suite + "' is no embedded suite (" +
+                     EmbeddedSuiteNames() + ") and no suite file (a path with .json)");
   Suite suite;
-  if (o.suite.empty() || o.suite == "default" || o.suite == "quick") {
-    suite = DefaultSuite(o.quick || o.suite == "quick");
-  } else if (o.suite == "realistic" || o.suite == "realistic-measured") {
-    suite = RealisticSuite(o.suite == "realistic-measured");
-    if (o.quick) suite = SmokeVariant(std::move(suite));
-  } else if (IsSuiteName(o.suite)) {
-    std::string names;
-    for (const std::string& n : EmbeddedSuiteNames()) names += (names.empty() ? "" : ", ") + n;
-    throw InputError("compare: --suite '" + o.suite + "' is no embedded suite (" + names +
-                     ") and no suite file (a path with .json)");
+  if (embedded != nullptr) {
+    suite = LoadEmbeddedSuite(*embedded, o.quick);
   } else {
     nlohmann::json json = ReadJsonFile(o.suite, JsonComments::kAllowed);
     if (!o.cv.empty() && json.is_object()) json["cv"] = o.cv;
@@ -179,10 +175,7 @@ void AddCompareCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "compare", "The benchmark: methods x maneuvers x vessels x noise x seeds, held-out scores");
   cmd->add_option("--suite", o->suite,
-                  "A suite JSON file, or an embedded suite: default (the default), quick, "
-                  "realistic (the sea and sensors of a real trial), realistic-measured (the same "
-                  "with the wind and the current logged), or real (the measured data of "
-                  "--data-dir)");
+                  "A suite JSON file, or an embedded suite: " + EmbeddedSuitesHelp());
   cmd->add_option("--data-dir", o->data_dir,
                   "The measured data of --suite real (default ../shared/data); absent, the suite "
                   "is skipped");

@@ -12,12 +12,14 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "core/csv_tokenizer.h"
 #include "core/json_file.h"
+#include "harness/embedded_suites.h"
 #include "tests/apps/run_usvid.h"
 
 namespace usvid {
@@ -67,6 +69,16 @@ TEST(EmbeddedSuitesSmokeTest, RealisticScoresEveryRow) {
 
 TEST(EmbeddedSuitesSmokeTest, RealisticMeasuredScoresEveryRow) {
   ExpectNoRowRefused("--suite realistic-measured --quick");
+}
+
+// Every other row of the embedded suites' table (harness/embedded_suites.h) runs here, so that a
+// suite added as a file and a row runs in CI with nothing more.
+TEST(EmbeddedSuitesSmokeTest, EveryOtherSimulatedSuiteScoresEveryRow) {
+  const std::set<std::string_view> own_tests = {"default", "quick", "realistic",
+                                                "realistic-measured", "real"};
+  for (const EmbeddedSuite& suite : EmbeddedSuites())
+    if (!own_tests.contains(suite.name))
+      ExpectNoRowRefused("--suite " + std::string(suite.name) + " --quick");
 }
 
 TEST(EmbeddedSuitesSmokeTest, RealScoresEveryRowOfEveryTrack) {

@@ -23,7 +23,7 @@ TEST(RealSuiteCliTest, AnUnknownSuiteNameIsRefusedNamingTheEmbeddedOnes) {
   EXPECT_THAT(
       r.err,
       HasSubstr(
-          "'realistc' is no embedded suite (default, quick, realistic, real, realistic-measured)"));
+          "'realistc' is no embedded suite (default, quick, realistic, realistic-measured, eb2dof, real)"));
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 

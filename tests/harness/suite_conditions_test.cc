@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "harness/embedded_suites.h"
 #include "harness/run_suite.h"
 #include "harness/suite.h"
 
@@ -128,7 +129,7 @@ TEST(SuiteConditionsTest, WavesAndDropoutsReachTheRecords) {
 // trial in every record of both vessels, trains under the autopilot and on random steps, and
 // keeps twelve paired cells per vessel and training maneuver for the verdict's tests.
 TEST(SuiteConditionsTest, TheRealisticSuiteHasTheSeaAndTheSensorsOfATrial) {
-  const Suite s = RealisticSuite();
+  const Suite s = LoadEmbeddedSuite("realistic");
   EXPECT_EQ(s.name, "realistic");
   EXPECT_EQ(s.vessels, (std::vector<std::string>{"odin3dof", "odin-hs"}));
   EXPECT_EQ(s.train_maneuvers, (std::vector<std::string>{"autopilot", "random-steps"}));
@@ -145,8 +146,8 @@ TEST(SuiteConditionsTest, TheRealisticSuiteHasTheSeaAndTheSensorsOfATrial) {
 // the current logged, and nothing else changed: its records are the same runs with more
 // channels, so the two tracks' cells pair.
 TEST(SuiteConditionsTest, TheMeasuredTrackIsTheRealisticSuiteWithTheWindAndTheCurrentLogged) {
-  nlohmann::json measured = SuiteToJson(RealisticSuite(true));
-  nlohmann::json unmeasured = SuiteToJson(RealisticSuite());
+  nlohmann::json measured = SuiteToJson(LoadEmbeddedSuite("realistic-measured"));
+  nlohmann::json unmeasured = SuiteToJson(LoadEmbeddedSuite("realistic"));
   EXPECT_EQ(measured["name"], "realistic-measured");
   EXPECT_EQ(measured["logged"], nlohmann::json({"wind", "current"}));
   for (nlohmann::json* j : {&measured, &unmeasured}) {
