@@ -6,6 +6,7 @@
 #include <nlopt.hpp>
 #include <vector>
 
+#include "maneuvers/maneuver_spec.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid::design {
@@ -16,16 +17,23 @@ struct Knobs {
   bool integer = false;  // counts: each point is rounded to whole numbers
 };
 
-std::optional<Knobs> KnobsOf(const std::string& family, const VesselInfo& info) {
-  if (family == "zigzag") {
-    const double full = info.actuation.yaw_is_angle ? info.actuation.yaw_full_deg : 35.0;
-    return Knobs{{5.0, 5.0}, {std::max(5.5, full), 40.0}};
+std::optional<Knobs> KnobsOf(ManeuverKind family, const VesselInfo& info) {
+  switch (family) {
+    case ManeuverKind::kZigzag: {
+      const double full = info.actuation.yaw_is_angle ? info.actuation.yaw_full_deg : 35.0;
+      return Knobs{{5.0, 5.0}, {std::max(5.5, full), 40.0}};
+    }
+    case ManeuverKind::kStepGrid:
+      return Knobs{{2.0, 1.0}, {8.0, 5.0}, true};
+    case ManeuverKind::kRandomSteps:
+      return Knobs{{1.0}, {60.0}};
+    case ManeuverKind::kPrbs:
+      return Knobs{{0.5}, {30.0}};
+    case ManeuverKind::kMultisine:
+      return Knobs{{0.02}, {1.0}};
+    default:
+      return std::nullopt;
   }
-  if (family == "stepgrid") return Knobs{{2.0, 1.0}, {8.0, 5.0}, true};
-  if (family == "random-steps") return Knobs{{1.0}, {60.0}};
-  if (family == "prbs") return Knobs{{0.5}, {30.0}};
-  if (family == "multisine") return Knobs{{0.02}, {1.0}};
-  return std::nullopt;
 }
 
 std::string Spec(const std::string& family, const std::vector<double>& x, bool integer) {
@@ -42,8 +50,9 @@ std::string Spec(const std::string& family, const std::vector<double>& x, bool i
 
 std::optional<ManeuverInformation> OptimizeManeuver(const DesignProblem& problem,
                                                     const std::string& family, int evaluations) {
-  const std::string name = family.substr(0, family.find(':'));
-  const auto knobs = KnobsOf(name, FindVessel(problem.vessel).Info());
+  const ManeuverSpec parsed = ParseManeuverSpec(family);
+  const std::string& name = parsed.name;
+  const auto knobs = KnobsOf(parsed.kind, FindVessel(problem.vessel).Info());
   if (!knobs) return std::nullopt;
   auto objective = [&](const std::vector<double>& x) {
     try {
@@ -57,11 +66,9 @@ std::optional<ManeuverInformation> OptimizeManeuver(const DesignProblem& problem
   opt.set_lower_bounds(knobs->lo);
   opt.set_upper_bounds(knobs->hi);
   opt.set_maxeval(evaluations * static_cast<int>(knobs->lo.size()));
-  opt.set_max_objective(
-      [](const std::vector<double>& x, std::vector<double>&, void* data) {
-        return (*static_cast<decltype(objective)*>(data))(x);
-      },
-      &objective);
+  opt.set_max_objective([](const std::vector<double>& x, std::vector<double>&,
+                           void* data) { return (*static_cast<decltype(objective)*>(data))(x); },
+                        &objective);
   std::vector<double> x(knobs->lo.size());
   for (size_t i = 0; i < x.size(); ++i) x[i] = 0.5 * (knobs->lo[i] + knobs->hi[i]);
   double best = -std::numeric_limits<double>::infinity();

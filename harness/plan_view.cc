@@ -22,13 +22,6 @@ struct Track {
   bool diverged = false;  // drawn, clipped, but not setting the scale
 };
 
-// B of "zigzag:A/B" [deg], 20 when not given, as the replay reads it
-// (metrics/closed_loop_replay.cc).
-double CheckDeg(const std::string& spec) {
-  const ManeuverSpec parsed = ParseManeuverSpec(spec);
-  return parsed.numbers.size() < 2 ? 20.0 : std::abs(parsed.numbers[1]);
-}
-
 // The track's heading turned from its first row [deg], unwrapped.
 Eigen::VectorXd TurnedDeg(const Dataset& run) {
   const Eigen::VectorXd psi = UnwrappedAngle(run["psi"]);
@@ -136,11 +129,13 @@ std::vector<std::string> PlanView(
         // Not replayable (an open-loop model of other inputs): its row says why.
       }
     }
-    const bool zigzag = spec.starts_with("zigzag");
+    const ManeuverSpec parsed = ParseManeuverSpec(spec);
+    const bool zigzag = parsed.kind == ManeuverKind::kZigzag;
     std::vector<std::string> figures = {Plan(title, tracks, !zigzag)};
     if (zigzag)
       figures.push_back(HeadingAndRudder(title, tracks, scorer.rudder(),
-                                         scorer.base_course_offset_rad() * kDeg, CheckDeg(spec)));
+                                         scorer.base_course_offset_rad() * kDeg,
+                                         parsed.CheckDeg()));
     return figures;
   } catch (const InputError&) {
     return {};  // the record does not hold the maneuver as read: no plan to draw

@@ -18,6 +18,7 @@
 #include "harness/cross_validation.h"
 #include "harness/suite_methods.h"
 #include "maneuvers/maneuver_factory.h"
+#include "maneuvers/maneuver_spec.h"
 #include "methods/channel_fit.h"
 #include "methods/identify.h"
 #include "methods/refit/refit.h"
@@ -41,8 +42,7 @@ namespace {
 std::string ForcesFor(const SuiteMethod& method, const std::string& vessel);
 }  // namespace
 
-IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vessel,
-                              uint64_t seed) {
+IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vessel, uint64_t seed) {
   IdentifyRequest r;
   r.method = method.method;
   r.vessel = vessel;
@@ -69,7 +69,7 @@ Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver,
   const VesselSimulator& sim = FindVessel(vessel);
   const VesselInfo& info = sim.Info();
   // A step grid runs until its grid is done.
-  const double duration = maneuver.starts_with("stepgrid") ? 0.0 : seconds;
+  const double duration = KindOfManeuver(maneuver) == ManeuverKind::kStepGrid ? 0.0 : seconds;
   auto m = MakeManeuver(maneuver, info.actuation, duration, seed);
   RunOptions run;
   for (const auto& [_, hz] : ParseRateItems(conditions.sensors))
@@ -296,8 +296,7 @@ ResultRow ScoreOnTest(const Suite& suite, const FitJob& job, const ResultRow& ba
     for (const auto& [horizon, fits] : e.horizon_fit_percent) {
       double horizon_sum = 0.0;
       for (const auto& [state, _] : row.fit_percent) horizon_sum += fits.at(state);
-      row.horizon_fit_percent[horizon] =
-          horizon_sum / static_cast<double>(row.fit_percent.size());
+      row.horizon_fit_percent[horizon] = horizon_sum / static_cast<double>(row.fit_percent.size());
     }
     if (e.valid_prediction_s) row.valid_prediction_s = *e.valid_prediction_s;
     for (const auto& [state, r2] : e.derivative_r2)

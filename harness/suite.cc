@@ -14,6 +14,7 @@
 #include "effects/effect_values.h"
 #include "harness/cross_validation.h"
 #include "maneuvers/maneuver_factory.h"
+#include "maneuvers/maneuver_spec.h"
 #include "methods/registry.h"
 #include "preprocessing/derivative.h"
 #include "preprocessing/waterjet_forces.h"
@@ -93,8 +94,7 @@ void CheckSuiteMethod(const SuiteMethod& method, const std::string& where) {
     try {
       DerivativeMethod::Parse(method.options["derivative"].get<std::string>());
     } catch (const InputError& e) {
-      throw InputError(where + ": method " + method.method + ": option 'derivative': " +
-                       e.what());
+      throw InputError(where + ": method " + method.method + ": option 'derivative': " + e.what());
     }
   }
   if (method.method == kExternalMethod) {
@@ -190,10 +190,9 @@ std::string SuiteMethod::Label() const {
   if (method == kExternalMethod) return options.at("name").get<std::string>();
   // A grey-box fit (GP's corrections to a vessel, docs/gp.md#grey-box) is another model than
   // the method's own: "gp+vessel".
-  const std::string name =
-      options.contains("base") && options.at("base").is_string()
-          ? method + "+" + options.at("base").get<std::string>()
-          : method;
+  const std::string name = options.contains("base") && options.at("base").is_string()
+                               ? method + "+" + options.at("base").get<std::string>()
+                               : method;
   const std::string& option = FindSuiteMethod(method).label_option;
   if (option.empty() || !options.contains(option)) return name;
   const nlohmann::json& value = options.at(option);
@@ -312,8 +311,7 @@ Suite ParseSuite(const nlohmann::json& v, const std::string& file) {
   static const std::set<std::string> kFields = {
       "name",  "vessels",       "train_maneuvers", "test_maneuvers", "methods", "noise",
       "seeds", "train_seconds", "test_seconds",    "data",           "effects", "sensors",
-      "gusts", "waves",         "dropouts",        "logged",         "cv",
-      "pairs"};
+      "gusts", "waves",         "dropouts",        "logged",         "cv",      "pairs"};
   for (const auto& [key, _] : v.items())
     if (!kFields.contains(key)) throw InputError(file + ": unknown field '" + key + "'");
   const bool measured = v.contains("data");
@@ -450,10 +448,9 @@ std::vector<FitJob> FitJobs(const Suite& s) {
   for (const std::string& vessel : s.vessels) {
     const VesselInfo& info = FindVessel(vessel).Info();
     for (const std::string& train : s.train_maneuvers) {
-      if ((train.starts_with("zigzag") || train.starts_with("turning")) &&
-          info.actuation.heading_state < 0)
+      if (IsManeuverTest(train) && info.actuation.heading_state < 0) continue;
+      if (KindOfManeuver(train) == ManeuverKind::kStepGrid && info.actuation.thrust_input < 0)
         continue;
-      if (train.starts_with("stepgrid") && info.actuation.thrust_input < 0) continue;
       for (const SuiteMethod& m : s.methods)
         for (double noise : s.noise)
           for (uint64_t seed : s.seeds) jobs.push_back({vessel, train, m, noise, seed});

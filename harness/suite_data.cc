@@ -15,6 +15,7 @@
 #include "importers/froude_scaling.h"
 #include "importers/hsva_dat.h"
 #include "importers/marin_dat.h"
+#include "maneuvers/maneuver_spec.h"
 #include "preprocessing/heading_rate.h"
 #include "preprocessing/record_end.h"
 
@@ -60,9 +61,10 @@ SuiteData ParseSuiteData(const nlohmann::json& v, const std::string& base_dir,
   d.rate_from = v.value("rate_from", std::string());
   d.end_at_stop = v.value("end_at_stop", std::string());
   d.maneuver = v.value("maneuver", std::string());
-  if (!d.maneuver.empty() && !d.maneuver.starts_with("zigzag") && !d.maneuver.starts_with("turning"))
-    throw InputError(where + ": maneuver '" + d.maneuver +
-                     "': only a zig-zag or a turning circle can be replayed (zigzag:A/B, turning:A)");
+  if (!d.maneuver.empty() && !IsManeuverTest(d.maneuver))
+    throw InputError(
+        where + ": maneuver '" + d.maneuver +
+        "': only a zig-zag or a turning circle can be replayed (zigzag:A/B, turning:A)");
   d.from_s = v.value("from_s", d.from_s);
   d.to_s = v.value("to_s", d.to_s);
   if (!(d.from_s < d.to_s)) throw InputError(where + ": from_s must be before to_s");

@@ -13,10 +13,14 @@
 #include <string>
 
 #include "maneuvers/maneuver.h"
+#include "maneuvers/maneuver_spec.h"
 
 namespace usvid {
 
 std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation& act,
+                                       double duration_s, uint64_t seed);
+// The same from a parsed spec (maneuvers/maneuver_spec.h), a zig-zag about its base course.
+std::unique_ptr<Maneuver> MakeManeuver(const ManeuverSpec& spec, const Actuation& act,
                                        double duration_s, uint64_t seed);
 
 }  // namespace usvid

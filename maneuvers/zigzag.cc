@@ -11,8 +11,13 @@ namespace usvid {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-ZigZag::ZigZag(const Actuation& act, double rudder_deg, double heading_deg, double duration_s)
-    : act_(act), rudder_deg_(rudder_deg), heading_deg_(heading_deg), duration_s_(duration_s) {
+ZigZag::ZigZag(const Actuation& act, double rudder_deg, double heading_deg, double duration_s,
+               double base_offset_rad)
+    : act_(act),
+      rudder_deg_(rudder_deg),
+      heading_deg_(heading_deg),
+      duration_s_(duration_s),
+      base_offset_(base_offset_rad) {
   if (act.heading_state < 0) throw InputError("--maneuver zigzag: the vessel has no heading");
   if (!(rudder_deg != 0 && std::isfinite(rudder_deg) && heading_deg > 0))
     throw InputError(

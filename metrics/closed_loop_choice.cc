@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "maneuvers/maneuver_spec.h"
 #include "metrics/recorded_tests.h"
 #include "metrics/zigzag_response.h"
 #include "simulation/vessel_simulator.h"
@@ -22,7 +23,7 @@ constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 std::vector<RecordedTest> TestRecords(const Dataset& train, const std::string& vessel) {
   std::vector<RecordedTest> out;
   for (RecordedTest& t : RecordedTests(train, vessel, {"zigzag", "turning"}))
-    if (!t.spec.starts_with("zigzag:") ||
+    if (KindOfManeuver(t.spec) != ManeuverKind::kZigzag ||
         ReadZigzagCheck(t.scorer.recorded(), "psi", t.scorer.rudder()).half_swings >= 1)
       out.push_back(std::move(t));
   return out;

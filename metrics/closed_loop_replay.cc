@@ -14,7 +14,6 @@
 #include "maneuvers/maneuver_factory.h"
 #include "maneuvers/maneuver_spec.h"
 #include "maneuvers/true_wind.h"
-#include "maneuvers/zigzag.h"
 #include "metrics/equation_model.h"
 #include "metrics/free_run.h"
 #include "metrics/maneuver_of_record.h"
@@ -202,11 +201,10 @@ ClosedLoopReplay ReplayVesselModel(const nlohmann::json& model, Maneuver& maneuv
           std::isfinite(recorded[info.states[i]](0)))
         options.initial_state[i] = recorded[info.states[i]](0);
   }
-  const SimulationResult r =
-      vessel.simulator->RunManeuver(maneuver, vessel.params,
-                                    ValuesOf(vessel.effects, vessel.simulator->Info().inputs,
-                                             vessel.simulator->Info().states),
-                                    options);
+  const SimulationResult r = vessel.simulator->RunManeuver(
+      maneuver, vessel.params,
+      ValuesOf(vessel.effects, vessel.simulator->Info().inputs, vessel.simulator->Info().states),
+      options);
   ClosedLoopReplay out;
   out.run = r.data;
   out.diverged = r.diverged;
@@ -469,19 +467,15 @@ std::string ErrorKey(const std::string& criterion) {
 
 // turning[:A]: the rudder angle |A| [deg] the execute is found at; 0 (the command's largest)
 // without one.
-double TurningRudderDeg(const std::string& spec) {
-  const ManeuverSpec parsed = ParseManeuverSpec(spec);
-  return parsed.numbers.empty() ? 0.0 : std::abs(parsed.numbers[0]);
+double TurningRudderDeg(const ManeuverSpec& spec) {
+  return spec.numbers.empty() ? 0.0 : spec.RudderDeg();
 }
 
 // zigzag[:A/B]: the rudder angle A and the heading threshold B [deg], 20/20 by default.
-ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
+ZigzagResponse AnalyseZigzag(const ManeuverSpec& spec, const Dataset& data,
                              const std::string& heading, const std::string& rudder,
                              bool replay = false) {
-  const ManeuverSpec parsed = ParseManeuverSpec(spec);
-  const double a = parsed.numbers.empty() ? 20.0 : std::abs(parsed.numbers[0]);
-  const double b = parsed.numbers.size() < 2 ? 20.0 : std::abs(parsed.numbers[1]);
-  return AnalyseZigzag(data, b, heading, rudder, replay ? -1.0 : a);
+  return AnalyseZigzag(data, spec.CheckDeg(), heading, rudder, replay ? -1.0 : spec.RudderDeg());
 }
 
 // Throws InputError when the record's test turned the other way from `spec` (its first rudder
@@ -491,17 +485,16 @@ ZigzagResponse AnalyseZigzag(const std::string& spec, const Dataset& data,
 void CheckFirstTurn(const std::string& spec, const Dataset& recorded, const std::string& heading,
                     const std::string& rudder) {
   const ManeuverSpec parsed = ParseManeuverSpec(spec);
-  const bool zigzag = parsed.name == "zigzag";
-  const int turns = parsed.numbers.empty() || parsed.numbers[0] >= 0 ? 1 : -1;
+  const int turns = parsed.Side();
   double execute_s = 0.0;
   int recorded_turn = 0;
-  if (zigzag) {
-    const ZigzagResponse z = AnalyseZigzag(spec, recorded, heading, rudder);
+  if (parsed.kind == ManeuverKind::kZigzag) {
+    const ZigzagResponse z = AnalyseZigzag(parsed, recorded, heading, rudder);
     recorded_turn = z.first_turn;
     execute_s = z.execute_s;
   } else {
     const TurningResponse r =
-        AnalyseTurning(recorded, heading, rudder, "north", "east", true, TurningRudderDeg(spec));
+        AnalyseTurning(recorded, heading, rudder, "north", "east", true, TurningRudderDeg(parsed));
     recorded_turn = r.direction;
     execute_s = r.execute_s;
   }
@@ -511,7 +504,7 @@ void CheckFirstTurn(const std::string& spec, const Dataset& recorded, const std:
   throw InputError(recorded.SourcePrefix() + spec + " turns to " +
                    (turns > 0 ? "starboard" : "port") + " first, the record to " +
                    (turns > 0 ? "port" : "starboard") + " (its execute at " + at.str() +
-                   " s): give " + parsed.Mirrored(zigzag ? "20/20" : "35"));
+                   " s): give " + parsed.Mirrored());
 }
 
 // A criterion's value for JSON: null when not finite.
@@ -519,17 +512,15 @@ nlohmann::json Value(double v) { return std::isfinite(v) ? nlohmann::json(v) : n
 
 }  // namespace
 
-bool HasManeuverCriteria(const std::string& spec) {
-  return spec.starts_with("zigzag") || spec.starts_with("turning");
-}
+bool HasManeuverCriteria(const std::string& spec) { return IsManeuverTest(spec); }
 
 ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
                                 const std::string& spec, const Dataset& recorded,
                                 bool from_recorded_state, double base_course_offset_rad) {
   const VesselInfo& info = FindVessel(vessel).Info();
-  std::unique_ptr<Maneuver> rule = MakeManeuver(spec, info.actuation, recorded.duration(), 1);
-  if (auto* zigzag = dynamic_cast<ZigZag*>(rule.get()))
-    zigzag->SetBaseCourseOffset(base_course_offset_rad);
+  ManeuverSpec parsed = ParseManeuverSpec(spec);
+  parsed.base_offset_rad = base_course_offset_rad;
+  std::unique_ptr<Maneuver> rule = MakeManeuver(parsed, info.actuation, recorded.duration(), 1);
   RecordedApproach maneuver(std::move(rule), info.actuation, recorded);
   if (IsVesselModel(model))
     return ReplayVesselModel(model, maneuver, SampleRate(recorded), recorded, from_recorded_state);
@@ -538,9 +529,11 @@ ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& 
 
 double ManeuverExecute(const std::string& spec, const Dataset& data, const std::string& heading,
                        const std::string& rudder) {
-  if (spec.starts_with("zigzag")) return AnalyseZigzag(spec, data, heading, rudder).execute_s;
-  if (spec.starts_with("turning"))
-    return AnalyseTurning(data, heading, rudder, "north", "east", true, TurningRudderDeg(spec))
+  const ManeuverSpec parsed = ParseManeuverSpec(spec);
+  if (parsed.kind == ManeuverKind::kZigzag)
+    return AnalyseZigzag(parsed, data, heading, rudder).execute_s;
+  if (parsed.kind == ManeuverKind::kTurning)
+    return AnalyseTurning(data, heading, rudder, "north", "east", true, TurningRudderDeg(parsed))
         .execute_s;
   throw InputError("closed loop: '" + spec + "' has no execute");
 }
@@ -562,17 +555,18 @@ Dataset FromLeadIn(const std::string& spec, const Dataset& recorded, const std::
 nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
                                 const std::string& heading, const std::string& rudder,
                                 bool replay) {
-  if (spec.starts_with("zigzag")) {
-    const ZigzagResponse z = AnalyseZigzag(spec, data, heading, rudder, replay);
+  const ManeuverSpec parsed = ParseManeuverSpec(spec);
+  if (parsed.kind == ManeuverKind::kZigzag) {
+    const ZigzagResponse z = AnalyseZigzag(parsed, data, heading, rudder, replay);
     auto at = [](const std::vector<double>& v, size_t i) { return i < v.size() ? v[i] : NAN; };
     return {{"first_overshoot_deg", Value(at(z.overshoot_deg, 0))},
             {"second_overshoot_deg", Value(at(z.overshoot_deg, 1))},
             {"second_execute_s", Value(at(z.reversal_s, 0) - z.execute_s)},
             {"period_s", Value(at(z.reversal_s, 2) - at(z.reversal_s, 0))}};
   }
-  if (spec.starts_with("turning")) {
+  if (parsed.kind == ManeuverKind::kTurning) {
     const TurningResponse r =
-        AnalyseTurning(data, heading, rudder, "north", "east", !replay, TurningRudderDeg(spec));
+        AnalyseTurning(data, heading, rudder, "north", "east", !replay, TurningRudderDeg(parsed));
     return {{"advance_m", Value(r.advance_m)},
             {"transfer_m", Value(r.transfer_m)},
             {"tactical_diameter_m", Value(r.tactical_diameter_m)},
@@ -583,7 +577,7 @@ nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
 
 std::string RecordedManeuverSpec(const std::string& spec, const std::string& vessel,
                                  const Dataset& recorded) {
-  if ((spec != "zigzag" && spec != "turning") || vessel.empty()) return spec;
+  if (!IsBareManeuverTest(spec) || vessel.empty()) return spec;
   const Actuation& act = FindVessel(vessel).Info().actuation;
   // The heading as logged: a derived course needs psi itself (core/derived_channels.h).
   const std::string read = ManeuverOfRecord(recorded, spec, recorded.Has("psi") ? "psi" : "chi",
@@ -604,10 +598,11 @@ ManeuverScorer::ManeuverScorer(const std::string& vessel, const std::string& spe
   if (recorded_.rows() < full.rows()) replayed_from_s_ = full.t()(full.rows() - recorded_.rows());
   // A zig-zag is replayed about the base course the record's test reversed about: read once,
   // for every model scored.
-  if (spec.starts_with("zigzag")) {
+  const ManeuverSpec parsed = ParseManeuverSpec(spec);
+  if (parsed.kind == ManeuverKind::kZigzag) {
     try {
       base_course_offset_rad_ =
-          AnalyseZigzag(spec, recorded_, recorded_.Has("psi") ? "psi" : "chi", rudder_)
+          AnalyseZigzag(parsed, recorded_, recorded_.Has("psi") ? "psi" : "chi", rudder_)
               .base_offset_deg *
           std::numbers::pi / 180.0;
     } catch (const InputError&) {

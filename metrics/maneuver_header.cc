@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/parse_number.h"
+#include "maneuvers/maneuver_spec.h"
 
 namespace usvid {
 namespace {
@@ -36,22 +37,24 @@ NamedManeuver ParseManeuverHeader(const std::string& text, const std::string& wh
   };
   NamedManeuver m;
   std::smatch g;
-  // usvid's own spec: the sign of A is the side (starboard positive).
-  if (std::regex_match(trimmed, g, std::regex(R"(zigzag:(-?\d+(?:\.\d+)?)/(\d+(?:\.\d+)?))"))) {
-    m.kind = "zigzag";
-    const double a = ParseNumber(g[1].str()).value;
-    m.rudder_deg = std::abs(a);
-    m.check_deg = ParseNumber(g[2].str()).value;
-    m.side = a < 0 ? -1 : 1;
-  } else if (std::regex_match(trimmed, g, std::regex(R"(turning:(-?\d+(?:\.\d+)?))"))) {
-    m.kind = "turning";
-    const double a = ParseNumber(g[1].str()).value;
-    m.rudder_deg = std::abs(a);
-    m.side = a < 0 ? -1 : 1;
+  // usvid's own spec (maneuvers/maneuver_spec.h): the sign of A is the side (starboard positive).
+  if (IsManeuverTest(trimmed) && trimmed.find(':') != std::string::npos) {
+    ManeuverSpec spec;
+    try {
+      spec = ParseManeuverSpec(trimmed);
+    } catch (const InputError&) {
+      return fail("is none usvid knows");
+    }
+    const bool zigzag = spec.kind == ManeuverKind::kZigzag;
+    if (spec.numbers.size() != (zigzag ? 2u : 1u)) return fail("is none usvid knows");
+    m.kind = spec.name;
+    m.rudder_deg = spec.RudderDeg();
+    if (zigzag) m.check_deg = spec.numbers[1];
+    m.side = spec.Side();
   } else if (std::regex_search(
                  trimmed, g,
-                 std::regex(std::string(R"(^(?:z|zz|zig-?zag)\s*)") + kAngleText + kDegreeMark + R"(\s*/\s*)" +
-                            kAngleText + kDegreeMark + R"((?:\s|$|,))"))) {
+                 std::regex(std::string(R"(^(?:z|zz|zig-?zag)\s*)") + kAngleText + kDegreeMark +
+                            R"(\s*/\s*)" + kAngleText + kDegreeMark + R"((?:\s|$|,))"))) {
     m.kind = "zigzag";
     m.rudder_deg = ParseNumber(g[1].str()).value;
     m.check_deg = ParseNumber(g[2].str()).value;
@@ -66,7 +69,8 @@ NamedManeuver ParseManeuverHeader(const std::string& text, const std::string& wh
   } else {
     return fail("is none usvid knows");
   }
-  if (!(m.rudder_deg > 0 && m.rudder_deg <= 90)) return fail("has a rudder angle outside (0, 90] deg");
+  if (!(m.rudder_deg > 0 && m.rudder_deg <= 90))
+    return fail("has a rudder angle outside (0, 90] deg");
   if (m.kind == "zigzag" && !(m.check_deg > 0 && m.check_deg <= 90))
     return fail("has a heading check outside (0, 90] deg");
   return m;

@@ -6,7 +6,6 @@
 #include <numbers>
 
 #include "maneuvers/maneuver_factory.h"
-#include "maneuvers/zigzag.h"
 #include "metrics/closed_loop_replay.h"
 #include "simulation/vessel_simulator.h"
 
@@ -46,10 +45,9 @@ TEST(ManeuverReplayTest, TheTrueModelHasTheRecordsCriteria) {
 TEST(ManeuverReplayTest, TheReplayReversesAboutTheRecordsBaseCourse) {
   for (const double offset_deg : {1.12, -2.0}) {
     const VesselSimulator& sim = FindVessel("kvlcc2");
-    auto m = MakeManeuver("zigzag:20/20", sim.Info().actuation, 450.0, 1);
-    auto* zigzag = dynamic_cast<ZigZag*>(m.get());
-    ASSERT_NE(zigzag, nullptr);
-    zigzag->SetBaseCourseOffset(offset_deg * kDeg);
+    ManeuverSpec spec = ParseManeuverSpec("zigzag:20/20");
+    spec.base_offset_rad = offset_deg * kDeg;
+    auto m = MakeManeuver(spec, sim.Info().actuation, 450.0, 1);
     const Dataset record = sim.RunManeuver(*m, sim.Info().default_params, {}, RunOptions{}).data;
     const nlohmann::json score =
         ClosedLoopScore({{"vessel", "kvlcc2"}}, "kvlcc2", "zigzag:20/20", record);
