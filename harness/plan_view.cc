@@ -114,7 +114,7 @@ std::string HeadingAndRudder(const std::string& title, const std::vector<Track>&
 std::vector<std::string> PlanView(
     const std::string& title, const std::string& vessel, const std::string& spec,
     const Dataset& held, const std::vector<std::pair<std::string, nlohmann::json>>& models) {
-  if (!HasManeuverCriteria(spec) || !held.Has("north") || !held.Has("east") || !held.Has("psi"))
+  if (!IsManeuverTest(spec) || !held.Has("north") || !held.Has("east") || !held.Has("psi"))
     return {};
   try {
     const ManeuverScorer scorer(vessel, spec, held);

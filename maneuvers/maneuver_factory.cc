@@ -22,13 +22,6 @@ std::vector<double> Numbers(const ManeuverSpec& parsed, size_t count, const std:
   return parsed.numbers;
 }
 
-// The spec as the user wrote it, for errors.
-std::string Written(const ManeuverSpec& args) {
-  std::string out = args.name;
-  for (size_t i = 0; i < args.texts.size(); ++i) out += (i == 0 ? ":" : "/") + args.texts[i];
-  return out;
-}
-
 double Positive(double value, const std::string& spec) {
   if (!(value > 0)) throw InputError("--maneuver '" + spec + "': the value must be positive");
   return value;
@@ -44,7 +37,7 @@ std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation&
 std::unique_ptr<Maneuver> MakeManeuver(const ManeuverSpec& args, const Actuation& act,
                                        double duration_s, uint64_t seed) {
   if (duration_s < 0) throw InputError("--duration: must not be negative");
-  const std::string spec = Written(args);
+  const std::string spec = args.Text();
   const bool has_args = !args.numbers.empty();  // "name:" with no number does not parse
   auto duration = [&](double fallback) { return duration_s > 0 ? duration_s : fallback; };
 

@@ -69,6 +69,12 @@ double ManeuverSpec::CheckDeg() const {
   return numbers.size() < 2 ? kDefaultZigzagDeg : std::abs(numbers[1]);
 }
 
+std::string ManeuverSpec::Text() const {
+  std::string out = name;
+  for (size_t i = 0; i < texts.size(); ++i) out += (i == 0 ? ":" : "/") + texts[i];
+  return out;
+}
+
 std::string ManeuverSpec::Mirrored() const {
   if (texts.empty()) {
     const double a = RudderDeg();

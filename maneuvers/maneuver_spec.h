@@ -44,6 +44,8 @@ struct ManeuverSpec {
   double CheckDeg() const;
   // +1 when the first rudder order is to starboard (A >= 0, or no A), -1 to port.
   int Side() const { return numbers.empty() || numbers[0] >= 0 ? 1 : -1; }
+  // The spec as written ("zigzag:-20/20"), base_offset_rad aside.
+  std::string Text() const;
   // The same test to the other side, as written ("zigzag:-20/20" <-> "zigzag:20/20"); without
   // numbers, the kind's default to the other side ("turning" -> "turning:-35").
   std::string Mirrored() const;

@@ -512,8 +512,6 @@ nlohmann::json Value(double v) { return std::isfinite(v) ? nlohmann::json(v) : n
 
 }  // namespace
 
-bool HasManeuverCriteria(const std::string& spec) { return IsManeuverTest(spec); }
-
 ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
                                 const std::string& spec, const Dataset& recorded,
                                 bool from_recorded_state, double base_course_offset_rad) {
@@ -665,7 +663,7 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& v
     out["status"] = "not replayable: recorded inputs only (the test data name no maneuver)";
     return out;
   }
-  if (!HasManeuverCriteria(spec)) {
+  if (!IsManeuverTest(spec)) {
     out["status"] = "not replayable: " + spec + " is open-loop, scored on its recorded inputs";
     return out;
   }

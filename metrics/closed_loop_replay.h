@@ -37,9 +37,6 @@ struct ClosedLoopReplay {
   std::string diverged_channel;
 };
 
-// Whether `spec` names a maneuver with criteria: zigzag[:A/B] or turning[:A].
-bool HasManeuverCriteria(const std::string& spec);
-
 // Runs maneuver `spec` on `model` closed-loop, on `vessel`'s actuation, for as long as
 // `recorded` lasts. Throws InputError saying why when the model cannot be replayed (an input
 // that is neither a command nor derived from one, an actuator the record cannot identify).
