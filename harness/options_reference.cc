@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "harness/fit_service.h"
 #include "harness/suite.h"
 #include "harness/suite_methods.h"
 
@@ -49,7 +50,7 @@ std::string OptionsReferenceMarkdown() {
          "`--states`, `--inputs`, `--rate`, `--forces` and `--derivative` "
          "(docs/preprocessing.md). diagnose takes none of them (it reads the record as it is, "
          "on its vessel's channels), external only `states` and `inputs`.\n\n";
-  Table(out, SharedSuiteOptions());
+  Table(out, SharedFitOptions());
   return out.str();
 }
 

@@ -56,7 +56,7 @@ struct TrackSpec {
   // harness/tracks/): cross-validated unless its track file splits the runs.
   bool from_track_file = false;
   bool split = true;
-  nlohmann::json read;        // the keys its runs are read with; a built-in track's first test's
+  nlohmann::json read{};      // the keys its runs are read with; a built-in track's first test's
   std::string vessel_file{};  // a built-in track file's vessel, embedded (a path as `file`)
 };
 

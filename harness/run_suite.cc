@@ -16,19 +16,16 @@
 #include "effects/effect.h"
 #include "effects/effect_values.h"
 #include "harness/cross_validation.h"
+#include "harness/fit_service.h"
 #include "harness/suite_methods.h"
 #include "maneuvers/maneuver_factory.h"
 #include "maneuvers/maneuver_spec.h"
 #include "methods/channel_fit.h"
-#include "methods/identify.h"
 #include "methods/refit/refit.h"
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
 #include "metrics/maneuver_of_record.h"
 #include "metrics/structure.h"
-#include "metrics/yaw_bias_calibration.h"
-#include "preprocessing/derivative.h"
-#include "preprocessing/waterjet_forces.h"
 #include "sensors/sample_rates.h"
 #include "sensors/sensor_chain.h"
 #include "simulation/logged_disturbances.h"
@@ -37,32 +34,6 @@
 #include "simulators/vessel.h"
 
 namespace usvid {
-
-namespace {
-std::string ForcesFor(const SuiteMethod& method, const std::string& vessel);
-}  // namespace
-
-IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vessel, uint64_t seed) {
-  IdentifyRequest r;
-  r.method = method.method;
-  r.vessel = vessel;
-  r.seed = seed;
-  const nlohmann::json& o = method.options;
-  r.options = method.OwnOptions();
-  r.preprocess.rate_hz = o.value("rate", 0.0);  // resample to this rate [Hz] (0: the data's)
-  if (o.contains("derivative"))
-    r.preprocess.derivative = DerivativeMethod::Parse(o["derivative"].get<std::string>());
-  r.preprocess.forces = ForcesFor(method, vessel);
-  // A list option, as an array or a comma-separated string (checked by CheckSuiteMethod).
-  auto names = [&](const char* key) {
-    const MethodOptions checked = ValidateOptions(method.method, SharedSuiteOptions(),
-                                                  nlohmann::json{{key, o[key]}}, "suite");
-    return checked.List(key);
-  };
-  if (o.contains("states")) r.states = names("states");
-  if (o.contains("inputs")) r.inputs = names("inputs");
-  return r;
-}
 
 Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
                          double noise, uint64_t seed, const SuiteConditions& conditions) {
@@ -135,18 +106,6 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
   if (worst >= 0) row.parameter_error = worst;
 }
 
-// The input map a job's method is fitted through: the method's "forces" ("none": the commands),
-// else the waterjet forces when the vessel logs its jets' states and the method takes inputs
-// as channels (not a vessel model, nor the inputs named by hand; eb-lr finds its steady windows
-// where the commands are held).
-std::string ForcesFor(const SuiteMethod& method, const std::string& vessel) {
-  const nlohmann::json& o = method.options;
-  if (o.contains("forces")) return o["forces"] == "none" ? "" : o["forces"].get<std::string>();
-  if (vessel.empty() || o.contains("inputs") || !FindSuiteMethod(method.method).channel_inputs)
-    return "";
-  return HasWaterjetStates(FindVessel(vessel).Info().states) ? "waterjet" : "";
-}
-
 // What a row's model was driven by: its inputs, and the force map that derived them.
 std::string InputsOf(const nlohmann::json& model) {
   std::string text;
@@ -163,7 +122,7 @@ std::string InputsOf(const nlohmann::json& model) {
 // reads them beside its default inputs (the commands, or the force map's forces), unless the
 // suite names its inputs.
 IdentifyRequest RequestFor(const Suite& suite, const FitJob& job) {
-  IdentifyRequest r = MethodRequest(job.method, job.vessel, job.seed);
+  IdentifyRequest r = FitRequest(job.method.method, job.method.options, job.vessel, job.seed);
   r.threads = 1;  // the suite runs jobs in parallel
   r.data_name = job.vessel + "/" + job.train_maneuver;
   if (!suite.conditions.logged.empty() && !job.vessel.empty() &&
@@ -341,8 +300,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
       train =
           simulated.Get(job.vessel, job.train_maneuver, suite.train_seconds, job.noise, job.seed);
     const Dataset& train_data = train ? *train : train_sets.at(job.train_maneuver);
-    model = Identify(FindSuiteMethod(job.method.method), train_data, RequestFor(suite, job));
-    CalibrateRequested(model, train_data, job.vessel);
+    model = Fit(FindSuiteMethod(job.method.method), train_data, RequestFor(suite, job));
   } catch (const std::exception& e) {
     failure = std::string("failed: ") + e.what();
   }

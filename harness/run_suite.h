@@ -18,10 +18,6 @@
 
 namespace usvid {
 
-// The request a suite method's options make (harness/suite.h) on `vessel`'s data ("" when the
-// options name the channels), at `seed`; threads and the data's name are the caller's.
-IdentifyRequest MethodRequest(const SuiteMethod& method, const std::string& vessel, uint64_t seed);
-
 // The data a suite trains or tests on: `maneuver` on `vessel` (step grids run to the end of
 // their grid) under the suite's hidden effects, noise on every measured channel, then the
 // sensors' rates, all from `seed`.

@@ -17,7 +17,6 @@
 #include "maneuvers/maneuver_spec.h"
 #include "methods/registry.h"
 #include "preprocessing/derivative.h"
-#include "preprocessing/waterjet_forces.h"
 #include "sensors/dropouts.h"
 #include "sensors/sample_rates.h"
 #include "sensors/wave_motion.h"
@@ -51,38 +50,12 @@ std::vector<T> ListOf(const nlohmann::json& v, const std::string& where) {
 
 }  // namespace
 
-const std::vector<OptionSpec>& SharedSuiteOptions() {
-  static const std::vector<OptionSpec> shared = {
-      ListOption("states", {}, {}, "the states to fit; none: the vessel's"),
-      ListOption("inputs", {}, {}, "the input channels; none: the vessel's (or its jets' forces)"),
-      NumberOption("rate", std::nullopt, 0, kUnbounded,
-                   "resample the training data to this rate [Hz]; none or 0: the data's own"),
-      [] {
-        OptionSpec forces = ChoiceOption(
-            "forces", "", {"none", "waterjet"},
-            "the input map: none (the commands) or waterjet (the jets' forces); unset: "
-            "waterjet for a method that takes channels on a vessel that logs its jets");
-        forces.default_value = nullptr;
-        return forces;
-      }(),
-      TextOption("derivative", std::nullopt,
-                 "how the states' derivatives are computed: sg[:W[:P]], spline[:LAMBDA], "
-                 "tv[:ALPHA] or euler[:W]; none: spline"),
-  };
-  return shared;
-}
-
-bool IsSharedSuiteKey(const std::string& key) {
-  return std::ranges::any_of(SharedSuiteOptions(),
-                             [&](const OptionSpec& s) { return s.key == key; });
-}
-
 void CheckSuiteMethod(const SuiteMethod& method, const std::string& where) {
   // The method's options, and the shared keys it reads (methods/method.h: named_channels,
   // preprocessed).
   const Method& m = FindSuiteMethod(method.method);
   std::vector<OptionSpec> specs = m.options;
-  for (const OptionSpec& shared : SharedSuiteOptions()) {
+  for (const OptionSpec& shared : SharedFitOptions()) {
     const bool channels = shared.key == "states" || shared.key == "inputs";
     if (!(channels ? m.named_channels : m.preprocessed)) continue;
     // The shared keys a method declares itself (none today) stay its own.
@@ -179,12 +152,7 @@ std::vector<SuiteMethod> ParseMethods(const nlohmann::json& list, const std::str
 
 }  // namespace
 
-nlohmann::json SuiteMethod::OwnOptions() const {
-  nlohmann::json own = nlohmann::json::object();
-  for (const auto& [key, value] : options.items())
-    if (!IsSharedSuiteKey(key)) own[key] = value;
-  return own;
-}
+nlohmann::json SuiteMethod::OwnOptions() const { return OwnFitOptions(options); }
 
 std::string SuiteMethod::Label() const {
   if (method == kExternalMethod) return options.at("name").get<std::string>();

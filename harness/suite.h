@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "harness/external_method.h"
+#include "harness/fit_service.h"
 #include "harness/suite_data.h"
 #include "harness/suite_methods.h"
 #include "methods/method_options.h"
@@ -48,7 +49,8 @@ struct SuiteMethod {
   std::string method;      // a method of SuiteMethods() (harness/suite_methods.h)
   nlohmann::json options;  // its options and the shared keys, as the suite gives them
   std::string Label() const;
-  // `options` less the shared keys (SharedSuiteOptions): the method's own, as declared.
+  // `options` less the shared keys (SharedFitOptions, harness/fit_service.h): the method's own, as
+  // declared.
   nlohmann::json OwnOptions() const;
 };
 
@@ -111,19 +113,11 @@ struct FitJob {
   std::string Id() const;
 };
 
-// The keys a suite's method entry (and Python's identify) may give besides the method's own
-// options: the channels (states, inputs) and the preprocessing every method shares (rate,
-// forces, derivative).
-const std::vector<OptionSpec>& SharedSuiteOptions();
-
 // A method entry checked, before any fit: the method is one of SuiteMethods(), its options are
 // the shared keys and those it declares (names, types, ranges; a derivative spec parsed; an
 // external command's name not a method's). Throws InputError, one line naming `where`, the
 // method, the key and what is allowed.
 void CheckSuiteMethod(const SuiteMethod& method, const std::string& where);
-
-// Whether `key` is one of SharedSuiteOptions.
-bool IsSharedSuiteKey(const std::string& key);
 
 // Relative data paths are taken from the folder of `file`.
 Suite ParseSuite(const nlohmann::json& value, const std::string& file);

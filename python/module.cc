@@ -17,6 +17,7 @@
 #include "diagnosis/diagnosis_json.h"
 #include "effects/effect.h"
 #include "effects/effect_values.h"
+#include "harness/fit_service.h"
 #include "harness/results.h"
 #include "harness/run_suite.h"
 #include "harness/suite.h"
@@ -24,7 +25,6 @@
 #include "methods/identify.h"
 #include "methods/registry.h"
 #include "metrics/evaluation.h"
-#include "metrics/yaw_bias_calibration.h"
 #include "python/python_data.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
@@ -64,7 +64,8 @@ py::dict Simulate(const std::string& vessel, const py::object& maneuver, const p
     py::gil_scoped_release release;
     const VesselSimulator& sim = FindVessel(vessel);
     const VesselInfo& info = sim.Info();
-    const EffectValues<double> values = ValuesOf(ParseEffects(specs, seed), info.inputs, info.states);
+    const EffectValues<double> values =
+        ValuesOf(ParseEffects(specs, seed), info.inputs, info.states);
     SimulationResult result;
     if (!spec.empty()) {
       auto m = MakeManeuver(spec, info.actuation, seconds, seed);
@@ -104,7 +105,7 @@ py::dict Identify(const py::object& data, const std::string& method, const py::o
   FindMethod(method);  // an unknown method is named before its options
   CheckSuiteMethod({method, options}, "identify");
   const std::string vessel_name = vessel.is_none() ? "" : vessel.cast<std::string>();
-  IdentifyRequest request = MethodRequest({method, options}, vessel_name, seed);
+  IdentifyRequest request = FitRequest(method, options, vessel_name, seed);
   request.threads = threads;
   request.data_name = "python";
   // One record (a dict), or several fitted jointly (a list of dicts; core/records.h).
@@ -121,8 +122,7 @@ py::dict Identify(const py::object& data, const std::string& method, const py::o
   nlohmann::json model;
   {
     py::gil_scoped_release release;
-    model = usvid::Identify(d, request);
-    CalibrateRequested(model, d, vessel_name);
+    model = Fit(FindMethod(method), d, request);
   }
   return FromJson(model);
 }
@@ -203,9 +203,12 @@ PYBIND11_MODULE(_usvid, m) {
         "extended model under 'model'.");
   m.def("compare", &Compare, arg("suite"), arg("threads") = 0,
         "Run a suite (a dict, or a suite file's path): results.json as a dict.");
-  m.def("vessels", [] {
-    std::vector<std::string> names;
-    for (const auto& name : usvid::VesselNames()) names.push_back(name);
-    return names;
-  }, "The registered vessels' names.");
+  m.def(
+      "vessels",
+      [] {
+        std::vector<std::string> names;
+        for (const auto& name : usvid::VesselNames()) names.push_back(name);
+        return names;
+      },
+      "The registered vessels' names.");
 }

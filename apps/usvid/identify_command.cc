@@ -17,9 +17,9 @@
 #include "core/error.h"
 #include "core/json_file.h"
 #include "core/parse_number.h"
+#include "harness/fit_service.h"
 #include "methods/identify.h"
 #include "methods/registry.h"
-#include "metrics/yaw_bias_calibration.h"
 #include "preprocessing/waterjet_forces.h"
 #include "simulation/vessel_simulator.h"
 
@@ -42,16 +42,19 @@ struct IdentifyOptions {
   std::map<std::string, const CLI::Option*> flags;
 };
 
-// The option flags given, read as the chosen method declares them; a flag the method does not
-// declare is an error naming it and the method's options.
+// The option flags given, read as the chosen method declares them (and the keys every method
+// shares, as SharedFitOptions declares them); a flag the method does not declare is an error
+// naming it and the method's options.
 nlohmann::json GivenOptions(const IdentifyOptions& o) {
   const Method& method = FindMethod(o.request.method);
   nlohmann::json options = nlohmann::json::object();
   for (const auto& [key, flag] : o.flags) {
     if (flag->count() == 0) continue;
+    const std::vector<OptionSpec>& declared =
+        IsSharedFitKey(key) ? SharedFitOptions() : method.options;
     const auto spec =
-        std::ranges::find_if(method.options, [&](const OptionSpec& s) { return s.key == key; });
-    if (spec == method.options.end()) {
+        std::ranges::find_if(declared, [&](const OptionSpec& s) { return s.key == key; });
+    if (spec == declared.end()) {
       std::string flags;
       for (const OptionSpec& s : method.options) flags += (flags.empty() ? "" : ", ") + s.Flag();
       throw InputError(flag->get_name() + ": method " + method.name + " has no option '" + key +
@@ -68,10 +71,12 @@ nlohmann::json GivenOptions(const IdentifyOptions& o) {
 
 void RunIdentify(const IdentifyOptions& o) {
   CheckOutputFile(o.out);
-  IdentifyRequest r = o.request;
-  r.options = GivenOptions(o);
+  // The request as a suite's or Python's is made (harness/fit_service.h), over the preprocessing
+  // only the command line has (--interpolation, --delay, ...).
+  IdentifyRequest r = FitRequest(o.request.method, GivenOptions(o), o.request.vessel,
+                                 o.request.seed, o.pre.Options());
+  r.threads = o.request.threads;
   CheckedOptions(FindMethod(r.method), r, "usvid identify");  // before the data are read
-  r.preprocess = o.pre.Options();
   r.data_name = o.data;
   if (!o.params.empty()) {
     if (r.vessel.empty()) throw InputError("--params: needs --vessel");
@@ -89,9 +94,9 @@ void RunIdentify(const IdentifyOptions& o) {
   Dataset data = ReadDataFiles(o.data, "usvid identify", required, [&](Dataset& record) {
     SimulateMissingActuators(record, o.pre.actuators);
   });
-  nlohmann::json model = Identify(
-      data, r, [](const std::string& line) { std::cerr << "usvid identify: " << line << '\n'; });
-  CalibrateRequested(model, data, r.vessel);  // a closed-loop replay: metrics/, not the method's
+  nlohmann::json model = Fit(FindMethod(r.method), data, r, [](const std::string& line) {
+    std::cerr << "usvid identify: " << line << '\n';
+  });
   if (model.contains("calibration") && model["calibration"].contains("yaw_bias")) {
     const nlohmann::json& c = model["calibration"]["yaw_bias"];
     std::cerr << "usvid identify: r's constant from the training zig-zags' overshoots: "
@@ -109,12 +114,18 @@ void RunIdentify(const IdentifyOptions& o) {
             << " s)\n";
 }
 
-// One flag per option key of any method. Its help gives each declaring method's line and
-// default, once for methods that say the same (refit and hybrid share refit's options).
+// One flag per option key of any method, and per key every method shares. Its help gives each
+// declaring method's line and default, once for methods that say the same (refit and hybrid
+// share refit's options).
 void AddMethodOptionFlags(CLI::App& cmd, IdentifyOptions& o) {
   std::vector<std::string> keys;
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> lines;  // text, methods
   std::map<std::string, const OptionSpec*> first;
+  for (const OptionSpec& s : SharedFitOptions()) {
+    keys.push_back(s.key);
+    first[s.key] = &s;
+    lines[s.key].push_back({s.help, "every method"});
+  }
   for (const Method& m : Methods())
     for (const OptionSpec& s : m.options) {
       if (!first.contains(s.key)) {
@@ -169,9 +180,7 @@ void AddIdentifyCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--vessel", o->request.vessel,
                   "Take states and inputs from this simulator: " + VesselChoices());
-  cmd->add_option("--states", o->request.states, "States to find equations for")->delimiter(',');
-  cmd->add_option("--inputs", o->request.inputs, "Input channels")->delimiter(',');
-  o->pre.Add(*cmd);
+  o->pre.Add(*cmd, /*fit_keys=*/false);
   AddMethodOptionFlags(*cmd, *o);
   cmd->add_option("--seed", o->request.seed, "Seed of the search");
   cmd->add_option("--threads", o->request.threads, "OpenMP threads (0: all cores)");

@@ -39,20 +39,25 @@ struct PreprocessFlags {
   std::string forces;
   std::string actuators;  // actuators.json: jet states the log lacks, simulated from the commands
 
-  void Add(CLI::App& cmd) {
-    cmd.add_option("--rate", rate_hz, "Resample to this rate [Hz] (0: the data's own)");
+  // `fit_keys`: also --rate, --derivative and --forces; `usvid identify` makes those three from
+  // the keys every method shares (harness/fit_service.h), as a suite reads them.
+  void Add(CLI::App& cmd, bool fit_keys = true) {
+    if (fit_keys)
+      cmd.add_option("--rate", rate_hz, "Resample to this rate [Hz] (0: the data's own)");
     cmd.add_option("--interpolation", interpolation, "linear or spline")
         ->check(CLI::IsMember({"linear", "spline"}));
-    cmd.add_option("--derivative", derivative,
-                   "sg[:W[:P]], spline[:LAMBDA], tv[:ALPHA] or euler[:W] (the report's)");
+    if (fit_keys)
+      cmd.add_option("--derivative", derivative,
+                     "sg[:W[:P]], spline[:LAMBDA], tv[:ALPHA] or euler[:W] (the report's)");
     cmd.add_option("--delay", delay, "Input delay: auto (estimated) or seconds");
     cmd.add_option("--max-delay", max_delay_s, "Longest delay --delay auto considers [s]");
     cmd.add_flag("--no-step-breaks", no_step_breaks,
                  "Do not let derivatives jump where the inputs step");
-    cmd.add_option("--forces", forces,
-                   "waterjet: add the jets' forces tau_x, tau_y, tau_n from the measured rpm, "
-                   "nozzle_angle and bucket_position, for --inputs to name")
-        ->check(CLI::IsMember({"waterjet"}));
+    if (fit_keys)
+      cmd.add_option("--forces", forces,
+                     "waterjet: add the jets' forces tau_x, tau_y, tau_n from the measured rpm, "
+                     "nozzle_angle and bucket_position, for --inputs to name")
+          ->check(CLI::IsMember({"waterjet"}));
     cmd.add_option("--actuators", actuators,
                    "actuators.json from usvid actuators: the actuator states the log lacks are "
                    "simulated from its commands (a log of commands alone, with --forces)");

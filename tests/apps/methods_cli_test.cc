@@ -106,11 +106,18 @@ TEST_F(MethodsCliTest, EbLrOnOdinHsJetForces) {
   EXPECT_GT(model.at("parameters").at("sigma_U.jet_flow*U").get<double>(), 0.0);  // a loss
   EXPECT_GT(jets.at("U").at("fit_percent").get<double>(), 85.0);
   EXPECT_GT(jets.at("r").at("fit_percent").get<double>(), 80.0);
-  const nlohmann::json commands = IdentifyAndEvaluate("eb-lr", "odin-hs", train, test);
+  const nlohmann::json commands =
+      IdentifyAndEvaluate("eb-lr", "odin-hs", train, test, "--forces none");
   EXPECT_LT(commands.at("U").at("fit_percent").get<double>(),
             jets.at("U").at("fit_percent").get<double>() - 10.0);
   EXPECT_LT(commands.at("r").at("fit_percent").get<double>(),
             jets.at("r").at("fit_percent").get<double>() - 10.0);
+  // Unset, the map is the one a suite picks (harness/fit_service.h): a method that takes inputs
+  // as channels, on a vessel that logs its jets, is fitted on the jets' forces.
+  const nlohmann::json unset = IdentifyAndEvaluate("eb-lr", "odin-hs", train, test);
+  EXPECT_EQ(ReadJsonFile((dir_ / "eb-lr" / "model.json").string()).at("preprocessing").at("forces"),
+            "waterjet");
+  EXPECT_EQ(unset.at("r").at("fit_percent"), jets.at("r").at("fit_percent"));
 }
 
 // kvlcc2's rudder and propeller: fossen-ceres through its rudder-propeller map and the Nomoto
