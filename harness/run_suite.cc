@@ -14,7 +14,6 @@
 #include "core/parallel_for.h"
 #include "core/records.h"
 #include "effects/effect.h"
-#include "effects/effect_values.h"
 #include "harness/cross_validation.h"
 #include "harness/fit_service.h"
 #include "harness/suite_methods.h"
@@ -26,42 +25,26 @@
 #include "metrics/evaluation.h"
 #include "metrics/maneuver_of_record.h"
 #include "metrics/structure.h"
-#include "sensors/sample_rates.h"
-#include "sensors/sensor_chain.h"
 #include "simulation/logged_disturbances.h"
+#include "simulation/simulate_record.h"
 #include "simulation/vessel_simulator.h"
-#include "simulation/wind_gusts.h"
 #include "simulators/vessel.h"
 
 namespace usvid {
 
 Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
                          double noise, uint64_t seed, const SuiteConditions& conditions) {
-  const VesselSimulator& sim = FindVessel(vessel);
-  const VesselInfo& info = sim.Info();
+  RecordRecipe recipe;
+  recipe.vessel = vessel;
+  recipe.maneuver = maneuver;
   // A step grid runs until its grid is done.
-  const double duration = KindOfManeuver(maneuver) == ManeuverKind::kStepGrid ? 0.0 : seconds;
-  auto m = MakeManeuver(maneuver, info.actuation, duration, seed);
-  RunOptions run;
-  for (const auto& [_, hz] : ParseRateItems(conditions.sensors))
-    run.rate_hz = std::max(run.rate_hz, hz);
-  std::optional<WindGusts> gusts;
-  if (!conditions.gusts.empty()) {
-    gusts = MakeWindGusts(info, conditions.gusts, seed, "gusts");
-    run.disturbance = GustDisturbance(*gusts, seed);
-  }
-  const EffectValues<double> effects =
-      ValuesOf(ParseEffects(conditions.effects, seed), info.inputs, info.states);
-  Dataset d = sim.RunManeuver(*m, info.default_params, effects, run).data;
-  std::vector<std::string> measured = info.states;
-  measured.insert(measured.end(), info.derived.begin(), info.derived.end());
-  // The logged disturbances, from the true motion, then through the same sensors.
-  for (std::string& c :
-       LogDisturbances(d, conditions.logged, gusts ? &*gusts : nullptr, seed, effects))
-    measured.push_back(std::move(c));
-  LogAsSensors(d, measured, {conditions.waves, noise, conditions.sensors, conditions.dropouts},
-               WaveHullLength(info.length_m), seed);
-  return d;
+  recipe.duration_s = KindOfManeuver(maneuver) == ManeuverKind::kStepGrid ? 0.0 : seconds;
+  recipe.effects = ParseEffects(conditions.effects, seed);
+  recipe.gusts = conditions.gusts;
+  recipe.logged = conditions.logged;
+  recipe.sensors = {conditions.waves, noise, conditions.sensors, conditions.dropouts};
+  recipe.seed = seed;
+  return SimulateRecord(recipe).data;
 }
 
 namespace {

@@ -16,17 +16,15 @@
 #include "diagnosis/diagnose.h"
 #include "diagnosis/diagnosis_json.h"
 #include "effects/effect.h"
-#include "effects/effect_values.h"
 #include "harness/fit_service.h"
 #include "harness/results.h"
 #include "harness/run_suite.h"
 #include "harness/suite.h"
-#include "maneuvers/maneuver_factory.h"
 #include "methods/identify.h"
 #include "methods/registry.h"
 #include "metrics/evaluation.h"
 #include "python/python_data.h"
-#include "sensors/noise.h"
+#include "simulation/simulate_record.h"
 #include "simulation/vessel_simulator.h"
 
 namespace py = pybind11;
@@ -62,24 +60,20 @@ py::dict Simulate(const std::string& vessel, const py::object& maneuver, const p
   Dataset data;
   {
     py::gil_scoped_release release;
-    const VesselSimulator& sim = FindVessel(vessel);
-    const VesselInfo& info = sim.Info();
-    const EffectValues<double> values =
-        ValuesOf(ParseEffects(specs, seed), info.inputs, info.states);
-    SimulationResult result;
-    if (!spec.empty()) {
-      auto m = MakeManeuver(spec, info.actuation, seconds, seed);
-      result = sim.RunManeuver(*m, info.default_params, values, RunOptions{});
-    } else {
-      result = sim.RunInputs(recorded, info.default_params, values, RunOptions{});
-    }
-    if (result.diverged)
-      throw InputError("simulate: the " + info.name + " simulation diverged at t = " +
-                       std::to_string(result.diverged_at_s) + " s");
-    data = std::move(result.data);
-    std::vector<std::string> measured = info.states;
-    measured.insert(measured.end(), info.derived.begin(), info.derived.end());
-    AddGaussianNoise(data, measured, noise, seed);
+    RecordRecipe recipe;
+    recipe.vessel = vessel;
+    recipe.maneuver = spec;
+    recipe.inputs = spec.empty() ? &recorded : nullptr;
+    recipe.duration_s = seconds;
+    recipe.effects = ParseEffects(specs, seed);
+    recipe.sensors.noise = noise;
+    recipe.seed = seed;
+    SimulatedRecord record = SimulateRecord(recipe);
+    if (record.diverged)
+      throw InputError("simulate: the " + FindVessel(vessel).Info().name +
+                       " simulation diverged at t = " + std::to_string(record.diverged_at_s) +
+                       " s");
+    data = std::move(record.data);
   }
   return ToDict(data);
 }

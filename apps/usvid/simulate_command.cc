@@ -18,14 +18,10 @@
 #include "core/error.h"
 #include "core/json_file.h"
 #include "core/parse_number.h"
-#include "effects/effect_values.h"
-#include "maneuvers/maneuver_factory.h"
 #include "maneuvers/true_wind.h"
-#include "sensors/sample_rates.h"
-#include "sensors/sensor_chain.h"
 #include "simulation/logged_disturbances.h"
+#include "simulation/simulate_record.h"
 #include "simulation/vessel_simulator.h"
-#include "simulation/wind_gusts.h"
 
 namespace usvid {
 namespace {
@@ -95,125 +91,48 @@ std::vector<Effect> SimulatedEffects(const SimulateOptions& o, const VesselInfo&
   return effects;
 }
 
-// The vessel's actuation, its cruise thrust set by --cruise when given.
-Actuation CruiseActuation(const SimulateOptions& o, const VesselInfo& info) {
-  Actuation act = info.actuation;
-  if (!o.cruise) return act;
-  if (act.thrust_input < 0)
-    throw InputError("--cruise: vessel " + info.name + " has no thrust input");
-  if (!(*o.cruise >= act.input_min[act.thrust_input] &&
-        *o.cruise <= act.input_max[act.thrust_input]))
-    throw InputError("--cruise: " + std::to_string(*o.cruise) + " is outside the range of " +
-                     act.input_names[act.thrust_input]);
-  act.thrust_cruise = *o.cruise;
-  return act;
-}
-
-// --maneuver run on the vessel, under --wind and --gusts (those written to `truth`).
-SimulationResult SimulateManeuver(const SimulateOptions& o, const VesselSimulator& sim,
-                                  const std::vector<double>& params,
-                                  const EffectValues<double>& values, RunOptions& run,
-                                  std::optional<WindGusts>& gusts, nlohmann::json& truth) {
-  const VesselInfo& info = sim.Info();
-  // Multi-rate sensors need an output grid at least as fast as the fastest sensor.
-  for (const auto& [_, hz] : ParseRateItems(o.rates)) run.rate_hz = std::max(run.rate_hz, hz);
-  const Actuation act = CruiseActuation(o, info);
-  auto maneuver = MakeManeuver(o.maneuver, act, o.duration, o.seed);
-  if (!o.wind.empty())
-    maneuver = UnderTrueWind(std::move(maneuver), act, ParseWind(o.wind, o.seed), o.seed);
-  if (!o.gusts.empty()) {
-    gusts = MakeWindGusts(info, o.gusts, o.seed, "--gusts '" + o.gusts + "'");
-    run.disturbance = GustDisturbance(*gusts, o.seed);
-    truth["gusts"] = WindGustsToJson(*gusts);
-    truth["gusts"]["measured"] = std::ranges::find(o.logged, "wind") != o.logged.end();
-  }
-  std::cerr << "usvid simulate: " << info.name << ", " << maneuver->Spec() << ", up to "
-            << maneuver->Duration() << " s at " << run.rate_hz << " Hz\n";
-  return sim.RunManeuver(*maneuver, params, values, run);
-}
-
-// The run's truth beside what the sensors logged: the parameters, effects, noise and grid.
-void AddRunTruth(const SimulateOptions& o, const VesselInfo& info,
-                 const std::vector<double>& params, const std::vector<Effect>& effects,
-                 const std::vector<std::string>& measured, const SensorLog& logged,
-                 const RunOptions& run, const SimulationResult& result, nlohmann::json& truth) {
-  nlohmann::json p = nlohmann::json::object();
-  for (size_t i = 0; i < params.size(); ++i) p[info.params[i]] = params[i];
-  nlohmann::json e = nlohmann::json::array();
-  for (const Effect& effect : effects) e.push_back(EffectToJson(effect));
-  nlohmann::json noise_sd = nlohmann::json::object();
-  for (size_t i = 0; i < measured.size(); ++i) noise_sd[measured[i]] = logged.noise_sd[i];
-  truth.update({{"vessel", info.name},
-                {"parameters", p},
-                {"effects", e},
-                {"seed", o.seed},
-                {"noise", {{"level", o.noise}, {"sd", noise_sd}}},
-                {"states", info.states},
-                {"derived", info.derived},
-                {"inputs", info.inputs},
-                {"dt", run.dt},
-                {"rate_hz", run.rate_hz},
-                {"integrator", o.integrator},
-                {"transport_delay_s", info.transport_delay_s},
-                {"sensor_rates_hz", logged.rates},
-                {"duration_s", result.data.duration()},
-                {"run_in_s", result.run_in_s}});
-  if (!result.maneuver.is_null()) truth["maneuver"] = result.maneuver;
-  if (o.cruise) truth["cruise"] = *o.cruise;
-}
-
 void RunSimulate(const SimulateOptions& o) {
   if (o.maneuver.empty() == o.inputs.empty())
     throw InputError("simulate: give exactly one of --maneuver and --inputs");
   if (!(o.dt > 0) || !(o.rate_hz > 0)) throw InputError("--dt and --rate: must be positive");
   CheckOutputFile(o.out);
-  const VesselSimulator& sim = FindVessel(o.vessel);
-  const VesselInfo& info = sim.Info();
-  const std::vector<Effect> effects = SimulatedEffects(o, info);
-  const EffectValues<double> values = ValuesOf(effects, info.inputs, info.states);
-  CheckLoggedDisturbances(o.logged, !o.gusts.empty(), effects, "--logged");
-  std::vector<double> params = info.default_params;
-  if (!o.params.empty()) params = info.ParamsFromFile(o.params);
-  RunOptions run;
-  run.dt = o.dt;
-  run.rate_hz = o.rate_hz;
-  run.integrator = o.integrator == "dopri" ? Integrator::kDormandPrince : Integrator::kRk4;
-
-  SimulationResult result;
-  nlohmann::json truth;
-  std::optional<WindGusts> gusts;
-  if (!o.maneuver.empty()) {
-    result = SimulateManeuver(o, sim, params, values, run, gusts, truth);
-  } else {
+  const VesselInfo& info = FindVessel(o.vessel).Info();
+  RecordRecipe recipe;
+  recipe.vessel = o.vessel;
+  recipe.maneuver = o.maneuver;
+  recipe.duration_s = o.duration;
+  recipe.cruise = o.cruise;
+  recipe.effects = SimulatedEffects(o, info);
+  CheckLoggedDisturbances(o.logged, !o.gusts.empty(), recipe.effects, "--logged");
+  if (!o.params.empty()) recipe.params = info.ParamsFromFile(o.params);
+  recipe.run.dt = o.dt;
+  recipe.run.rate_hz = o.rate_hz;
+  recipe.run.integrator = o.integrator == "dopri" ? Integrator::kDormandPrince : Integrator::kRk4;
+  if (!o.wind.empty()) recipe.wind = ParseWind(o.wind, o.seed);
+  recipe.gusts = o.gusts;
+  recipe.gusts_where = "--gusts '" + o.gusts + "'";
+  recipe.logged = o.logged;
+  recipe.sensors = {o.waves, o.noise, o.rates, o.dropouts};
+  recipe.seed = o.seed;
+  Dataset inputs;
+  if (!o.inputs.empty()) {
     if (!o.wind.empty() || !o.gusts.empty())
       throw InputError(
           "simulate: --wind and --gusts make a maneuver's wind; with --inputs the file's "
           "wind_speed and wind_direction columns are the wind");
-    const Dataset in = ReadDataFile(o.inputs, "usvid simulate");
-    result = sim.RunInputs(in, params, values, run);
-    truth["inputs_file"] = o.inputs;
+    inputs = ReadDataFile(o.inputs, "usvid simulate");
+    recipe.inputs = &inputs;
   }
-  if (result.diverged)
+  SimulatedRecord record = SimulateRecord(
+      recipe, [](const std::string& line) { std::cerr << "usvid simulate: " << line << '\n'; });
+  if (record.diverged)
     throw InputError("simulate: the " + info.name + " simulation diverged at t = " +
-                     std::to_string(result.diverged_at_s) + " s (check --params and inputs)");
-
-  // What the sensors log: the waves' motion on top, noise, each sensor's rate, its gaps.
-  Dataset& data = result.data;
-  std::vector<std::string> measured = info.states;
-  measured.insert(measured.end(), info.derived.begin(), info.derived.end());
-  for (std::string& c : LogDisturbances(data, o.logged, gusts ? &*gusts : nullptr, o.seed, values))
-    measured.push_back(std::move(c));
-  if (!o.logged.empty()) truth["logged"] = o.logged;
-  const SensorLog logged = LogAsSensors(data, measured, {o.waves, o.noise, o.rates, o.dropouts},
-                                        WaveHullLength(info.length_m), o.seed);
-  if (logged.sea) truth["waves"] = WaveSeaToJson(*logged.sea, logged.hull_length_m);
-  if (!logged.dropouts.empty()) truth["dropouts"] = DropoutsToJson(logged.dropouts);
-  AddRunTruth(o, info, params, effects, measured, logged, run, result, truth);
-
-  WriteDatasetCsv(o.out, data);
-  WriteJsonFile(TruthPath(o.out), truth);
-  std::cerr << "usvid simulate: wrote " << o.out << " (" << data.rows() << " rows, "
-            << data.duration() << " s) and " << TruthPath(o.out) << '\n';
+                     std::to_string(record.diverged_at_s) + " s (check --params and inputs)");
+  if (!o.inputs.empty()) record.truth["inputs_file"] = o.inputs;
+  WriteDatasetCsv(o.out, record.data);
+  WriteJsonFile(TruthPath(o.out), record.truth);
+  std::cerr << "usvid simulate: wrote " << o.out << " (" << record.data.rows() << " rows, "
+            << record.data.duration() << " s) and " << TruthPath(o.out) << '\n';
 }
 
 }  // namespace
