@@ -227,14 +227,14 @@ std::string RegressionReport::Markdown() const {
   return md.str();
 }
 
-RegressionReport CompareWithBaseline(const std::vector<ResultRow>& rows,
-                                     const nlohmann::json& baseline, const std::string& file) {
+namespace {
+
+// The baseline's cells by their key, as `file`'s rows give them.
+std::map<PairKey, std::vector<Cell>> BaselineCells(const nlohmann::json& baseline,
+                                                   const std::string& file) {
   if (!baseline.is_object() || !baseline.contains("rows") || !baseline["rows"].is_array())
     throw InputError(file + ": not a results.json (no \"rows\" array)");
-  std::map<PairKey, std::vector<Cell>> now, before;
-  for (const ResultRow& r : rows)
-    now[{r.vessel, r.train_maneuver, r.test_maneuver, r.method, r.noise, r.seed}].push_back(
-        {r.status, FitOrWorst(r.mean_fit_percent), r.fit_seconds});
+  std::map<PairKey, std::vector<Cell>> before;
   const nlohmann::json& baseline_rows = baseline["rows"];
   for (size_t i = 0; i < baseline_rows.size(); ++i) {
     const BaselineRow r(baseline_rows[i], i, file);
@@ -248,7 +248,12 @@ RegressionReport CompareWithBaseline(const std::vector<ResultRow>& rows,
             r.Get<double>("noise"), r.Get<uint64_t>("seed")}]
         .push_back(cell);
   }
+  return before;
+}
 
+// The cells of both runs paired by key, grouped by vessel and method.
+std::map<GroupKey, Group> PairedGroups(const std::map<PairKey, std::vector<Cell>>& now,
+                                       const std::map<PairKey, std::vector<Cell>>& before) {
   std::map<GroupKey, Group> groups;
   for (const auto& [key, cells] : now) {
     Group& g = groups[{std::get<0>(key), std::get<3>(key)}];
@@ -265,6 +270,50 @@ RegressionReport CompareWithBaseline(const std::vector<ResultRow>& rows,
     const size_t paired = it == now.end() ? 0 : std::min(cells.size(), it->second.size());
     g.only_baseline += static_cast<int>(cells.size() - paired);
   }
+  return groups;
+}
+
+// A group's line of the report: its fit and time tests (p adjusted by Holm) and its verdict.
+nlohmann::json GroupJson(const GroupKey& key, const Group& g, const Paired& fit,
+                         double fit_p_adjusted, const Paired& time, double time_p_adjusted,
+                         const std::string& verdict) {
+  const bool tested = fit.pairs > 0;
+  return {{"vessel", key.first},
+          {"method", key.second},
+          {"pairs", fit.pairs},
+          {"nonzero_pairs", fit.test.n},
+          {"median_fit_percent", JsonNumber(fit.median_now)},
+          {"baseline_median_fit_percent", JsonNumber(fit.median_before)},
+          {"median_difference", JsonNumber(fit.difference.median)},
+          {"difference_q1", JsonNumber(fit.difference.q1)},
+          {"difference_q3", JsonNumber(fit.difference.q3)},
+          {"p_value", tested ? JsonNumber(fit.test.p_value) : nullptr},
+          {"p_adjusted", JsonNumber(fit_p_adjusted)},
+          {"newly_failing", g.newly_failing.size()},
+          {"newly_failing_cells", g.newly_failing},
+          {"newly_ok", g.newly_ok},
+          {"failing_both", g.failing_both},
+          {"only_now", g.only_now},
+          {"only_baseline", g.only_baseline},
+          {"fit_seconds",
+           {{"pairs", time.pairs},
+            {"median", JsonNumber(time.median_now)},
+            {"baseline_median", JsonNumber(time.median_before)},
+            {"p_value", time.pairs > 0 ? JsonNumber(time.test.p_value) : nullptr},
+            {"p_adjusted", JsonNumber(time_p_adjusted)}}},
+          {"verdict", verdict}};
+}
+
+}  // namespace
+
+RegressionReport CompareWithBaseline(const std::vector<ResultRow>& rows,
+                                     const nlohmann::json& baseline, const std::string& file) {
+  const std::map<PairKey, std::vector<Cell>> before = BaselineCells(baseline, file);
+  std::map<PairKey, std::vector<Cell>> now;
+  for (const ResultRow& r : rows)
+    now[{r.vessel, r.train_maneuver, r.test_maneuver, r.method, r.noise, r.seed}].push_back(
+        {r.status, FitOrWorst(r.mean_fit_percent), r.fit_seconds});
+  const std::map<GroupKey, Group> groups = PairedGroups(now, before);
 
   // Both tests per group, then Holm over the groups that have pairs, per family.
   std::vector<Paired> fits, times;
@@ -291,32 +340,7 @@ RegressionReport CompareWithBaseline(const std::vector<ResultRow>& rows,
     const double time_p_adjusted = time.pairs > 0 ? time_adjusted[next_time++] : kNaN;
     const std::string verdict = Verdict(g, fit, fit_p_adjusted, time, time_p_adjusted);
     if (verdict == "worse fit" || verdict == "slower") ++report.worse;
-    const bool tested = fit.pairs > 0;
-    report.groups.push_back(
-        {{"vessel", key.first},
-         {"method", key.second},
-         {"pairs", fit.pairs},
-         {"nonzero_pairs", fit.test.n},
-         {"median_fit_percent", JsonNumber(fit.median_now)},
-         {"baseline_median_fit_percent", JsonNumber(fit.median_before)},
-         {"median_difference", JsonNumber(fit.difference.median)},
-         {"difference_q1", JsonNumber(fit.difference.q1)},
-         {"difference_q3", JsonNumber(fit.difference.q3)},
-         {"p_value", tested ? JsonNumber(fit.test.p_value) : nullptr},
-         {"p_adjusted", JsonNumber(fit_p_adjusted)},
-         {"newly_failing", g.newly_failing.size()},
-         {"newly_failing_cells", g.newly_failing},
-         {"newly_ok", g.newly_ok},
-         {"failing_both", g.failing_both},
-         {"only_now", g.only_now},
-         {"only_baseline", g.only_baseline},
-         {"fit_seconds",
-          {{"pairs", time.pairs},
-           {"median", JsonNumber(time.median_now)},
-           {"baseline_median", JsonNumber(time.median_before)},
-           {"p_value", time.pairs > 0 ? JsonNumber(time.test.p_value) : nullptr},
-           {"p_adjusted", JsonNumber(time_p_adjusted)}}},
-         {"verdict", verdict}});
+    report.groups.push_back(GroupJson(key, g, fit, fit_p_adjusted, time, time_p_adjusted, verdict));
   }
   return report;
 }
