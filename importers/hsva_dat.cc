@@ -75,13 +75,11 @@ bool IsRowOfNumbers(const std::string& line) {
   return count >= 2;
 }
 
-}  // namespace
-
-Dataset ParseHsvaDat(const std::string& text, const std::string& file, ImportReport& report) {
-  // The header, in cp1252, read here; the data rows, ASCII, by the tokenizer, which checks them
-  // as text and keeps their line numbers (the header is blanked for it).
+// The 4 header lines, in cp1252, turned to UTF-8; `pos` ends at the first data row.
+std::array<std::string, kHsvaHeaderLines> ReadHeader(const std::string& text,
+                                                     const std::string& file, size_t& pos) {
   std::array<std::string, kHsvaHeaderLines> header;
-  size_t pos = 0;
+  pos = 0;
   int lines = 0;
   while (lines < kHsvaHeaderLines && pos < text.size()) {
     const size_t end = std::min(text.find('\n', pos), text.size());
@@ -102,17 +100,12 @@ Dataset ParseHsvaDat(const std::string& text, const std::string& file, ImportRep
                              "the file ends after " + std::to_string(lines) +
                                  " lines: an HSVA file starts with 4 header lines (institute, "
                                  "ship, maneuver, title), then the data rows"));
-  const std::string maneuver = Trimmed(header[kHsvaManeuverLine - 1]);
-  if (maneuver.empty())
-    throw InputError(Located(file, kHsvaManeuverLine, 0,
-                             "header line 3 (the maneuver, e.g. 'Z20°/10° starting to "
-                             "starboard') is empty"));
+  return header;
+}
 
-  std::string body(kHsvaHeaderLines, '\n');
-  body.append(text, pos);
-  const CsvTable table = TokenizeWhitespace(body, file, kHsvaHeaderLines);
-  if (table.rows.empty())
-    throw InputError(Located(file, kHsvaHeaderLines, 0, "no data rows after the 4 header lines"));
+// The data rows as numbers, one column per kHsvaColumns, time increasing; an error names the
+// file:line:column of the first bad cell.
+Eigen::MatrixXd ReadRows(const CsvTable& table, const std::string& file) {
   const auto n = static_cast<Eigen::Index>(table.rows.size());
   Eigen::MatrixXd m(n, kHsvaColumns.size());
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -136,6 +129,28 @@ Dataset ParseHsvaDat(const std::string& text, const std::string& file, ImportRep
                                    " the previous " + FormatNumber(m(i - 1, 0)) +
                                    "; it must increase from row to row"));
   }
+  return m;
+}
+
+}  // namespace
+
+Dataset ParseHsvaDat(const std::string& text, const std::string& file, ImportReport& report) {
+  // The header, in cp1252, read here; the data rows, ASCII, by the tokenizer, which checks them
+  // as text and keeps their line numbers (the header is blanked for it).
+  size_t pos = 0;
+  const std::array<std::string, kHsvaHeaderLines> header = ReadHeader(text, file, pos);
+  const std::string maneuver = Trimmed(header[kHsvaManeuverLine - 1]);
+  if (maneuver.empty())
+    throw InputError(Located(file, kHsvaManeuverLine, 0,
+                             "header line 3 (the maneuver, e.g. 'Z20°/10° starting to "
+                             "starboard') is empty"));
+
+  std::string body(kHsvaHeaderLines, '\n');
+  body.append(text, pos);
+  const CsvTable table = TokenizeWhitespace(body, file, kHsvaHeaderLines);
+  if (table.rows.empty())
+    throw InputError(Located(file, kHsvaHeaderLines, 0, "no data rows after the 4 header lines"));
+  const Eigen::MatrixXd m = ReadRows(table, file);
 
   Dataset data(m.col(0));
   const Eigen::VectorXd psi = m.col(3) * kHsvaDeg;
@@ -156,7 +171,7 @@ Dataset ParseHsvaDat(const std::string& text, const std::string& file, ImportRep
   data.metadata()["maneuver"] = maneuver;
 
   std::ostringstream s;
-  s << file << ": " << n << " rows, " << Trimmed(header[0]) << ", " << Trimmed(header[1])
+  s << file << ": " << m.rows() << " rows, " << Trimmed(header[0]) << ", " << Trimmed(header[1])
     << ", maneuver '" << maneuver << "' (header line 3, kept in the record, not interpreted); "
     << "degrees to radians (psi, r, delta, phi), rev from rps to rpm; earth-fixed dx0/dt, dy0/dt "
     << "rotated to body-fixed surge and sway; at the log's scale";

@@ -76,6 +76,15 @@ bool NoWorse(const Criteria& c, const Criteria& base) {
 
 nlohmann::json OrNull(double x) { return std::isnan(x) ? nlohmann::json() : nlohmann::json(x); }
 
+// An alternative's replayed criteria, as its row of the report.
+nlohmann::json CriteriaRow(const Criteria& c, bool admissible) {
+  nlohmann::json row{{"first_overshoot_error_deg", OrNull(c.first_overshoot_deg)},
+                     {"tactical_diameter_error_percent", OrNull(c.tactical_diameter_percent)},
+                     {"admissible", admissible}};
+  if (!c.status.empty()) row["status"] = c.status;
+  return row;
+}
+
 }  // namespace
 
 nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
@@ -128,21 +137,13 @@ nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
     trial["effects"] = alternatives[i].at("effects");
     const Criteria c = Replay(trial, tests);
     const bool admissible = NoWorse(c, as_given);
-    rows[i] =
-        nlohmann::json{{"first_overshoot_error_deg", OrNull(c.first_overshoot_deg)},
-                       {"tactical_diameter_error_percent", OrNull(c.tactical_diameter_percent)},
-                       {"admissible", admissible}};
-    if (!c.status.empty()) rows[i]["status"] = c.status;
+    rows[i] = CriteriaRow(c, admissible);
     if (admissible) {
       chosen = i;
       break;
     }
   }
-  rows[0] = nlohmann::json{
-      {"first_overshoot_error_deg", OrNull(as_given.first_overshoot_deg)},
-      {"tactical_diameter_error_percent", OrNull(as_given.tactical_diameter_percent)},
-      {"admissible", true}};
-  if (!as_given.status.empty()) rows[0]["status"] = as_given.status;
+  rows[0] = CriteriaRow(as_given, true);
   for (size_t i = 0; i < alternatives.size(); ++i) {
     nlohmann::json row = {{"label", alternatives[i].at("label")},
                           {"free_run_error", alternatives[i].at("free_run_error")}};

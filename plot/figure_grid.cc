@@ -48,24 +48,18 @@ FigureGrid& FigureGrid::Add(LinePlot plot, double relative_height) {
   return *this;
 }
 
-std::string FigureGrid::ToSvg(int width, int height) const {
-  if (panels_.empty()) throw InputError("FigureGrid::ToSvg: the grid has no panels");
-  const int n = static_cast<int>(panels_.size());
-  if (width < kMinWidth || height < kMinPanelHeight * n) {
-    throw InputError("FigureGrid::ToSvg: canvas " + std::to_string(width) + " x " +
-                     std::to_string(height) + " px is smaller than the minimum " +
-                     std::to_string(kMinWidth) + " x " + std::to_string(kMinPanelHeight * n) +
-                     " px for " + std::to_string(n) + " panels");
-  }
+namespace {
 
-  // One x range for all: the first fixed range, else the union of the extents.
+// The request every panel starts from: one x range for all, the first fixed range, else the
+// union of the extents.
+LayoutRequest SharedXRange(const std::vector<LinePlot>& plots) {
   LayoutRequest shared;
   shared.allow_legend_below = false;
   shared.title_font_size = kPanelTitleFont;
-  for (const Panel& p : panels_) {
-    const auto e = p.plot.XExtent();
+  for (const LinePlot& plot : plots) {
+    const auto e = plot.XExtent();
     if (!e) continue;
-    if (p.plot.HasFixedXRange()) {
+    if (plot.HasFixedXRange()) {
       shared.x_extent = e;
       shared.x_fixed = true;
       break;
@@ -74,28 +68,21 @@ std::string FigureGrid::ToSvg(int width, int height) const {
                                                   std::max(shared.x_extent->second, e->second)}
                                       : *e;
   }
-  std::vector<LinePlot> plots;
-  std::vector<LayoutRequest> requests(n, shared);
-  for (const Panel& p : panels_) plots.push_back(p.plot);
-  requests.back().x_tick_labels = true;
-  for (int i = 0; i + 1 < n; ++i) {
-    requests[i].x_tick_labels = false;
-    requests[i].x_label = false;
-  }
-  // A legend that repeats the one above it is left out.
-  for (int i = 1; i < n; ++i) {
-    requests[i].legend = !SameLegend(plots[i].LegendEntries(), plots[i - 1].LegendEntries());
-  }
-  if (!x_label_.empty()) plots.back().SetXLabel(x_label_);
+  return shared;
+}
 
-  // Heights: fixed chrome (titles, ticks, labels) per panel, the rest shared by the plot areas;
-  // margins: the widest of all, so that the plot areas line up. Both settle in a few passes.
-  const double top = title_.empty() ? 0.0 : kGridPad + kGridTitleFont;
-  const double available = height - top;
-  const double shares = std::accumulate(panels_.begin(), panels_.end(), 0.0,
-                                        [](double s, const Panel& p) { return s + p.share; });
-  std::vector<double> heights(n);
-  for (int i = 0; i < n; ++i) heights[i] = available * panels_[i].share / shares;
+// Heights: fixed chrome (titles, ticks, labels) per panel, the rest of `available` shared by the
+// plot areas in proportion to `shares`; margins: the widest of all, so that the plot areas line
+// up. Both settle in a few passes; `requests` end with the common margins, `heights` with each
+// panel's height.
+std::vector<LinePlotLayout> SettleLayouts(const std::vector<LinePlot>& plots,
+                                          const std::vector<double>& shares, int width,
+                                          double available, std::vector<LayoutRequest>& requests,
+                                          std::vector<double>& heights) {
+  const int n = static_cast<int>(plots.size());
+  const double total_share = std::accumulate(shares.begin(), shares.end(), 0.0);
+  heights.assign(n, 0.0);
+  for (int i = 0; i < n; ++i) heights[i] = available * shares[i] / total_share;
   std::vector<LinePlotLayout> layouts(n);
   for (int pass = 0; pass <= kLayoutPasses; ++pass) {
     double left = 0.0;
@@ -110,11 +97,48 @@ std::string FigureGrid::ToSvg(int width, int height) const {
     if (pass == kLayoutPasses) break;
     const double areas = std::max(kMinArea * n, available - chrome);
     for (int i = 0; i < n; ++i) {
-      heights[i] = heights[i] - layouts[i].area_height + areas * panels_[i].share / shares;
+      heights[i] = heights[i] - layouts[i].area_height + areas * shares[i] / total_share;
       requests[i].min_left = left;
       requests[i].min_right = right;
     }
   }
+  return layouts;
+}
+
+}  // namespace
+
+std::string FigureGrid::ToSvg(int width, int height) const {
+  if (panels_.empty()) throw InputError("FigureGrid::ToSvg: the grid has no panels");
+  const int n = static_cast<int>(panels_.size());
+  if (width < kMinWidth || height < kMinPanelHeight * n) {
+    throw InputError("FigureGrid::ToSvg: canvas " + std::to_string(width) + " x " +
+                     std::to_string(height) + " px is smaller than the minimum " +
+                     std::to_string(kMinWidth) + " x " + std::to_string(kMinPanelHeight * n) +
+                     " px for " + std::to_string(n) + " panels");
+  }
+
+  std::vector<LinePlot> plots;
+  std::vector<double> shares;
+  for (const Panel& p : panels_) {
+    plots.push_back(p.plot);
+    shares.push_back(p.share);
+  }
+  std::vector<LayoutRequest> requests(n, SharedXRange(plots));
+  requests.back().x_tick_labels = true;
+  for (int i = 0; i + 1 < n; ++i) {
+    requests[i].x_tick_labels = false;
+    requests[i].x_label = false;
+  }
+  // A legend that repeats the one above it is left out.
+  for (int i = 1; i < n; ++i) {
+    requests[i].legend = !SameLegend(plots[i].LegendEntries(), plots[i - 1].LegendEntries());
+  }
+  if (!x_label_.empty()) plots.back().SetXLabel(x_label_);
+
+  const double top = title_.empty() ? 0.0 : kGridPad + kGridTitleFont;
+  std::vector<double> heights;
+  const std::vector<LinePlotLayout> layouts =
+      SettleLayouts(plots, shares, width, height - top, requests, heights);
 
   std::string out = svg::DocumentStart(width, height);
   if (!title_.empty()) {

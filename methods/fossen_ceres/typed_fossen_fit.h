@@ -228,9 +228,8 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
   const Eigen::Index batch = options.robust ? 1 : EquationBatch<Model>::kBatch;
   const long batches = static_cast<long>((d.rows() + batch - 1) / batch);
   long rows = 0;
-  for (const long b : EvenlySpread(batches, options.max_rows > 0
-                                                ? std::max<long>(1, options.max_rows / batch)
-                                                : 0)) {
+  for (const long b : EvenlySpread(
+           batches, options.max_rows > 0 ? std::max<long>(1, options.max_rows / batch) : 0)) {
     const Eigen::Index first = b * batch;
     auto* functor = new EquationBatch<Model>;
     for (Eigen::Index k = first; k < std::min(d.rows(), first + batch); ++k) {
@@ -261,6 +260,21 @@ BasicFossenFit<Model::kParams> FitEquationErrorOf(const PreparedData& prepared,
   return fit;
 }
 
+// Segment boundaries [b_j, b_{j+1}] of segments up to `segment_s` long: consecutive segments
+// share their boundary row. A segment ends at a gap longer than `gap` (core/stretches.h), and
+// the one across it is not fitted.
+inline std::vector<Eigen::Index> SimulationSegmentBounds(const Eigen::VectorXd& t, double segment_s,
+                                                         double gap) {
+  const auto rows = t.size();
+  std::vector<Eigen::Index> bounds = {0};
+  while (bounds.back() < rows - 1) {
+    Eigen::Index e = bounds.back();
+    while (e + 1 < rows && t(e + 1) - t(bounds.back()) <= segment_s && t(e + 1) - t(e) <= gap) ++e;
+    bounds.push_back(std::max(e, bounds.back() + 1));
+  }
+  return bounds;
+}
+
 template <typename Model>
 BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared,
                                                     const std::array<double, Model::kParams>& start,
@@ -278,17 +292,8 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
     track.Append(d.t()(k), u);
   }
   const std::array<double, 3> scale = {Sd(d["u_raw"]), Sd(d["v_raw"]), Sd(d["r_raw"])};
-  // Segment boundaries [b_j, b_{j+1}]: consecutive segments share their boundary row. A segment
-  // ends at a gap (core/stretches.h), and the one across it is not fitted.
   const double gap = GapLimit(d.t(), kGridGapFactor);
-  std::vector<Eigen::Index> bounds = {0};
-  while (bounds.back() < d.rows() - 1) {
-    Eigen::Index e = bounds.back();
-    while (e + 1 < d.rows() && d.t()(e + 1) - d.t()(bounds.back()) <= options.segment_s &&
-           d.t()(e + 1) - d.t()(e) <= gap)
-      ++e;
-    bounds.push_back(std::max(e, bounds.back() + 1));
-  }
+  const std::vector<Eigen::Index> bounds = SimulationSegmentBounds(d.t(), options.segment_s, gap);
   const size_t segments = bounds.size() - 1;
   std::vector<std::array<double, 3>> x0(segments + 1);
   for (size_t j = 0; j <= segments; ++j) {
@@ -307,8 +312,8 @@ BasicFossenFit<Model::kParams> FitSimulationErrorOf(const PreparedData& prepared
   for (const long j : EvenlySpread(
            static_cast<long>(segments),
            options.max_rows > 0
-               ? std::max<long>(1, std::lround(static_cast<double>(options.max_rows) /
-                                               rows_per_segment))
+               ? std::max<long>(
+                     1, std::lround(static_cast<double>(options.max_rows) / rows_per_segment))
                : 0))
     fitted[static_cast<size_t>(j)] = true;
   for (size_t j = 0; j < segments; ++j)
@@ -363,9 +368,8 @@ nlohmann::json EquationsOf(const std::array<double, Model::kParams>& p) {
                       "*abs(u))*u) / " + n(P::kM11)},
             {"v", "(" + f(1) + " - " + n(P::kM11) + "*u*r - (" + n(P::kYv) + " + " + n(P::kYvv) +
                       "*abs(v))*v) / " + n(P::kM22)},
-            {"r", "(" + f(2) + " - (" + n(P::kM22) + " - " + n(P::kM11) + ")*u*v - " +
-                      n(P::kNv) + "*v - (" + n(P::kNr) + " + " + n(P::kNrr) + "*abs(r))*r) / " +
-                      n(P::kM33)}};
+            {"r", "(" + f(2) + " - (" + n(P::kM22) + " - " + n(P::kM11) + ")*u*v - " + n(P::kNv) +
+                      "*v - (" + n(P::kNr) + " + " + n(P::kNrr) + "*abs(r))*r) / " + n(P::kM33)}};
   }
 }
 

@@ -67,6 +67,54 @@ void ForwardOrder(const Eigen::MatrixXd& g, const Eigen::VectorXd& xty, double s
   }
 }
 
+// The held-out SSE of each prefix of the forward order (index m: the first m terms and the
+// bias), per block: each block scored by the fit to the other blocks' rows.
+std::vector<std::vector<double>> HeldOutSse(const std::vector<NormalEquations>& blocks,
+                                            const Eigen::MatrixXd& g, const Eigen::VectorXd& xty,
+                                            const std::vector<int>& order) {
+  // Each block's own Gram matrix, and the others' (the rows that fit what the block scores).
+  std::vector<Eigen::MatrixXd> block_gram, rest_gram;
+  std::vector<Eigen::VectorXd> rest_xty;
+  for (const NormalEquations& b : blocks) {
+    block_gram.push_back(b.gram.selfadjointView<Eigen::Lower>());
+    rest_gram.push_back(g - block_gram.back());
+    rest_xty.push_back(xty - b.xty);
+  }
+  std::vector<std::vector<double>> sse(order.size() + 1);
+  std::vector<int> cols = {0};
+  for (size_t m = 1; m <= order.size(); ++m) {
+    cols.push_back(order[m - 1]);
+    for (size_t b = 0; b < blocks.size(); ++b) {
+      Eigen::VectorXd w;
+      if (blocks[b].rows == 0) {
+        sse[m].push_back(0.0);
+      } else if (SolveColumns(rest_gram[b], rest_xty[b], cols, w)) {
+        sse[m].push_back(BlockSse(blocks[b], block_gram[b], cols, w));
+      } else {
+        sse[m].push_back(INFINITY);
+      }
+    }
+  }
+  return sse;
+}
+
+// The one-standard-error rule on paired block differences: the shortest prefix whose held-out
+// SSE exceeds the best prefix's by no more than one standard error of that excess.
+size_t OneStandardErrorPrefix(const std::vector<std::vector<double>>& sse, size_t best) {
+  const size_t blocks = sse[best].size();
+  const double k = static_cast<double>(blocks);
+  for (size_t m = 1; m < best && k > 1; ++m) {
+    double mean = 0.0, var = 0.0;
+    for (size_t b = 0; b < blocks; ++b) mean += (sse[m][b] - sse[best][b]) / k;
+    for (size_t b = 0; b < blocks; ++b) {
+      const double d = sse[m][b] - sse[best][b] - mean;
+      var += d * d / (k - 1);
+    }
+    if (std::isfinite(mean) && mean <= std::sqrt(var / k)) return m;
+  }
+  return best;
+}
+
 }  // namespace
 
 OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
@@ -85,61 +133,24 @@ OlsFit FitOlsHeldOut(const std::vector<NormalEquations>& blocks) {
   ForwardOrder(g, total.xty, sst, order, err);
   if (order.empty()) return fit;
 
-  // Each block's own Gram matrix, and the others' (the rows that fit what the block scores).
-  std::vector<Eigen::MatrixXd> block_gram, rest_gram;
-  std::vector<Eigen::VectorXd> rest_xty;
-  for (const NormalEquations& b : blocks) {
-    block_gram.push_back(b.gram.selfadjointView<Eigen::Lower>());
-    rest_gram.push_back(g - block_gram.back());
-    rest_xty.push_back(total.xty - b.xty);
-  }
-  // Held-out SSE of each prefix of the forward order, per block.
-  std::vector<std::vector<double>> sse(order.size() + 1);
-  std::vector<int> cols = {0};
-  size_t best = 0;
+  const std::vector<std::vector<double>> sse = HeldOutSse(blocks, g, total.xty, order);
   auto total_of = [&](size_t m) {
     double t = 0.0;
     for (double e : sse[m]) t += e;
     return t;
   };
-  for (size_t m = 1; m <= order.size(); ++m) {
-    cols.push_back(order[m - 1]);
-    for (size_t b = 0; b < blocks.size(); ++b) {
-      Eigen::VectorXd w;
-      if (blocks[b].rows == 0) {
-        sse[m].push_back(0.0);
-      } else if (SolveColumns(rest_gram[b], rest_xty[b], cols, w)) {
-        sse[m].push_back(BlockSse(blocks[b], block_gram[b], cols, w));
-      } else {
-        sse[m].push_back(INFINITY);
-      }
-    }
+  size_t best = 0;
+  for (size_t m = 1; m <= order.size(); ++m)
     if (best == 0 || total_of(m) < total_of(best)) best = m;
-  }
   if (!std::isfinite(total_of(best))) best = 1;
-  // The one-standard-error rule on paired block differences: the shortest prefix whose
-  // held-out SSE exceeds the best's by no more than one standard error of that excess.
-  size_t best_terms = best;
-  const double k = static_cast<double>(blocks.size());
-  for (size_t m = 1; m < best && k > 1; ++m) {
-    double mean = 0.0, var = 0.0;
-    for (size_t b = 0; b < blocks.size(); ++b) mean += (sse[m][b] - sse[best][b]) / k;
-    for (size_t b = 0; b < blocks.size(); ++b) {
-      const double d = sse[m][b] - sse[best][b] - mean;
-      var += d * d / (k - 1);
-    }
-    if (std::isfinite(mean) && mean <= std::sqrt(var / k)) {
-      best_terms = m;
-      break;
-    }
-  }
+  const size_t best_terms = OneStandardErrorPrefix(sse, best);
   const double best_sse = total_of(best_terms);
 
   // The kept terms in their order in the tree, refitted on all rows.
   std::vector<std::pair<int, double>> kept;
   for (size_t m = 0; m < best_terms; ++m) kept.emplace_back(order[m], err[m]);
   std::sort(kept.begin(), kept.end());
-  cols = {0};
+  std::vector<int> cols = {0};
   for (const auto& [j, _] : kept) cols.push_back(j);
   Eigen::VectorXd w;
   if (!SolveColumns(g, total.xty, cols, w)) return fit;

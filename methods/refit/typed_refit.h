@@ -117,8 +117,8 @@ struct RefitSegment {
     effects.wind_over_ground = wind_over_ground;
     for (size_t j = 0; j < terms.size(); ++j)
       effects.extra_terms.push_back({terms[j], kappa[j] * term_scale[j]});
-    const size_t rows =
-        RolloutOpenLoop<V, T, Steppers::kRk4Only>(setup, start.data(), p.data(), effects, limits, out.data());
+    const size_t rows = RolloutOpenLoop<V, T, Steppers::kRk4Only>(setup, start.data(), p.data(),
+                                                                  effects, limits, out.data());
     int k = 0;
     for (size_t row = 1; row < times.size(); ++row) {
       const size_t use = std::min(row, rows - 1);  // a diverged run keeps its last state
@@ -368,6 +368,25 @@ inline double SegmentCorrelationTime(ceres::Problem& problem, int residuals, int
       Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())), channels);
 }
 
+// The parameters' slots in a block of K, scaled by their starts: `theta` the block's starting
+// values, `block_free` which of them are free parameters.
+template <Vessel V, int K>
+ParamSlots<V> FillSlots(const std::vector<double>& start, const std::array<bool, V::kParams>& free,
+                        std::array<double, K>& theta, std::array<bool, K>& block_free) {
+  ParamSlots<V> slots;
+  int next = 0;
+  for (int i = 0; i < V::kParams; ++i) {
+    slots.scale[i] = start[i] != 0.0 ? std::abs(start[i]) : 1.0;
+    slots.fixed[i] = start[i];
+    slots.slot[i] = K == V::kParams ? i : free[i] ? next++ : -1;
+    if (slots.slot[i] >= 0) {
+      theta[slots.slot[i]] = start[i] / slots.scale[i];
+      block_free[slots.slot[i]] = free[i];
+    }
+  }
+  return slots;
+}
+
 // RefitTyped with the vessel's parameters in a block of K (ParamSlots): the free ones in its
 // first slots when K is below V::kParams, else each parameter in its own slot.
 template <Vessel V, int K>
@@ -393,19 +412,9 @@ RefitResult RefitWith(const VesselInfo& info, const Dataset& data, const std::ve
   result.segment_s = segment_s;
   if (!(o.prior_sd > 0)) throw InputError("refit: the prior's standard deviation must be positive");
   // theta: the block; block_free: which of its values are free parameters.
-  ParamSlots<V> slots;
   std::array<double, K> theta{};
   std::array<bool, K> block_free{};
-  int next = 0;
-  for (int i = 0; i < V::kParams; ++i) {
-    slots.scale[i] = start[i] != 0.0 ? std::abs(start[i]) : 1.0;
-    slots.fixed[i] = start[i];
-    slots.slot[i] = K == V::kParams ? i : free[i] ? next++ : -1;
-    if (slots.slot[i] >= 0) {
-      theta[slots.slot[i]] = start[i] / slots.scale[i];
-      block_free[slots.slot[i]] = free[i];
-    }
-  }
+  const ParamSlots<V> slots = FillSlots<V, K>(start, free, theta, block_free);
   detail::MissingTerms missing = detail::ResolveMissingTerms(info, o.terms);
   const double dt = data.rows() > 1 ? data.duration() / static_cast<double>(data.rows() - 1) : 1.0;
   const auto bounds = detail::SpreadSegments(detail::SegmentBounds(data, segment_s), o.max_rows);
@@ -509,7 +518,7 @@ std::map<std::string, Eigen::VectorXd> DerivativeResidualTyped(const VesselInfo&
     V::template Derivative<double>(x.data(), u.data(), params.data(), Environment<double>{},
                                    dx.data());
     for (int c = 0; c < C; ++c)
-      out[std::string(V::kStateNames[dyn[c]])](k) = (*dot_col[c])(k) - dx[dyn[c]];
+      out[std::string(V::kStateNames[dyn[c]])](k) = (*dot_col[c])(k)-dx[dyn[c]];
   }
   return out;
 }
