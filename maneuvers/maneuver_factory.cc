@@ -3,7 +3,6 @@
 #include "core/error.h"
 #include "maneuvers/autopilot.h"
 #include "maneuvers/input_schedule.h"
-#include "maneuvers/maneuver_spec.h"
 #include "maneuvers/step_grid.h"
 #include "maneuvers/turning.h"
 #include "maneuvers/zigzag.h"
@@ -11,81 +10,116 @@
 namespace usvid {
 namespace {
 
-constexpr const char* kKnown =
-    "zigzag:A/B, turning:A, stepgrid:T/Y[/HOLD_S], random-steps, prbs, multisine, autopilot:HOLD";
+// A spec's numbers and how it was written, for the forms below.
+struct Args {
+  const ManeuverSpec& spec;
+  std::string text;  // as written, for messages
 
-// The spec's numbers; `count` of them are expected.
-std::vector<double> Numbers(const ManeuverSpec& parsed, size_t count, const std::string& spec) {
-  if (parsed.numbers.size() != count)
-    throw InputError("--maneuver '" + spec + "': expected " + std::to_string(count) +
-                     " number(s) after ':'");
-  return parsed.numbers;
+  bool Given() const { return !spec.numbers.empty(); }  // "name:" with no number does not parse
+  // The numbers, `min` to `max` of them.
+  const std::vector<double>& Numbers(size_t min, size_t max) const {
+    const size_t n = spec.numbers.size();
+    if (n < min || n > max)
+      throw InputError("--maneuver '" + text + "': expected " + std::to_string(min) +
+                       (max > min ? " to " + std::to_string(max) : "") + " number(s) after ':'");
+    return spec.numbers;
+  }
+  double Positive(double value) const {
+    if (!(value > 0)) throw InputError("--maneuver '" + text + "': the value must be positive");
+    return value;
+  }
+};
+
+// duration_s, or the maneuver's own `fallback` when 0.
+double Duration(double duration_s, double fallback) {
+  return duration_s > 0 ? duration_s : fallback;
 }
 
-double Positive(double value, const std::string& spec) {
-  if (!(value > 0)) throw InputError("--maneuver '" + spec + "': the value must be positive");
-  return value;
-}
+// One row per maneuver: its name and numbers as a user writes them, and how its numbers make it.
+// A maneuver's parameters are read here and nowhere else
+// (docs/architecture.md#adding-a-maneuver-parameter).
+struct ManeuverForm {
+  ManeuverKind kind;
+  const char* grammar;
+  std::unique_ptr<Maneuver> (*make)(const Args&, const Actuation&, double duration_s,
+                                    uint64_t seed);
+};
+
+constexpr ManeuverForm kForms[] = {
+    {ManeuverKind::kZigzag, "zigzag[:A/B]",
+     [](const Args& a, const Actuation& act, double duration_s, uint64_t) {
+       const std::vector<double> ab =
+           a.Given() ? a.Numbers(2, 2) : std::vector<double>{kDefaultZigzagDeg, kDefaultZigzagDeg};
+       return std::unique_ptr<Maneuver>(std::make_unique<ZigZag>(
+           act, ab[0], ab[1], Duration(duration_s, 300), a.spec.base_offset_rad));
+     }},
+    {ManeuverKind::kTurning, "turning[:A]",
+     [](const Args& a, const Actuation& act, double duration_s, uint64_t) {
+       const double angle = a.Given() ? a.Numbers(1, 1)[0] : kDefaultTurningDeg;
+       return std::unique_ptr<Maneuver>(
+           std::make_unique<Turning>(act, angle, Duration(duration_s, 300)));
+     }},
+    {ManeuverKind::kStepGrid, "stepgrid[:T/Y[/HOLD_S]]",
+     [](const Args& a, const Actuation& act, double duration_s, uint64_t) {
+       StepGridOptions opt;
+       if (a.Given()) {
+         // T/Y, or T/Y/H with a fixed hold of H seconds a step.
+         const std::vector<double>& ty = a.Numbers(2, 3);
+         opt.thrust_levels = static_cast<int>(ty[0]);
+         opt.yaw_levels = static_cast<int>(ty[1]);
+         if (ty.size() == 3) {
+           if (!(ty[2] > 0))
+             throw InputError("--maneuver '" + a.text + "': the hold must be positive");
+           opt.hold_s = ty[2];
+         }
+       }
+       return std::unique_ptr<Maneuver>(
+           std::make_unique<StepGrid>(act, opt, Duration(duration_s, 3600)));
+     }},
+    {ManeuverKind::kRandomSteps, "random-steps[:HOLD_S]",
+     [](const Args& a, const Actuation& act, double duration_s, uint64_t seed) {
+       const double hold = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 6.0;
+       return MakeRandomSteps(act, hold, Duration(duration_s, 600), seed);
+     }},
+    {ManeuverKind::kPrbs, "prbs[:CLOCK_S]",
+     [](const Args& a, const Actuation& act, double duration_s, uint64_t seed) {
+       const double clock = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 4.0;
+       return MakePrbs(act, clock, Duration(duration_s, 600), seed);
+     }},
+    {ManeuverKind::kMultisine, "multisine[:FMAX_HZ]",
+     [](const Args& a, const Actuation& act, double duration_s, uint64_t seed) {
+       const double f_max = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 0.2;
+       return MakeMultisine(act, f_max, Duration(duration_s, 600), seed);
+     }},
+    {ManeuverKind::kAutopilot, "autopilot[:HOLD_S]",
+     [](const Args& a, const Actuation& act, double duration_s, uint64_t seed) {
+       const double hold = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 20.0;
+       return std::unique_ptr<Maneuver>(
+           std::make_unique<Autopilot>(act, hold, Duration(duration_s, 600), seed));
+     }},
+};
 
 }  // namespace
+
+std::string ManeuverGrammar() {
+  std::string out;
+  for (const ManeuverForm& f : kForms) out += (out.empty() ? "" : ", ") + std::string(f.grammar);
+  return out;
+}
 
 std::unique_ptr<Maneuver> MakeManeuver(const std::string& spec, const Actuation& act,
                                        double duration_s, uint64_t seed) {
   return MakeManeuver(ParseManeuverSpec(spec), act, duration_s, seed);
 }
 
-std::unique_ptr<Maneuver> MakeManeuver(const ManeuverSpec& args, const Actuation& act,
+std::unique_ptr<Maneuver> MakeManeuver(const ManeuverSpec& spec, const Actuation& act,
                                        double duration_s, uint64_t seed) {
   if (duration_s < 0) throw InputError("--duration: must not be negative");
-  const std::string spec = args.Text();
-  const bool has_args = !args.numbers.empty();  // "name:" with no number does not parse
-  auto duration = [&](double fallback) { return duration_s > 0 ? duration_s : fallback; };
-
-  switch (args.kind) {
-    case ManeuverKind::kZigzag: {
-      const auto ab = has_args ? Numbers(args, 2, spec)
-                               : std::vector<double>{kDefaultZigzagDeg, kDefaultZigzagDeg};
-      return std::make_unique<ZigZag>(act, ab[0], ab[1], duration(300), args.base_offset_rad);
-    }
-    case ManeuverKind::kTurning: {
-      const double a = has_args ? Numbers(args, 1, spec)[0] : kDefaultTurningDeg;
-      return std::make_unique<Turning>(act, a, duration(300));
-    }
-    case ManeuverKind::kStepGrid: {
-      StepGridOptions opt;
-      if (has_args) {
-        // T/Y, or T/Y/H with a fixed hold of H seconds a step.
-        const auto ty = Numbers(args, args.numbers.size() == 3 ? 3 : 2, spec);
-        opt.thrust_levels = static_cast<int>(ty[0]);
-        opt.yaw_levels = static_cast<int>(ty[1]);
-        if (ty.size() == 3) {
-          if (!(ty[2] > 0))
-            throw InputError("--maneuver '" + spec + "': the hold must be positive");
-          opt.hold_s = ty[2];
-        }
-      }
-      return std::make_unique<StepGrid>(act, opt, duration(3600));
-    }
-    case ManeuverKind::kRandomSteps: {
-      const double hold = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 6.0;
-      return MakeRandomSteps(act, hold, duration(600), seed);
-    }
-    case ManeuverKind::kPrbs: {
-      const double clock = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 4.0;
-      return MakePrbs(act, clock, duration(600), seed);
-    }
-    case ManeuverKind::kMultisine: {
-      const double f_max = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 0.2;
-      return MakeMultisine(act, f_max, duration(600), seed);
-    }
-    case ManeuverKind::kAutopilot: {
-      const double hold = has_args ? Positive(Numbers(args, 1, spec)[0], spec) : 20.0;
-      return std::make_unique<Autopilot>(act, hold, duration(600), seed);
-    }
-    case ManeuverKind::kUnknown:
-      break;
-  }
-  throw InputError("--maneuver '" + spec + "': unknown maneuver (known: " + kKnown + ")");
+  const Args args{spec, spec.Text()};
+  for (const ManeuverForm& f : kForms)
+    if (f.kind == spec.kind) return f.make(args, act, duration_s, seed);
+  throw InputError("--maneuver '" + args.text + "': unknown maneuver (known: " + ManeuverGrammar() +
+                   ")");
 }
 
 }  // namespace usvid

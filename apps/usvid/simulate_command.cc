@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/json_file.h"
 #include "core/parse_number.h"
+#include "maneuvers/maneuver_factory.h"
 #include "maneuvers/true_wind.h"
 #include "simulation/logged_disturbances.h"
 #include "simulation/simulate_record.h"
@@ -142,9 +143,7 @@ void AddSimulateCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Run a maneuver on a simulator, or drive it with recorded inputs");
   cmd->add_option("--vessel", o->vessel, "Simulator: " + VesselChoices())->required();
-  cmd->add_option("--maneuver", o->maneuver,
-                  "zigzag[:A/B], turning[:A], stepgrid[:T/Y], random-steps[:HOLD_S], "
-                  "prbs[:CLOCK_S], multisine[:FMAX_HZ], autopilot[:HOLD_S]");
+  cmd->add_option("--maneuver", o->maneuver, ManeuverGrammar() + " (docs/data.md#maneuvers)");
   cmd->add_option("--inputs", o->inputs,
                   "Drive open-loop with the input columns of this CSV (zero-order hold); output "
                   "at its time stamps, initial state from its first row");
