@@ -21,16 +21,19 @@ double Wrap(double a) {
 
 }  // namespace
 
-Autopilot::Autopilot(const Actuation& act, double hold_s, double duration_s, uint64_t seed)
-    : act_(act), hold_s_(hold_s), duration_s_(duration_s) {
+Autopilot::Autopilot(const Actuation& act, double hold_s, double duration_s, uint64_t seed,
+                     double course_span_deg)
+    : act_(act), hold_s_(hold_s), duration_s_(duration_s), course_span_deg_(course_span_deg) {
   if (act.heading_state < 0 || act.rate_state < 0)
     throw InputError("--maneuver autopilot: the vessel has no heading and yaw rate");
   if (!(hold_s > 0 && std::isfinite(hold_s)))
     throw InputError("--maneuver autopilot:HOLD: HOLD must be positive seconds");
+  if (!(course_span_deg > 0 && course_span_deg <= 180))
+    throw InputError("--maneuver autopilot:HOLD/SPAN: SPAN must be in (0, 180] deg");
   std::seed_seq seq{static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32), 0xA070u};
   std::mt19937_64 rng(seq);
   std::uniform_real_distribution<double> span(0.5 * hold_s, 1.5 * hold_s);
-  std::uniform_real_distribution<double> course(-kCourseSpanDeg * kDeg, kCourseSpanDeg * kDeg);
+  std::uniform_real_distribution<double> course(-course_span_deg * kDeg, course_span_deg * kDeg);
   course_ = {{0.0}, {0.0}};  // the initial heading first
   for (double t = span(rng); t < duration_s; t += span(rng)) {
     course_.times.push_back(t);
@@ -49,9 +52,12 @@ Autopilot::Autopilot(const Actuation& act, double hold_s, double duration_s, uin
 }
 
 std::string Autopilot::Spec() const {
-  const double rounded = std::round(hold_s_);
-  return "autopilot:" +
-         (rounded == hold_s_ ? std::to_string(static_cast<int>(rounded)) : std::to_string(hold_s_));
+  auto text = [](double x) {
+    const double rounded = std::round(x);
+    return rounded == x ? std::to_string(static_cast<int>(rounded)) : std::to_string(x);
+  };
+  return "autopilot:" + text(hold_s_) +
+         (course_span_deg_ == kDefaultCourseSpanDeg ? "" : "/" + text(course_span_deg_));
 }
 
 std::vector<double> Autopilot::InitialCommand() const {
@@ -93,6 +99,7 @@ nlohmann::json Autopilot::Report() const {
   std::vector<double> courses_deg;
   for (double c : course_.levels) courses_deg.push_back(c / kDeg);
   return {{"hold_s", hold_s_},
+          {"course_span_deg", course_span_deg_},
           {"course_times_s", course_.times},
           {"courses_deg", courses_deg},
           {"course_changes", course_.times.size() - 1},

@@ -4,7 +4,8 @@
 // it (a current, a missing moment), so input and disturbance are correlated: the
 // closed-loop-identification problem that open-loop maneuvers avoid (docs/compare.md#realistic).
 //   setpoint   psi_ref: the initial heading, then every hold_s (uniform in [hold/2, 3 hold/2])
-//              a new course uniform within +-kCourseSpanDeg of the initial heading
+//              a new course uniform within +-course_span_deg of the initial heading (default
+//              kDefaultCourseSpanDeg)
 //   yaw        delta = Kp e - Kd r + Ki integral(e) [deg of rudder, starboard positive], with
 //              e = psi_ref - psi wrapped to +-180 deg and r in deg/s; clipped at +-yaw_full_deg
 //              (the command saturates on every large course change) and slewed at the
@@ -21,9 +22,8 @@
 // clipped.
 #pragma once
 
-#include <memory>
-
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "maneuvers/maneuver.h"
@@ -34,13 +34,15 @@ namespace usvid {
 
 class Autopilot : public Maneuver {
  public:
-  static constexpr double kCourseSpanDeg = 60.0;
+  static constexpr double kDefaultCourseSpanDeg = 60.0;
   static constexpr double kFullErrorDeg = 20.0;    // heading error that commands full rudder
   static constexpr double kDerivativeTimeS = 3.0;  // Kd = Kp x this
   static constexpr double kIntegralTimeS = 60.0;   // Ki = Kp / this
 
-  // Throws InputError when the vessel has no heading or yaw rate, or hold_s is not positive.
-  Autopilot(const Actuation& act, double hold_s, double duration_s, uint64_t seed);
+  // Throws InputError when the vessel has no heading or yaw rate, or hold_s or course_span_deg
+  // is not positive.
+  Autopilot(const Actuation& act, double hold_s, double duration_s, uint64_t seed,
+            double course_span_deg = kDefaultCourseSpanDeg);
 
   std::string Spec() const override;
   double Duration() const override { return duration_s_; }
@@ -52,7 +54,7 @@ class Autopilot : public Maneuver {
 
  private:
   Actuation act_;
-  double hold_s_, duration_s_;
+  double hold_s_, duration_s_, course_span_deg_;
   Steps course_;  // setpoint offsets from psi0 [rad]
   Steps thrust_, side_;
   int side_input_ = -1;

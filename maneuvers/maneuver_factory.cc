@@ -91,11 +91,12 @@ constexpr ManeuverForm kForms[] = {
        const double f_max = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 0.2;
        return MakeMultisine(act, f_max, Duration(duration_s, 600), seed);
      }},
-    {ManeuverKind::kAutopilot, "autopilot[:HOLD_S]",
+    {ManeuverKind::kAutopilot, "autopilot[:HOLD_S[/SPAN_DEG]]",
      [](const Args& a, const Actuation& act, double duration_s, uint64_t seed) {
-       const double hold = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 20.0;
-       return std::unique_ptr<Maneuver>(
-           std::make_unique<Autopilot>(act, hold, Duration(duration_s, 600), seed));
+       const std::vector<double> n = a.Given() ? a.Numbers(1, 2) : std::vector<double>{20.0};
+       const double span = n.size() == 2 ? n[1] : Autopilot::kDefaultCourseSpanDeg;
+       return std::unique_ptr<Maneuver>(std::make_unique<Autopilot>(
+           act, a.Positive(n[0]), Duration(duration_s, 600), seed, span));
      }},
 };
 

@@ -99,6 +99,24 @@ TEST(AutopilotTest, CommandStaysInRangeAndRepeats) {
   EXPECT_EQ(a.data["psi"], b.data["psi"]);
 }
 
+// autopilot:HOLD/SPAN: the operator's courses lie within +-SPAN deg of the initial heading (the
+// default's 60 deg reaches beyond 20 over a run of this length), and the spec says its span.
+TEST(AutopilotTest, TheCourseSpanBoundsTheCourses) {
+  const Actuation& odin = FindVessel("odin3dof").Info().actuation;
+  auto widest = [&](const std::string& spec) {
+    const auto m = MakeManeuver(spec, odin, 2000, 3);
+    double widest = 0.0;
+    for (const double c : m->Report().at("courses_deg").get<std::vector<double>>())
+      widest = std::max(widest, std::abs(c));
+    EXPECT_EQ(m->Spec(), spec);
+    return widest;
+  };
+  EXPECT_LE(widest("autopilot:20/10"), 10.0);
+  EXPECT_GT(widest("autopilot:20"), 20.0);
+  EXPECT_THROW(MakeManeuver("autopilot:20/0", odin, 0, 1), InputError);
+  EXPECT_THROW(MakeManeuver("autopilot:20/10/5", odin, 0, 1), InputError);
+}
+
 TEST(AutopilotTest, BadSpecsAreRefused) {
   EXPECT_THROW(MakeManeuver("autopilot", FindVessel("msd").Info().actuation, 0, 1), InputError);
   const Actuation& odin = FindVessel("odin3dof").Info().actuation;
