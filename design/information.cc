@@ -7,10 +7,11 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/model_view.h"
 #include "design/eb_lr_information.h"
 #include "design/method_problem.h"
-#include "methods/eb_lr/eb_lr.h"
 #include "maneuvers/maneuver_factory.h"
+#include "methods/eb_lr/eb_lr.h"
 #include "sensors/noise.h"
 #include "simulation/vessel_simulator.h"
 
@@ -115,8 +116,8 @@ ManeuverInformation InformationOf(const DesignProblem& problem, const std::strin
                      " carries no information about the parameters of " + problem.method);
   // Directions with no information at all keep a finite, huge sd (1e-300 of the largest).
   const Eigen::VectorXd lambda = eig.eigenvalues().cwiseMax(eig.eigenvalues().maxCoeff() * 1e-300);
-  const Eigen::MatrixXd bound = eig.eigenvectors() * lambda.cwiseInverse().asDiagonal() *
-                                eig.eigenvectors().transpose();
+  const Eigen::MatrixXd bound =
+      eig.eigenvectors() * lambda.cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
   // The method's own covariance: the bound, but for eb-lr, which uses part of the record.
   Eigen::MatrixXd cov = bound;
   const Dataset noisy = NoisyRun(problem, maneuver, 1);
@@ -124,14 +125,14 @@ ManeuverInformation InformationOf(const DesignProblem& problem, const std::strin
   m.unusable = probe.unusable;
   if (problem.method == eb_lr::kMethodName && m.unusable.empty()) {
     std::vector<std::pair<double, double>> windows;
-    for (const auto& w : probe.model.at("eb_lr").at("steady_windows"))
+    for (const auto& w : ModelView(probe.model).Section("eb_lr").at("steady_windows"))
       windows.emplace_back(w.at("start_s"), w.at("end_s"));
     cov = EbLrCovariance(r.information, data, noisy, windows, problem.noise);
     m.information = cov.inverse();
   }
   for (size_t i = 0; i < r.free.size(); ++i) {
-    const size_t p = std::find(info.params.begin(), info.params.end(), r.free[i]) -
-                     info.params.begin();
+    const size_t p =
+        std::find(info.params.begin(), info.params.end(), r.free[i]) - info.params.begin();
     const double value = info.default_params[p];
     const auto ii = static_cast<Eigen::Index>(i);
     const double scale = value != 0.0 ? std::abs(value) : 1.0;

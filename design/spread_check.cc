@@ -4,13 +4,15 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/model_view.h"
 #include "methods/identify.h"
 
 namespace usvid::design {
 
 SpreadCheck CheckSpread(const DesignProblem& problem, const ManeuverInformation& predicted,
                         int runs, int threads) {
-  if (runs < 2) throw InputError("design: --check needs at least 2 runs, not " + std::to_string(runs));
+  if (runs < 2)
+    throw InputError("design: --check needs at least 2 runs, not " + std::to_string(runs));
   const size_t n = predicted.names.size();
   std::vector<std::vector<double>> estimates(static_cast<size_t>(runs));
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(1, threads))
@@ -24,7 +26,11 @@ SpreadCheck CheckSpread(const DesignProblem& problem, const ManeuverInformation&
       r.threads = 1;
       const nlohmann::json model = Identify(data, r);
       std::vector<double> p;
-      for (const std::string& name : predicted.names) p.push_back(model.at("parameters").at(name));
+      for (const std::string& name : predicted.names) {
+        const std::optional<double> value = ModelView(model).Parameter(name);
+        if (!value) throw InputError("the fit has no parameter " + name);  // counted, not scored
+        p.push_back(*value);
+      }
       estimates[static_cast<size_t>(k)] = std::move(p);
     } catch (const std::exception&) {
       // A failed fit is counted, not scored.

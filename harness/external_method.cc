@@ -7,8 +7,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +17,7 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/model_view.h"
 #include "core/parse_number.h"
 
 extern char** environ;
@@ -87,8 +88,7 @@ int Run(const std::vector<std::string>& argv, const fs::path& out, const fs::pat
   posix_spawnattr_destroy(&attr);
   if (spawned != 0)
     throw InputError(what + ": cannot run '" + argv[0] + "': " + std::strerror(spawned));
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   int status = 0;
   while (true) {
     const pid_t done = waitpid(pid, &status, WNOHANG);
@@ -140,9 +140,9 @@ nlohmann::json IdentifyExternal(const ExternalCommand& command, const Dataset& t
   const fs::path out = folder.path() / "stdout.txt", err = folder.path() / "stderr.txt";
   WriteDatasetCsv(data.string(), train);
   std::vector<std::string> argv = command.command;
-  for (const std::string& a : {std::string("--data"), data.string(), std::string("--states"),
-                               Join(states), std::string("--inputs"), Join(inputs),
-                               std::string("--out"), model.string()})
+  for (const std::string& a :
+       {std::string("--data"), data.string(), std::string("--states"), Join(states),
+        std::string("--inputs"), Join(inputs), std::string("--out"), model.string()})
     argv.push_back(a);
   const int status = Run(argv, out, err, command.timeout_s, what);
   const std::string said = LastLine(err);
@@ -150,8 +150,7 @@ nlohmann::json IdentifyExternal(const ExternalCommand& command, const Dataset& t
   if (WIFSIGNALED(status))
     throw InputError(what + ": killed by signal " + std::to_string(WTERMSIG(status)) + because);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw InputError(what + ": exited with code " + std::to_string(WEXITSTATUS(status)) +
-                     because);
+    throw InputError(what + ": exited with code " + std::to_string(WEXITSTATUS(status)) + because);
   if (!fs::exists(model)) throw InputError(what + ": wrote no model.json");
   nlohmann::json m;
   try {
@@ -159,13 +158,14 @@ nlohmann::json IdentifyExternal(const ExternalCommand& command, const Dataset& t
   } catch (const InputError& e) {  // file:line:column of the syntax error
     throw InputError(what + ": its model.json is not JSON: " + e.what());
   }
-  if (!m.is_object())
-    throw InputError(what + ": its model.json is not a JSON object");
-  if (!(m.contains("equations") && m["equations"].is_object() && !m["equations"].empty()))
+  if (!m.is_object()) throw InputError(what + ": its model.json is not a JSON object");
+  if (ModelView(m).EquationStates().empty())
     throw InputError(what + ": its model.json has no \"equations\" (state: expression)");
-  if (!m.contains("method")) m["method"] = std::string(kExternalMethod) + ":" + command.name;
-  if (!m.contains("states")) m["states"] = states;
-  if (!m.contains("inputs")) m["inputs"] = inputs;
+  // What the command's model leaves out, usvid says (harness/external_method.h).
+  const ModelView view(m);
+  if (view.Method().empty()) m["method"] = std::string(kExternalMethod) + ":" + command.name;
+  if (view.States().empty()) m["states"] = states;
+  if (view.Inputs().empty()) m["inputs"] = inputs;
   return m;
 }
 

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "core/model_view.h"
 #include "core/parallel_for.h"
 #include "core/records.h"
 #include "effects/effect.h"
@@ -56,16 +57,16 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
   double precision = 0.0, recall = 0.0;
   int known = 0;
   row.terms = 0;
-  if (!model.contains("equations")) {
+  const ModelView view(model);
+  if (!view.HasEquations()) {
     // A vessel model: its complexity is what was fitted (refit's parameters, and diagnose's
     // effects or hybrid's missing terms).
-    if (const std::string refit(kRefitMethodName); model.contains(refit))
-      row.terms = static_cast<int>(model[refit]["free"].size());
-    if (model.contains("effects")) row.terms += static_cast<int>(model["effects"].size());
+    if (const nlohmann::json& refit = view.Section(std::string(kRefitMethodName)); !refit.is_null())
+      row.terms = static_cast<int>(refit.at("free").size());
+    row.terms += static_cast<int>(view.Effects().size());
     return;
   }
-  for (const auto& [state, eq] : model.at("equations").items()) {
-    const std::string text = eq.get<std::string>();
+  for (const auto& [state, text] : view.Equations()) {
     row.terms += TermCount(text);
     if (const auto truth = TrueTerms(vessel, state)) {
       const StructureScore s = ScoreStructure(text, *truth);
@@ -81,23 +82,19 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
   if (measured || vessel.empty()) return;  // no true parameters to compare with
   const VesselInfo& info = FindVessel(vessel).Info();
   double worst = -1.0;
-  for (size_t i = 0; i < info.params.size(); ++i) {
-    if (!model.contains("parameters") || !model["parameters"].contains(info.params[i])) continue;
-    const double p = model["parameters"][info.params[i]].get<double>();
-    worst = std::max(worst, std::abs(p / info.default_params[i] - 1.0));
-  }
+  for (size_t i = 0; i < info.params.size(); ++i)
+    if (const std::optional<double> p = view.Parameter(info.params[i]))
+      worst = std::max(worst, std::abs(*p / info.default_params[i] - 1.0));
   if (worst >= 0) row.parameter_error = worst;
 }
 
 // What a row's model was driven by: its inputs, and the force map that derived them.
 std::string InputsOf(const nlohmann::json& model) {
+  const ModelView view(model);
   std::string text;
-  if (model.contains("preprocessing") &&
-      model["preprocessing"].value("forces", nlohmann::json()).is_string())
-    text = "forces " + model["preprocessing"]["forces"].get<std::string>() + ": ";
-  if (!model.contains("inputs")) return text;
-  for (size_t i = 0; i < model["inputs"].size(); ++i)
-    text += (i ? "," : "") + model["inputs"][i].get<std::string>();
+  if (const std::string forces = view.Forces(); !forces.empty()) text = "forces " + forces + ": ";
+  const std::vector<std::string> inputs = view.Inputs();
+  for (size_t i = 0; i < inputs.size(); ++i) text += (i ? "," : "") + inputs[i];
   return text;
 }
 
@@ -118,15 +115,11 @@ IdentifyRequest RequestFor(const Suite& suite, const FitJob& job) {
 
 // The states a model is scored on: those it has equations for, or a vessel model's states.
 std::vector<std::string> ScoredStates(const nlohmann::json& model) {
+  const ModelView view(model);
+  if (view.HasEquations()) return view.EquationStates();
   std::vector<std::string> states;
-  if (model.contains("equations")) {
-    for (const auto& [state, _] : model.at("equations").items()) states.push_back(state);
-  } else if (model.contains("states")) {
-    for (const auto& s : model.at("states")) {
-      const std::string name = s.get<std::string>();
-      if (!IsPositionOrHeading(name)) states.push_back(name);
-    }
-  }
+  for (const std::string& name : view.States())
+    if (!IsPositionOrHeading(name)) states.push_back(name);
   return states;
 }
 

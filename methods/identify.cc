@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "core/derived_channels.h"
+#include "core/model_view.h"
 #include "core/parse_number.h"
 #include "methods/registry.h"
 #include "methods/self_damping.h"
@@ -26,10 +27,12 @@ nlohmann::json Identify(const Method& method, Dataset data, const IdentifyReques
   if (const std::vector<std::string> unread = options.Unread(); !unread.empty())
     throw std::logic_error("method " + method.name + " declares option '" + unread.front() +
                            "' but did not read it");
-  if (!model.contains("options")) model["options"] = options.Json();  // a preset may say more
-  if (model.contains("equations") && model["equations"].is_object()) {
-    const std::map<std::string, double> damping = SelfDamping(model["equations"], data);
-    const std::map<std::string, double> straight = StraightRunningDamping(model["equations"], data);
+  // A preset may say more of its options than were given.
+  if (ModelView(model).Section("options").is_null()) model["options"] = options.Json();
+  if (!ModelView(model).EquationStates().empty()) {
+    const EquationList equations = ModelView(model).Equations();
+    const std::map<std::string, double> damping = SelfDamping(equations, data);
+    const std::map<std::string, double> straight = StraightRunningDamping(equations, data);
     nlohmann::json undamped = nlohmann::json::array();
     for (const auto& [state, d] : damping) {
       const auto at = straight.find(state);

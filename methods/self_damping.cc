@@ -21,10 +21,10 @@ struct Equation {
 };
 
 // The state's equation when the data hold its state and every variable it reads.
-std::optional<Equation> Resolve(const std::string& state, const nlohmann::json& text,
+std::optional<Equation> Resolve(const std::string& state, const std::string& text,
                                 const Dataset& data) {
-  if (!text.is_string() || !data.Has(state)) return std::nullopt;
-  Equation e{Expression::Parse(text.get<std::string>(), "equations." + state), {}, -1};
+  if (!data.Has(state)) return std::nullopt;
+  Equation e{Expression::Parse(text, "equations." + state), {}, -1};
   for (const std::string& name : e.f.Variables()) {
     const Channel* c = data.Find(name);
     if (c == nullptr) return std::nullopt;
@@ -50,9 +50,9 @@ double Slope(const Expression& f, std::vector<double> vars, size_t self, double 
 
 }  // namespace
 
-std::map<std::string, double> SelfDamping(const nlohmann::json& equations, const Dataset& data) {
+std::map<std::string, double> SelfDamping(const EquationList& equations, const Dataset& data) {
   std::map<std::string, double> out;
-  for (const auto& [state, text] : equations.items()) {
+  for (const auto& [state, text] : equations) {
     const std::optional<Equation> e = Resolve(state, text, data);
     if (!e) continue;
     if (e->self < 0) {  // the equation does not read its state: no damping at all
@@ -82,10 +82,10 @@ std::map<std::string, double> SelfDamping(const nlohmann::json& equations, const
   return out;
 }
 
-std::map<std::string, double> StraightRunningDamping(const nlohmann::json& equations,
+std::map<std::string, double> StraightRunningDamping(const EquationList& equations,
                                                      const Dataset& data) {
   std::map<std::string, double> out;
-  for (const auto& [state, text] : equations.items()) {
+  for (const auto& [state, text] : equations) {
     const std::optional<Equation> e = Resolve(state, text, data);
     if (!e) continue;
     if (e->self < 0) {

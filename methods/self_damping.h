@@ -15,6 +15,7 @@
 #include <string>
 
 #include "core/dataset.h"
+#include "core/model_view.h"
 
 namespace usvid {
 
@@ -22,11 +23,11 @@ namespace usvid {
 // sampled; a state whose equation reads a variable the data lack, or has no such row, is left
 // out. Central differences, step 1e-6 x (|x| + the state's RMS), in double; on a long log every
 // k-th row, at most 20000.
-std::map<std::string, double> SelfDamping(const nlohmann::json& equations, const Dataset& data);
+std::map<std::string, double> SelfDamping(const EquationList& equations, const Dataset& data);
 
 // state -> d(x')/dx [1/s] at straight running (straight_running.h; the mean over the two points
 // of a state a mirror turns over), the levels read over the samples of `data`; left out as above.
-std::map<std::string, double> StraightRunningDamping(const nlohmann::json& equations,
+std::map<std::string, double> StraightRunningDamping(const EquationList& equations,
                                                      const Dataset& data);
 
 }  // namespace usvid

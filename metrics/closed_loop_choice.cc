@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "core/model_view.h"
 #include "maneuvers/maneuver_spec.h"
 #include "metrics/recorded_tests.h"
 #include "metrics/zigzag_response.h"
@@ -90,9 +91,8 @@ nlohmann::json CriteriaRow(const Criteria& c, bool admissible) {
 nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
                                   const std::string& vessel_given) {
   nlohmann::json report = {{"applied", false}};
-  const std::string vessel =
-      !vessel_given.empty() ? vessel_given : model.value("vessel", std::string());
-  const nlohmann::json alternatives = model.value("alternatives", nlohmann::json::array());
+  const std::string vessel = !vessel_given.empty() ? vessel_given : ModelView(model).Vessel();
+  const std::vector<ModelAlternative> alternatives = ModelView(model).Alternatives();
   if (alternatives.empty()) {
     report["reason"] = "the model weighed no alternatives";
     return report;
@@ -119,22 +119,19 @@ nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
   // of their free-run errors, and the first admissible one is chosen; alternatives[0] is the
   // vessel as given (methods/gp/grey_box.h), admissible by definition, so none with a higher
   // error than the vessel's is replayed.
-  const auto free_run = [&](size_t i) {
-    const nlohmann::json& e = alternatives[i].at("free_run_error");
-    return e.is_number() ? e.get<double>() : std::numeric_limits<double>::infinity();
-  };
+  const auto free_run = [&](size_t i) { return alternatives[i].FreeRunError(); };
   std::vector<size_t> order(alternatives.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t a, size_t b) { return free_run(a) < free_run(b); });
   nlohmann::json trial = model;
-  trial["effects"] = alternatives[0].at("effects");
+  ModelEdit(trial).SetEffects(alternatives[0].effects);
   const Criteria as_given = Replay(trial, tests);
   size_t chosen = 0;
   std::map<size_t, nlohmann::json> rows;
   for (const size_t i : order) {
     if (i == 0 || !(free_run(i) < free_run(0))) break;
-    trial["effects"] = alternatives[i].at("effects");
+    ModelEdit(trial).SetEffects(alternatives[i].effects);
     const Criteria c = Replay(trial, tests);
     const bool admissible = NoWorse(c, as_given);
     rows[i] = CriteriaRow(c, admissible);
@@ -145,19 +142,20 @@ nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
   }
   rows[0] = CriteriaRow(as_given, true);
   for (size_t i = 0; i < alternatives.size(); ++i) {
-    nlohmann::json row = {{"label", alternatives[i].at("label")},
-                          {"free_run_error", alternatives[i].at("free_run_error")}};
+    nlohmann::json row = {{"label", alternatives[i].label},
+                          {"free_run_error", alternatives[i].free_run_error}};
     if (rows.contains(i))
       row.update(rows[i]);
     else
       row["replayed"] = false;  // its free runs were no better than the choice's or the vessel's
     report["alternatives"].push_back(row);
   }
-  const nlohmann::json& best = alternatives[chosen];
-  model["effects"] = best.at("effects");
-  model["corrections"] = best.at("corrections");
+  const ModelAlternative& best = alternatives[chosen];
+  ModelEdit edit(model);
+  edit.SetEffects(best.effects);
+  edit.SetCorrections(best.corrections);
   report["applied"] = true;
-  report["chosen"] = best.at("label");
+  report["chosen"] = best.label;
   report["reason"] =
       "the lowest held-out free-run error among the models whose training zig-zags and turning "
       "circles, replayed closed-loop, are no worse than the vessel's";

@@ -11,6 +11,7 @@
 
 #include "core/derived_channels.h"
 #include "core/error.h"
+#include "core/model_view.h"
 #include "maneuvers/maneuver_factory.h"
 #include "maneuvers/maneuver_spec.h"
 #include "maneuvers/true_wind.h"
@@ -255,10 +256,7 @@ ReplayClock ClockFor(const Dataset& recorded) {
 }
 
 // Whether the model's inputs include jet forces computed from the actuator states.
-bool JetForces(const nlohmann::json& model) {
-  return model.contains("preprocessing") &&
-         model["preprocessing"].value("forces", nlohmann::json()) == "waterjet";
-}
+bool JetForces(const nlohmann::json& model) { return ModelView(model).Forces() == "waterjet"; }
 
 // The index of actuator state `state` among `actuators`, added when new: simulated from its
 // command when the record's command varies, else held at the record's median. Throws

@@ -4,20 +4,20 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/model_view.h"
 
 namespace usvid {
 
 EquationModel::EquationModel(const nlohmann::json& model,
                              const std::function<bool(const std::string&)>& has_channel) {
-  if (!model.contains("equations") || !model.at("equations").is_object() ||
-      model.at("equations").empty())
-    throw InputError("model: no \"equations\" object");
-  for (const auto& [state, text] : model.at("equations").items()) {
-    if (!text.is_string()) throw InputError("model: equation for '" + state + "' is not a string");
+  const ModelView view(model);
+  for (const auto& [state, text] : view.Equations()) {
     channels_.push_back(state);
-    equations_.push_back(Expression::Parse(text.get<std::string>(), "model: equation for " + state));
+    equations_.push_back(Expression::Parse(text, "model: equation for " + state));
   }
-  auto has = [&](const std::string& s) { return std::ranges::find(channels_, s) != channels_.end(); };
+  auto has = [&](const std::string& s) {
+    return std::ranges::find(channels_, s) != channels_.end();
+  };
   // A kinematic state with its own equation is integrated by that equation, once.
   const bool kinematic_equation = has("psi") || has("chi") || has("north") || has("east");
   if (has("u") && has("v") && has("r") && has_channel("psi") && !kinematic_equation) {
@@ -48,8 +48,7 @@ EquationModel::EquationModel(const nlohmann::json& model,
     }
     sources_.push_back(std::move(sources));
   }
-  if (model.contains("preprocessing") && model["preprocessing"].is_object())
-    delay_s_ = model["preprocessing"].value("delay_s", 0.0);
+  delay_s_ = view.DelaySeconds();
   const auto n = static_cast<Eigen::Index>(channels_.size());
   k1_.resize(n), k2_.resize(n), k3_.resize(n), k4_.resize(n);
 }

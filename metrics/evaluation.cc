@@ -6,6 +6,7 @@
 
 #include "core/derived_channels.h"
 #include "core/expression.h"
+#include "core/model_view.h"
 #include "metrics/fit_metrics.h"
 #include "preprocessing/pipeline.h"
 #include "preprocessing/waterjet_forces.h"
@@ -41,10 +42,8 @@ double ValidPredictionTime(const Dataset& data, const FreeRun& run) {
 // A model identified on the jets' forces is driven by them here too (unless the data carry
 // them already, as `usvid preprocess --forces waterjet` writes them).
 void AddModelForces(const nlohmann::json& model, Dataset& data) {
-  if (model.contains("preprocessing") && model["preprocessing"].is_object() &&
-      model["preprocessing"].contains("forces") && model["preprocessing"]["forces"].is_string() &&
-      !data.Has("tau_x"))
-    AddForces(data, model["preprocessing"]["forces"].get<std::string>());
+  const std::string forces = ModelView(model).Forces();
+  if (!forces.empty() && !data.Has("tau_x")) AddForces(data, forces);
 }
 
 // One-step derivative R^2: each equation at the measured states against the data's
@@ -52,24 +51,19 @@ void AddModelForces(const nlohmann::json& model, Dataset& data) {
 // model, or when the data lack a variable or input of the equations.
 std::map<std::string, double> DerivativeR2(const nlohmann::json& model, const Dataset& data) {
   std::map<std::string, double> r2;
-  std::vector<std::string> states, inputs;
-  const bool has_equations = model.contains("equations");  // else a vessel model
-  if (has_equations)
-    for (const auto& [state, _] : model.at("equations").items()) states.push_back(state);
-  if (model.contains("inputs"))
-    for (const auto& i : model.at("inputs")) inputs.push_back(i.get<std::string>());
-  std::vector<std::string> variables = states;
-  if (model.contains("variables"))
-    variables = model.at("variables").get<std::vector<std::string>>();
+  const ModelView view(model);
+  const bool has_equations = view.HasEquations();  // else a vessel model
+  const std::vector<std::string> inputs = view.Inputs();
+  const std::vector<std::string> variables = view.Variables().value_or(view.EquationStates());
   bool can_differentiate = has_equations && !inputs.empty();
   for (const auto& names : {variables, inputs})
     for (const std::string& n : names) can_differentiate = can_differentiate && data.Has(n);
   if (can_differentiate) {
     PreprocessOptions pre;
-    if (model.contains("preprocessing")) pre.delay_s = model["preprocessing"].value("delay_s", 0.0);
+    pre.delay_s = view.DelaySeconds();
     const PreparedData prepared = Preprocess(data, variables, inputs, pre);
-    for (const auto& [state, text] : model.at("equations").items()) {
-      const Expression expr = Expression::Parse(text.get<std::string>(), "model: " + state);
+    for (const auto& [state, text] : view.Equations()) {
+      const Expression expr = Expression::Parse(text, "model: " + state);
       r2[state] = RSquared(prepared.data[state + "_dot"], expr.Evaluate(prepared.data));
     }
   }
@@ -129,15 +123,14 @@ Eigen::VectorXd MeasuredSpeed(const Dataset& data) {
 // The hull length: the model's "length_m", else its vessel's, else Odin's 10.5 m.
 double HullLength(const nlohmann::json& model) {
   double length = 10.5;
-  if (model.contains("vessel") && model.at("vessel").is_string() &&
-      !model.at("vessel").get<std::string>().empty()) {
-    const std::string vessel = model.at("vessel").get<std::string>();
+  const ModelView view(model);
+  if (const std::string vessel = view.Vessel(); !vessel.empty()) {
     const std::vector<std::string> known = VesselNames();
     if ((std::ranges::find(known, vessel) != known.end() || IsVesselFile(vessel)) &&
         FindVessel(vessel).Info().length_m > 0)
       length = FindVessel(vessel).Info().length_m;
   }
-  return model.value("length_m", length);
+  return view.LengthM().value_or(length);
 }
 
 // Per speed regime (by Froude number on the hull length), over the rows measured in it: each

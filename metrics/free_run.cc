@@ -6,6 +6,7 @@
 
 #include "core/check.h"
 #include "core/error.h"
+#include "core/model_view.h"
 #include "effects/effect.h"
 #include "effects/effect_values.h"
 #include "metrics/equation_model.h"
@@ -14,21 +15,14 @@
 
 namespace usvid {
 
-bool IsVesselModel(const nlohmann::json& model) {
-  return !model.contains("equations") && model.contains("vessel") &&
-         !model.at("vessel").is_null() && model.at("vessel") != "";
-}
+bool IsVesselModel(const nlohmann::json& model) { return ModelView(model).IsVesselModel(); }
 
 VesselModel ParseVesselModel(const nlohmann::json& model) {
-  if (!model.at("vessel").is_string()) throw InputError("model: \"vessel\" is not a string");
+  const ModelView view(model);
   VesselModel v;
-  v.simulator = &FindVessel(model.at("vessel").get<std::string>());
-  v.params = v.simulator->Info().ParamsFrom(model.contains("parameters") ? model.at("parameters")
-                                                                         : nlohmann::json());
-  if (model.contains("effects")) {
-    if (!model.at("effects").is_array()) throw InputError("model: \"effects\" is not an array");
-    for (const auto& e : model.at("effects")) v.effects.push_back(EffectFromJson(e));
-  }
+  v.simulator = &FindVessel(view.VesselModelName());
+  v.params = v.simulator->Info().ParamsFrom(view.Parameters());
+  for (const nlohmann::json& e : view.Effects()) v.effects.push_back(EffectFromJson(e));
   return v;
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/derived_channels.h"
 #include "core/expression.h"
+#include "core/model_view.h"
 #include "core/parse_number.h"
 #include "metrics/closed_loop_choice.h"
 #include "metrics/closed_loop_replay.h"
@@ -129,9 +130,9 @@ double BestShift(const Evaluate& evaluate, double step, CriteriaCost& best) {
 nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
                                 const std::string& vessel_given) {
   nlohmann::json report = {{"applied", false}};
-  const std::string vessel =
-      !vessel_given.empty() ? vessel_given : model.value("vessel", std::string());
-  if (!model.contains("equations") || !model["equations"].contains("r")) {
+  const std::string vessel = !vessel_given.empty() ? vessel_given : ModelView(model).Vessel();
+  const std::optional<std::string> equation = ModelView(model).Equation("r");
+  if (!equation) {
     report["reason"] = "the model has no equation of r";
     return report;
   }
@@ -146,12 +147,11 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
   }
   for (const RecordedTest& z : zigzags) report["maneuvers"].push_back(z.spec);
 
-  const std::string equation = model["equations"]["r"].get<std::string>();
-  const ConstantAndRest split = SplitConstant(equation);
+  const ConstantAndRest split = SplitConstant(*equation);
   auto with_constant = [&](double c) { return FormatNumber(c) + split.rest; };
   nlohmann::json trial = model;
   auto evaluate = [&](double shift) {
-    trial["equations"]["r"] = with_constant(split.constant + shift);
+    ModelEdit(trial).SetEquation("r", with_constant(split.constant + shift));
     return OvershootCost(trial, zigzags);
   };
 
@@ -159,7 +159,7 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
   report["constant_before"] = split.constant;
   report["overshoot_errors_before"] = before.errors;
   if (!before.status.empty()) report["status_before"] = before.status;
-  const double step = kScanShare * EquationSpread(equation, train) / kScanSteps;
+  const double step = kScanShare * EquationSpread(*equation, train) / kScanSteps;
   if (!(step > 0.0) || !std::isfinite(step)) {
     report["reason"] = "the r equation does not vary over the training rows";
     return report;
@@ -173,9 +173,9 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
     return report;
   }
   const double constant = split.constant + best_shift;
-  model["equations"]["r"] = with_constant(constant);
-  if (model.contains("parameters") && model["parameters"].contains("r.bias"))
-    model["parameters"]["r.bias"] = constant;
+  ModelEdit edit(model);
+  edit.SetEquation("r", with_constant(constant));
+  edit.UpdateParameter("r.bias", constant);
   report["applied"] = true;
   report["reason"] =
       "the constant that gives the model the training zig-zags' overshoots, replayed closed-loop";
@@ -186,12 +186,11 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
 }
 
 void CalibrateRequested(nlohmann::json& model, const Dataset& train, const std::string& vessel) {
-  if (!model.contains("calibration") || !model["calibration"].is_object()) return;
-  if (model["calibration"].value("choose", nlohmann::json()) == "closed-loop")
-    model["calibration"]["choose"] = ChooseByClosedLoop(model, train, vessel);
-  if (model["calibration"].value("yaw_bias", nlohmann::json()) != "zigzag") return;
+  if (ModelView(model).Calibration("choose") == "closed-loop")
+    ModelEdit(model).SetCalibration("choose", ChooseByClosedLoop(model, train, vessel));
+  if (ModelView(model).Calibration("yaw_bias") != "zigzag") return;
   nlohmann::json report = CalibrateYawBias(model, train, vessel);
-  model["calibration"]["yaw_bias"] = std::move(report);
+  ModelEdit(model).SetCalibration("yaw_bias", std::move(report));
 }
 
 }  // namespace usvid

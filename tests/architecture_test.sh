@@ -9,6 +9,8 @@
 #  6. every option a method declares (methods/method_options.h) is read by a method: an option
 #     declared and never read would be accepted and silently ignored. (Identify checks the same
 #     at run time, after every fit: MethodOptions::Unread.)
+#  7. model.json's keys are read through core/model_view.h (ModelView) and nowhere else: a method
+#     writes its model, every reader takes it through the view.
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root"
@@ -70,5 +72,11 @@ while IFS= read -r key; do
   fi
 done < <(grep -rhoE '(Integer|Number|Choice|List|Flag|Text)Option\(\s*"[a-z_0-9]+"' methods |
            sed -E 's/.*"([^"]+)"/\1/' | sort -u)
+
+if grep -rnP '^(?!\s*//).*\bmodel(\.(at|value|contains|find)\("|\["[a-z_]+"\](?!(\["[^"]*"\])*\s*=[^=])(?!\.push_back))' \
+     "${sources[@]}" --include='*.h' --include='*.cc' | grep -v '^core/model_view\.'; then
+  echo "model key: read it through ModelView (core/model_view.h)"
+  fail=1
+fi
 
 exit $fail

@@ -22,6 +22,7 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/model_view.h"
 #include "core/records.h"
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
@@ -57,10 +58,10 @@ ScoredRecord EvaluateRecord(const nlohmann::json& model, const EvaluateOptions& 
   nlohmann::json& metrics = r.evaluation.metrics;
   if (!o.maneuver.empty()) {
     std::string vessel = o.vessel;
-    if (vessel.empty() && model.contains("vessel") && model["vessel"].is_string())
-      vessel = model["vessel"].get<std::string>();
+    if (vessel.empty()) vessel = ModelView(model).Vessel();
     if (vessel.empty())
-      throw InputError(o.model + ": --maneuver needs a vessel: the model names none, give --vessel");
+      throw InputError(o.model +
+                       ": --maneuver needs a vessel: the model names none, give --vessel");
     FindVessel(vessel);  // throws for an unknown name
     metrics["closed_loop"] =
         ClosedLoopScore(model, vessel, RecordedManeuverSpec(o.maneuver, vessel, r.data), r.data);
@@ -74,7 +75,7 @@ ScoredRecord EvaluateRecord(const nlohmann::json& model, const EvaluateOptions& 
 void WriteFreeRun(const nlohmann::json& model, const std::string& path, const ScoredRecord& r,
                   const std::string& svg) {
   FigureGrid grid;
-  grid.SetTitle("free run of " + model.value("method", std::string("model")) + " on " + path)
+  grid.SetTitle("free run of " + ModelView(model).Method("model") + " on " + path)
       .SetXLabel("t", "s");
   int panels = 0;
   for (const std::string& state : r.evaluation.run.channels) {
@@ -167,7 +168,8 @@ void AddEvaluateCommand(CLI::App& app) {
                   "The maneuver the data record (zigzag:A/B or turning:A, A in starboard-positive "
                   "degrees; zigzag or turning alone: the angle and side read from the record): "
                   "re-run closed-loop on the model, its criteria beside the data's");
-  cmd->add_option("--vessel", o->vessel, "The vessel whose actuators the replay uses (default: "
+  cmd->add_option("--vessel", o->vessel,
+                  "The vessel whose actuators the replay uses (default: "
                   "the model's)");
   cmd->add_option("--out", o->out, "Directory for metrics.json and plots (else stdout)");
   cmd->callback([o] { RunEvaluate(*o); });

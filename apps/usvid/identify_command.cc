@@ -16,6 +16,7 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/model_view.h"
 #include "core/parse_number.h"
 #include "harness/fit_service.h"
 #include "methods/identify.h"
@@ -97,8 +98,8 @@ void RunIdentify(const IdentifyOptions& o) {
   nlohmann::json model = Fit(FindMethod(r.method), data, r, [](const std::string& line) {
     std::cerr << "usvid identify: " << line << '\n';
   });
-  if (model.contains("calibration") && model["calibration"].contains("yaw_bias")) {
-    const nlohmann::json& c = model["calibration"]["yaw_bias"];
+  const ModelView view(model);
+  if (const nlohmann::json& c = view.Calibration("yaw_bias"); c.is_object()) {
     std::cerr << "usvid identify: r's constant from the training zig-zags' overshoots: "
               << (c.value("applied", false)
                       ? FormatNumber(c["constant_before"].get<double>()) + " -> " +
@@ -107,11 +108,10 @@ void RunIdentify(const IdentifyOptions& o) {
               << '\n';
   }
   WriteJsonFile(o.out, model);
-  if (model.contains("equations"))
-    for (const auto& [state, eq] : model.at("equations").items())
-      std::cerr << "usvid identify: " << state << "' = " << eq.get<std::string>() << '\n';
-  std::cerr << "usvid identify: wrote " << o.out << " (" << model["train"]["seconds"].get<double>()
-            << " s)\n";
+  if (view.HasEquations())
+    for (const auto& [state, eq] : view.Equations())
+      std::cerr << "usvid identify: " << state << "' = " << eq << '\n';
+  std::cerr << "usvid identify: wrote " << o.out << " (" << view.TrainSeconds() << " s)\n";
 }
 
 // One flag per option key of any method, and per key every method shares. Its help gives each

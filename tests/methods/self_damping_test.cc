@@ -55,11 +55,11 @@ Dataset Zigzag() {
 // the motion (|v| v) is read at the sway's RMS, where it is below 0, not at v = 0.
 TEST(SelfDampingTest, StraightRunningFindsADampingThatOnlyTheLateralMotionGives) {
   const Dataset d = Zigzag();
-  const nlohmann::json drifting = {{"u", "0.006 - 0.0025*abs(v*u)"}};
+  const EquationList drifting = {{"u", "0.006 - 0.0025*abs(v*u)"}};
   EXPECT_LT(SelfDamping(drifting, d).at("u"), -1e-4);
   EXPECT_EQ(StraightRunningDamping(drifting, d).at("u"), 0.0);
-  const nlohmann::json damped = {{"u", "0.006 - 0.001*u - 0.0025*abs(v*u)"},
-                                 {"v", "-0.3*abs(v)*v + 0.01*delta"}};
+  const EquationList damped = {{"u", "0.006 - 0.001*u - 0.0025*abs(v*u)"},
+                               {"v", "-0.3*abs(v)*v + 0.01*delta"}};
   const auto straight = StraightRunningDamping(damped, d);
   EXPECT_NEAR(straight.at("u"), -0.001, 1e-9);
   const double v_rms = std::sqrt(d["v"].squaredNorm() / 600.0);

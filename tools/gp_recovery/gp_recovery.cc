@@ -15,8 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "maneuvers/maneuver_factory.h"
 #include "core/expression.h"
+#include "core/model_view.h"
+#include "maneuvers/maneuver_factory.h"
 #include "methods/gp/gp_identify.h"
 #include "methods/identify.h"
 #include "sensors/noise.h"
@@ -85,13 +86,14 @@ int Run(int argc, char** argv) {
     r.seed = static_cast<uint64_t>(seed);
     r.threads = threads;
     const nlohmann::json model = Identify(train, r);
+    const ModelView view(model);
     const auto truth = TrueRightHandSides(held);
-    nlohmann::json row = {{"seed", seed}, {"seconds", model["train"]["seconds"]}};
+    nlohmann::json row = {{"seed", seed}, {"seconds", view.TrainSeconds()}};
     bool ok = true;
     std::array<double, 3> err{};
     int s = 0;
     for (const char* state : {"u", "v", "r"}) {
-      const std::string eq = model["equations"][state].get<std::string>();
+      const std::string eq = view.Equation(state).value_or("0");
       const Eigen::VectorXd f = Expression::Parse(eq).Evaluate(held);
       err[s] = std::sqrt((f - truth[s]).squaredNorm() / truth[s].squaredNorm());
       ok &= err[s] <= within;
@@ -99,11 +101,11 @@ int Run(int argc, char** argv) {
       ++s;
     }
     recovered += ok;
-    total_seconds += model["train"]["seconds"].get<double>();
+    total_seconds += view.TrainSeconds();
     rows.push_back(row);
     if (!json)
       std::printf("| %d | %.2f %% | %.2f %% | %.2f %% | %.1f |\n", seed, 100 * err[0], 100 * err[1],
-                  100 * err[2], model["train"]["seconds"].get<double>());
+                  100 * err[2], view.TrainSeconds());
     std::fflush(stdout);
   }
   if (json) {
