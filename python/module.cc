@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -174,6 +175,8 @@ PYBIND11_MODULE(_usvid, m) {
   using namespace usvid::python;
   using py::arg;
   m.doc() = "usvid: identification of high-speed surface vessels (docs/python.md)";
+  // A vessel file's notes to stderr, as the command line says them (no Python object touched).
+  usvid::SetVesselNoteSink([](const std::string& note) { std::cerr << note << '\n'; });
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -1,7 +1,7 @@
 // The vessels usvid knows: one entry a vessel, with what maneuvers need to drive it.
 
 #include <algorithm>
-#include <iostream>
+#include <functional>
 #include <map>
 #include <mutex>
 
@@ -121,23 +121,42 @@ std::unique_ptr<VesselSimulator> MakeFromFile(const std::string& path) {
   info.length_m = file.length_m;
   info.estimated = file.estimated;
   info.wind_body = file.wind_body;
-  std::cerr << "usvid: vessel " << file.name << " (" << path << "): " << file.estimated.size()
-            << " coefficients not given, estimated from the particulars (usvid vessel lists "
-               "them; docs/model.md#vessel-files)\n";
-  for (const std::string& w : file.warnings) std::cerr << "warning: " << path << ": " << w << "\n";
+  info.notes.push_back("usvid: vessel " + file.name + " (" + path +
+                       "): " + std::to_string(file.estimated.size()) +
+                       " coefficients not given, estimated from the particulars (usvid vessel "
+                       "lists them; docs/model.md#vessel-files)");
+  for (const std::string& w : file.warnings) info.notes.push_back("warning: " + path + ": " + w);
   return std::make_unique<TypedVesselSimulator<Mmg>>(std::move(info));
 }
 
-const VesselSimulator& FileVessel(const std::string& path) {
+std::mutex& FilesMutex() {
   static std::mutex mutex;
+  return mutex;
+}
+
+std::function<void(const std::string&)>& NoteSink() {
+  static auto* sink = new std::function<void(const std::string&)>;
+  return *sink;
+}
+
+const VesselSimulator& FileVessel(const std::string& path) {
   static auto* files = new std::map<std::string, std::unique_ptr<VesselSimulator>>;
-  const std::lock_guard<std::mutex> lock(mutex);
+  const std::lock_guard<std::mutex> lock(FilesMutex());
   auto it = files->find(path);
-  if (it == files->end()) it = files->emplace(path, MakeFromFile(path)).first;
+  if (it == files->end()) {
+    it = files->emplace(path, MakeFromFile(path)).first;
+    if (NoteSink())
+      for (const std::string& note : it->second->Info().notes) NoteSink()(note);
+  }
   return *it->second;
 }
 
 }  // namespace
+
+void SetVesselNoteSink(std::function<void(const std::string&)> sink) {
+  const std::lock_guard<std::mutex> lock(FilesMutex());
+  NoteSink() = std::move(sink);
+}
 
 bool IsVesselFile(const std::string& name) {
   for (const char* ext : {".yaml", ".yml", ".json"})

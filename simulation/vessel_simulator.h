@@ -4,6 +4,7 @@
 // vessels is vessel_registry.cc (one line a vessel).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -39,6 +40,9 @@ struct VesselInfo {
   // A vessel file's coefficients that it did not give, each "name = value (source)": estimated
   // from its particulars (simulation/mmg_estimates.h). Empty for the compiled-in vessels.
   std::vector<std::string> estimated;
+  // What a reader of the vessel file is told once: how many coefficients were estimated, and
+  // the file's warnings. Empty for the compiled-in vessels.
+  std::vector<std::string> notes;
   // The vessel feels the wind: it has a wind model (simulators/wind_force.h) with areas, driven
   // by its measured inputs wind_speed and wind_direction (a vessel file with a wind section).
   bool wind_body = false;
@@ -87,10 +91,14 @@ class VesselSimulator {
 };
 
 // A compiled-in vessel by name, or a vessel file (simulation/vessel_file.h) by its path: a
-// name ending in .yaml, .yml or .json. A file is read once and kept; its estimated coefficients
-// and warnings go to stderr then. Throws InputError listing the known vessels, or naming the
-// file's fault.
+// name ending in .yaml, .yml or .json. A file is read once and kept; its notes (VesselInfo::notes)
+// go to the note sink then. Throws InputError listing the known vessels, or naming the file's
+// fault.
 const VesselSimulator& FindVessel(const std::string& name);
+// Where a vessel file's notes go when it is first read, one call a line, never two at once: the
+// command line and the Python module send them to stderr. Unset (a library's caller), they stay
+// in VesselInfo::notes alone.
+void SetVesselNoteSink(std::function<void(const std::string&)> sink);
 // The compiled-in vessels.
 std::vector<std::string> VesselNames();
 // What --vessel takes, for help texts: "eb2dof, kvlcc2, ..., or a vessel file (...)".

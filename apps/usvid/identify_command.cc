@@ -37,8 +37,10 @@ struct IdentifyOptions {
   std::string params;
   PreprocessFlags pre;
   std::string out;
-  // Every method's option flags, by key: the text given (a switch: "true"), and the flag.
+  // Every method's option flags, by key: the text given (a switch: "true"; a list, its items,
+  // comma- or space-separated), and the flag.
   std::map<std::string, std::string> texts;
+  std::map<std::string, std::vector<std::string>> lists;
   std::map<std::string, bool> switches;
   std::map<std::string, const CLI::Option*> flags;
 };
@@ -61,8 +63,12 @@ nlohmann::json GivenOptions(const IdentifyOptions& o) {
       throw InputError(flag->get_name() + ": method " + method.name + " has no option '" + key +
                        "' (its options: " + (flags.empty() ? "none" : flags) + ")");
     }
-    const nlohmann::json value = OptionFromText(
-        method.name, *spec, spec->type == OptionType::kFlag ? "true" : o.texts.at(key));
+    std::string text = spec->type == OptionType::kFlag ? "true" : "";
+    if (spec->type == OptionType::kList)
+      for (const std::string& item : o.lists.at(key)) text += (text.empty() ? "" : ",") + item;
+    else if (spec->type != OptionType::kFlag)
+      text = o.texts.at(key);
+    const nlohmann::json value = OptionFromText(method.name, *spec, text);
     // Checked here, so that the message names the flag as well as the key.
     ValidateOptions(method.name, {*spec}, {{key, value}}, flag->get_name());
     options[key] = value;
@@ -152,7 +158,9 @@ void AddMethodOptionFlags(CLI::App& cmd, IdentifyOptions& o) {
       o.flags[key] = cmd.add_flag(names, o.switches[key], help);
       continue;
     }
-    CLI::Option* flag = cmd.add_option(names, o.texts[key], help);
+    CLI::Option* flag = s.type == OptionType::kList
+                            ? cmd.add_option(names, o.lists[key], help)->delimiter(',')
+                            : cmd.add_option(names, o.texts[key], help);
     flag->type_name(s.type == OptionType::kInteger  ? "INT"
                     : s.type == OptionType::kNumber ? "FLOAT"
                     : s.type == OptionType::kList   ? "A,B,..."

@@ -13,6 +13,7 @@
 #include "apps/usvid/commands.h"
 #include "core/error.h"
 #include "harness/ranks.h"
+#include "simulation/vessel_simulator.h"
 
 #ifndef USVID_VERSION
 #define USVID_VERSION "unknown"
@@ -84,6 +85,8 @@ int main(int argc, char** argv) {
   // logging_type. usvid reports a failed fit itself, on one line: glog prints only fatal errors.
   FLAGS_logtostderr = true;
   FLAGS_minloglevel = google::GLOG_FATAL;
+  // A vessel file's notes (its estimated coefficients, its warnings) are the command line's to say.
+  usvid::SetVesselNoteSink([](const std::string& note) { std::cerr << note << '\n'; });
   usvid::RanksSession session(argc, argv);
   const int code = Run(argc, argv);
   // One rank's failure must not leave the others waiting for it in a collective.

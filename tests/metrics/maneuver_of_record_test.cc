@@ -203,7 +203,9 @@ TEST(ManeuverOfRecordTest, HsvasZigzagsAreReadAsTheirHeadersSay) {
     const TestOfRecord test = ReadTestOfRecord(d, "any");
     EXPECT_EQ(test.rudder_deg, named.rudder_deg) << file;
     EXPECT_EQ(test.check_deg, named.check_deg) << file;
-    if (named.side != 0) EXPECT_EQ(test.first_turn, named.side) << file;
+    if (named.side != 0) {
+      EXPECT_EQ(test.first_turn, named.side) << file;
+    }
     Dataset unnamed = d;
     unnamed.metadata().erase("maneuver");
     EXPECT_EQ(ManeuverOfRecord(unnamed, "any"), test.Spec()) << file << " without its header";
