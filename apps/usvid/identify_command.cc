@@ -114,9 +114,9 @@ void RunIdentify(const IdentifyOptions& o) {
               << '\n';
   }
   WriteJsonFile(o.out, model);
-  if (view.HasEquations())
-    for (const auto& [state, eq] : view.Equations())
-      std::cerr << "usvid identify: " << state << "' = " << eq << '\n';
+  for (const std::string& state : view.EquationStates())
+    std::cerr << "usvid identify: " << state << "' = " << view.Equation(state).value_or("?")
+              << '\n';
   std::cerr << "usvid identify: wrote " << o.out << " (" << view.TrainSeconds() << " s)\n";
 }
 
