@@ -28,6 +28,10 @@ struct Args {
     if (!(value > 0)) throw InputError("--maneuver '" + text + "': the value must be positive");
     return value;
   }
+  // The one positive number of a spec like random-steps:HOLD_S; `fallback` without one.
+  double OnePositiveOr(double fallback) const {
+    return Given() ? Positive(Numbers(1, 1)[0]) : fallback;
+  }
 };
 
 // duration_s, or the maneuver's own `fallback` when 0.
@@ -78,17 +82,17 @@ constexpr ManeuverForm kForms[] = {
      }},
     {ManeuverKind::kRandomSteps, "random-steps[:HOLD_S]",
      [](const Args& a, const Actuation& act, double duration_s, uint64_t seed) {
-       const double hold = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 6.0;
+       const double hold = a.OnePositiveOr(6.0);
        return MakeRandomSteps(act, hold, Duration(duration_s, 600), seed);
      }},
     {ManeuverKind::kPrbs, "prbs[:CLOCK_S]",
      [](const Args& a, const Actuation& act, double duration_s, uint64_t seed) {
-       const double clock = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 4.0;
+       const double clock = a.OnePositiveOr(4.0);
        return MakePrbs(act, clock, Duration(duration_s, 600), seed);
      }},
     {ManeuverKind::kMultisine, "multisine[:FMAX_HZ]",
      [](const Args& a, const Actuation& act, double duration_s, uint64_t seed) {
-       const double f_max = a.Given() ? a.Positive(a.Numbers(1, 1)[0]) : 0.2;
+       const double f_max = a.OnePositiveOr(0.2);
        return MakeMultisine(act, f_max, Duration(duration_s, 600), seed);
      }},
     {ManeuverKind::kAutopilot, "autopilot[:HOLD_S[/SPAN_DEG]]",
