@@ -19,6 +19,7 @@
 #include "metrics/free_run.h"
 #include "metrics/maneuver_of_record.h"
 #include "metrics/rank_tests.h"
+#include "metrics/recorded_yaw_rate.h"
 #include "metrics/turning_response.h"
 #include "metrics/wind_aboard.h"
 #include "metrics/zigzag_response.h"
@@ -516,8 +517,11 @@ ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& 
   const VesselInfo& info = FindVessel(vessel).Info();
   ManeuverSpec parsed = ParseManeuverSpec(spec);
   parsed.base_offset_rad = base_course_offset_rad;
-  std::unique_ptr<Maneuver> rule = MakeManeuver(parsed, info.actuation, recorded.duration(), 1);
-  RecordedApproach maneuver(std::move(rule), info.actuation, recorded);
+  // An equation model's yaw command moves as the record's did (metrics/recorded_yaw_rate.h).
+  Actuation act = info.actuation;
+  if (!IsVesselModel(model)) act.yaw_rate_limit = ReplayYawRateLimit(act, recorded);
+  std::unique_ptr<Maneuver> rule = MakeManeuver(parsed, act, recorded.duration(), 1);
+  RecordedApproach maneuver(std::move(rule), act, recorded);
   if (IsVesselModel(model))
     return ReplayVesselModel(model, maneuver, SampleRate(recorded), recorded, from_recorded_state);
   return ReplayEquationModel(model, info, maneuver, recorded);
