@@ -1,5 +1,6 @@
 #include "core/yaml_section.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -56,7 +57,7 @@ void YamlSection::FailKey(const std::string& key, const std::string& what) const
 void YamlSection::FailHere(const std::string& what) const { Fail(node_, what); }
 
 std::optional<double> YamlSection::Number(const std::string& key) {
-  known_.insert(key);
+  Ask(key);
   const YAML::Node v = node_[key];
   if (!v.IsDefined()) return std::nullopt;
   double x = 0.0;
@@ -79,7 +80,7 @@ double YamlSection::Positive(const std::string& key, const std::string& what) {
 }
 
 std::optional<std::string> YamlSection::Text(const std::string& key) {
-  known_.insert(key);
+  Ask(key);
   const YAML::Node v = node_[key];
   if (!v.IsDefined()) return std::nullopt;
   if (!v.IsScalar()) Fail(v, key + ": expected a text");
@@ -87,7 +88,7 @@ std::optional<std::string> YamlSection::Text(const std::string& key) {
 }
 
 std::optional<YamlSection> YamlSection::Child(const std::string& key) {
-  known_.insert(key);
+  Ask(key);
   if (!Has(key)) return std::nullopt;
   return YamlSection(file_, node_[key], path_ + key + ".");
 }
@@ -99,7 +100,7 @@ YamlSection YamlSection::RequiredChild(const std::string& key, const std::string
 }
 
 YAML::Node YamlSection::Node(const std::string& key) {
-  known_.insert(key);
+  Ask(key);
   return node_[key];
 }
 
@@ -109,10 +110,17 @@ std::vector<std::pair<std::string, YAML::Node>> YamlSection::Items() const {
   return out;
 }
 
-void YamlSection::RefuseUnknown(const std::string& known_list) const {
-  for (const auto& kv : node_)
-    if (!known_.contains(kv.first.Scalar()))
-      Fail(kv.first, kv.first.Scalar() + ": unknown key (known: " + known_list + ")");
+void YamlSection::Ask(const std::string& key) {
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
+}
+
+void YamlSection::RefuseUnknown() const {
+  for (const auto& kv : node_) {
+    if (std::find(known_.begin(), known_.end(), kv.first.Scalar()) != known_.end()) continue;
+    std::string list;
+    for (const std::string& key : known_) list += (list.empty() ? "" : ", ") + key;
+    Fail(kv.first, kv.first.Scalar() + ": unknown key (known: " + list + ")");
+  }
 }
 
 }  // namespace usvid

@@ -6,7 +6,6 @@
 #include <yaml-cpp/yaml.h>
 
 #include <optional>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,8 +40,9 @@ class YamlSection {
   YAML::Node Node(const std::string& key);
   // Every key of the mapping, with its node (free-form sections: coefficients, columns).
   std::vector<std::pair<std::string, YAML::Node>> Items() const;
-  // Fails on the first key that was never asked for.
-  void RefuseUnknown(const std::string& known_list) const;
+  // Fails on the first key that was never asked for, listing the keys that were, in the order
+  // asked: each key is named once, where it is read.
+  void RefuseUnknown() const;
 
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
@@ -51,7 +51,9 @@ class YamlSection {
   std::string file_;
   YAML::Node node_;
   std::string path_;
-  std::set<std::string> known_;
+  std::vector<std::string> known_;  // the keys asked for, in order, once each
+
+  void Ask(const std::string& key);
 };
 
 }  // namespace usvid

@@ -135,7 +135,7 @@ nlohmann::json SplitEntry(const YamlSection& split, const YAML::Node& item, cons
         else
           entry[key] = *v;
       }
-    s.RefuseUnknown("file, name, maneuver, from_s, to_s, end_at_stop, rate_from");
+    s.RefuseUnknown();
   }
   const std::string file = entry["file"].get<std::string>();
   if (track.check_runs && !fs::is_regular_file(fs::path(track.folder) / file))
@@ -156,7 +156,7 @@ void ReadSplit(YamlSection& top, TrackFile& track) {
       (std::string(part) == "train" ? track.train : track.test)
           .push_back(SplitEntry(*split, item, track, part));
   }
-  split->RefuseUnknown("train, test");
+  split->RefuseUnknown();
 }
 
 }  // namespace
@@ -204,7 +204,7 @@ TrackFile ParseTrack(const YAML::Node& root, TrackFile track) {
   ReadColumns(top, track);
   for (const char* key : {"rate_from", "end_at_stop"})
     if (const std::optional<std::string> v = top.Text(key)) track.read[key] = *v;
-  if (top.Has("scale")) track.read["scale"] = top.Positive("scale", "the Froude scale");
+  if (top.Number("scale")) track.read["scale"] = top.Positive("scale", "the Froude scale");
   if (std::optional<YamlSection> also = top.Child("also")) {
     static const std::set<std::string> kNamed = {"csv", "hsva-dat", "marin-dat"};
     for (const auto& [extension, value] : also->Items()) {
@@ -229,8 +229,7 @@ TrackFile ParseTrack(const YAML::Node& root, TrackFile track) {
     if (track.columns.empty()) channels = KnownChannels();  // a format that names its own
     track.methods = DefaultTrackMethods(!track.vessel.empty(), channels);
   }
-  top.RefuseUnknown(
-      "name, vessel, format, also, columns, rate_from, end_at_stop, scale, runs, split, methods");
+  top.RefuseUnknown();
   return track;
 }
 

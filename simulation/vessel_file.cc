@@ -40,7 +40,7 @@ YawInertia ReadHull(YamlSection& top, MmgHull& h) {
   if (yaw.k_zz && yaw.I_zG) hull.FailKey("I_zG", "give k_zz or I_zG, not both");
   if ((yaw.k_zz && *yaw.k_zz <= 0) || (yaw.I_zG && *yaw.I_zG <= 0))
     hull.FailKey(yaw.k_zz ? "k_zz" : "I_zG", "must be above 0");
-  hull.RefuseUnknown("L, B, d, C_b, mass, x_G, k_zz, I_zG");
+  hull.RefuseUnknown();
   return yaw;
 }
 
@@ -65,7 +65,7 @@ Controls ReadControls(YamlSection& top) {
   if (c.n_min > c.n_cruise || c.n_cruise > c.n_max)
     ctl.FailKey("n_cruise", "must lie between n_min " + FormatNumber(c.n_min) + " and n_max " +
                                 FormatNumber(c.n_max));
-  ctl.RefuseUnknown("rudder_sign, rudder_max_deg, rudder_rate_deg_s, n_min, n_max, n_cruise");
+  ctl.RefuseUnknown();
   return c;
 }
 
@@ -104,7 +104,7 @@ WindPart ReadWind(YamlSection& top, const MmgHull& h) {
                   "give fujiwara (the wind acts on the model) or none (the model "
                   "ignores it; the effect wind can still add it)");
   w.in_model = model == "fujiwara";
-  wind->RefuseUnknown("A_T, A_L, A_OD, C, C_BR, H_BR, H_C, B, rho_air, model");
+  wind->RefuseUnknown();
   return w;
 }
 
@@ -163,13 +163,13 @@ VesselFile ReadVesselFile(const std::string& path) {
   YamlSection prop = top.RequiredChild("propeller", "diameter and position");
   h.D_P = prop.Positive("D", "propeller diameter [m]");
   const double x_P = prop.Number("x").value_or(-0.48 * h.L);
-  prop.RefuseUnknown("D, x");
+  prop.RefuseUnknown();
 
   YamlSection rud = top.RequiredChild("rudder", "area, span and position");
   h.A_R = rud.Positive("area", "rudder area [m^2]");
   h.H_R = rud.Positive("span", "rudder span H_R [m]");
   const double x_R = rud.Number("x").value_or(-0.5 * h.L);
-  rud.RefuseUnknown("area, span, x");
+  rud.RefuseUnknown();
 
   const Controls controls = ReadControls(top);
   const WindPart wind = ReadWind(top, h);
@@ -179,7 +179,7 @@ VesselFile ReadVesselFile(const std::string& path) {
   if (wind.present)
     for (MmgEstimate& e : EstimateWindCoefficients(wind.body)) estimates.push_back(std::move(e));
   const std::map<std::string, double> given = GivenCoefficients(top, estimates, wind.present);
-  top.RefuseUnknown("name, rho, hull, propeller, rudder, controls, wind, coefficients");
+  top.RefuseUnknown();
 
   std::vector<double> p(Mmg::kDefaultParams.begin(), Mmg::kDefaultParams.end());
   auto set = [&](std::string_view name, double v) {
