@@ -26,7 +26,8 @@
 // identification methods (methods/method_list.h), diagnose (the nominal vessel extended by the
 // causes `usvid diagnose` names on the training data), and external commands
 // ({"method": "external", "name": ..., "command": [...]}; harness/external_method.h).
-// Unknown fields, wrong types and unknown names are errors naming the file and field.
+// Unknown fields, wrong types and unknown names are errors naming the file and field. Every field,
+// its default and what it holds: harness/suite_fields.h (docs/suites.md, generated).
 #pragma once
 
 #include <array>
@@ -119,9 +120,18 @@ struct FitJob {
 // method, the key and what is allowed.
 void CheckSuiteMethod(const SuiteMethod& method, const std::string& where);
 
-// Relative data paths are taken from the folder of `file`.
+// Every field read through its one declaration (harness/suite_fields.h): relative data and
+// vessel paths taken from the folder of `file`; then the conditions checked together
+// (CheckSuiteConditions). SuiteToJson writes the suite back through the same declarations.
 Suite ParseSuite(const nlohmann::json& value, const std::string& file);
 nlohmann::json SuiteToJson(const Suite& suite);
+
+// "effects", "sensors", "gusts", "waves", "dropouts" and "logged" checked together, on every
+// vessel of the suite, before any fit: an effect the vessel cannot take (wind without a wind
+// model, an input or state it lacks), waves on a vessel without positions and body velocities, a
+// sensor naming no group or channel of its records, or a logged disturbance that the conditions
+// do not make is an error naming the field. Nothing to check without conditions.
+void CheckSuiteConditions(const Suite& suite, const std::string& file);
 
 // The fits a suite needs: every method on every training maneuver of every vessel that can run
 // it (a zig-zag needs a heading, a step grid a thrust input). Combinations a method cannot fit

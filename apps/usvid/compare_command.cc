@@ -29,6 +29,7 @@
 #include "harness/results.h"
 #include "harness/run_suite.h"
 #include "harness/smoke_suite.h"
+#include "harness/suite_fields.h"
 
 namespace usvid {
 namespace {
@@ -199,6 +200,14 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("--out", o->out,
                   "Directory for results.json, results.csv, summary.md, plots, report.html")
       ->required();
+  cmd->add_flag_callback(
+      "--fields",
+      [] {
+        std::cout << SuiteFieldsMarkdown();
+        throw CLI::Success();
+      },
+      "Print the fields of a suite file, each with its default and what it holds, as "
+      "docs/suites.md (generated from harness/suite_fields.h), and exit");
   cmd->callback([o] { RunCompare(*o); });
 }
 

@@ -1,5 +1,6 @@
 // `usvid methods`: every method with the options it declares, and docs/options.md, which must
-// be exactly what `usvid methods --markdown` prints (the page is generated, never hand-edited).
+// be exactly what `usvid methods --markdown` prints (the page is generated, never hand-edited);
+// docs/suites.md likewise, from `usvid compare --fields`.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -33,6 +34,19 @@ TEST(OptionsCliTest, TheOptionsPageIsTheDeclarations) {
   text << page.rdbuf();
   EXPECT_EQ(text.str(), r.out)
       << "docs/options.md is out of date: ./build/usvid methods --markdown > docs/options.md";
+}
+
+// docs/suites.md is generated the same way, from the one declaration of a suite's fields
+// (harness/suite_fields.h).
+TEST(OptionsCliTest, TheSuitesPageIsTheDeclarations) {
+  const auto r = RunUsvid("compare --fields");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream page(std::string(USVID_SOURCE_DIR) + "/docs/suites.md");
+  ASSERT_TRUE(page) << "docs/suites.md is missing";
+  std::stringstream text;
+  text << page.rdbuf();
+  EXPECT_EQ(text.str(), r.out)
+      << "docs/suites.md is out of date: ./build/usvid compare --fields > docs/suites.md";
 }
 
 // The documented example method (docs/adding-a-method.md), lti, declares two options and
