@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -85,8 +86,7 @@ struct Zigzag {
 TEST(EssoOsakaTest, TheParticularsAloneReplayEachZigzagFromItsExecute) {
   if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
   const fs::path dir = FreshTempDir();
-  const std::string vessel =
-      std::string(USVID_SOURCE_DIR) + "/docs/vessels/files/esso-osaka.yaml";
+  const std::string vessel = std::string(USVID_SOURCE_DIR) + "/docs/vessels/files/esso-osaka.yaml";
   const std::string map =
       "\"t=t [s],north=x_position_mid [m],east=y_position_mid [m],psi=psi_hat [rad],"
       "u=u_velo [m/s],v=vm_velo [m/s],r=r_angvelo [rad/s],n=n_prop [rps],"
@@ -113,8 +113,8 @@ TEST(EssoOsakaTest, TheParticularsAloneReplayEachZigzagFromItsExecute) {
     const std::string spec =
         "zigzag:" + std::to_string(z.angle) + "/" + std::to_string(std::abs(z.angle));
     const fs::path out = dir / z.file;
-    const auto r = RunUsvid("evaluate --model " + model + " --data " + csv + " --maneuver " +
-                            spec + " --out " + out.string());
+    const auto r = RunUsvid("evaluate --model " + model + " --data " + csv + " --maneuver " + spec +
+                            " --out " + out.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const nlohmann::json loop = ReadJsonFile((out / "metrics.json").string()).at("closed_loop");
     ASSERT_EQ(loop.at("status"), "ok") << z.file;
@@ -213,6 +213,58 @@ TEST(EssoOsakaTest, TheStudysRefitReplaysTheHeldOutZigzagsAndCircles) {
   }
   EXPECT_EQ(zigzags, 4);
   EXPECT_EQ(circles, 2);
+}
+
+// Esso Osaka's logs hold the rudder's orders, which jump in one sample
+// (metrics/recorded_yaw_rate.h). A data-driven model learned the hull's answer to those orders, the
+// steering gear's lag inside it, so its closed-loop replay steps the order as the log did; slewed
+// again at the vessel's 20 deg/s, SINDy met the lag twice and overshot every one of the study's
+// four held-out zig-zags (by 0.55-4.09 deg, mean 2.80, against the particulars' 2.14). The
+// particulars' model simulates its own gear and keeps the vessel's rate. SINDy as the real suite's
+// track runs it, trained on the study's eight runs: its mean first-overshoot error over the four
+// below the particulars' (0.51 against 2.14 deg when this test was written).
+TEST(EssoOsakaTest, ADataDrivenReplayStepsTheRudderAsTheLogDid) {
+  if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
+  const fs::path dir = FreshTempDir();
+  const fs::path studies = fs::path(USVID_SOURCE_DIR) / "docs" / "studies";
+  nlohmann::json suite =
+      ReadJsonFile((studies / "esso-osaka-mmg.json").string(), JsonComments::kAllowed);
+  suite["methods"] =
+      nlohmann::json::array({"nominal",
+                             {{"method", "sindy"},
+                              {"states", {"u", "v", "r"}},
+                              {"inputs", {"n", "delta", "wind_speed", "wind_u", "wind_v"}},
+                              {"library", {"constant", "products", "abs", "inputs", "rudder"}},
+                              {"weak_window_s", 20}}});
+  const auto absolute = [&](nlohmann::json& file) {
+    file = fs::weakly_canonical(studies / file.get<std::string>()).string();
+  };
+  for (auto& v : suite.at("vessels")) absolute(v);
+  for (auto& f : suite.at("data").at("train").at(0).at("file")) absolute(f);
+  for (auto& t : suite.at("data").at("test")) absolute(t.at("file"));
+  const fs::path suite_file = dir / "sindy.json";
+  std::ofstream(suite_file) << suite.dump(1);
+  const auto r =
+      RunUsvid("compare --suite " + suite_file.string() + " --out " + (dir / "study").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json results = ReadJsonFile((dir / "study" / "results.json").string());
+  std::map<std::string, std::vector<double>> errors;  // per method, |first overshoot error|
+  for (const auto& row : results.at("rows")) {
+    ASSERT_EQ(row.at("status"), "ok") << row.dump();
+    if (!row.at("test_maneuver").get<std::string>().starts_with("zigzag")) continue;
+    const nlohmann::json& loop = row.at("closed_loop");
+    ASSERT_EQ(loop.at("status"), "ok") << row.dump();
+    errors[row.at("method").get<std::string>()].push_back(
+        std::abs(loop.at("first_overshoot_error_deg").get<double>()));
+  }
+  ASSERT_EQ(errors["sindy"].size(), 4u);
+  ASSERT_EQ(errors["nominal"].size(), 4u);
+  auto mean = [](const std::vector<double>& v) {
+    double sum = 0.0;
+    for (const double x : v) sum += x;
+    return sum / static_cast<double>(v.size());
+  };
+  EXPECT_LT(mean(errors["sindy"]), mean(errors["nominal"]));
 }
 
 TEST(EssoOsakaTest, DiagnoseNamesTheLoggedWindThatAModelIgnores) {
