@@ -9,8 +9,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "effects/effect.h"
 #include "maneuvers/maneuver_factory.h"
 #include "metrics/closed_loop_replay.h"
+#include "simulation/simulate_record.h"
 #include "simulation/vessel_simulator.h"
 
 namespace usvid {
@@ -85,6 +87,28 @@ TEST(RecordedYawRateTest, TheReplayStepsWhereTheRecordSteps) {
               0.02 * act.yaw_rate_limit);
   EXPECT_EQ(ReplayYawRateLimit(act, slewed), act.yaw_rate_limit);
   EXPECT_EQ(ReplayYawRateLimit(act, AsOrders(slewed)), 0.0);
+}
+
+// A suite's simulated tests log the yaw command as the maneuver slewed it, at the vessel's rate,
+// under the realistic suite's sea, sensors, gaps and hidden effects too: their replays keep the
+// vessel's rate, so no simulated suite's row changes with the record's reading. (odin3dof's yaw
+// moment steps in the simulator too: its limit is 0 either way.)
+TEST(RecordedYawRateTest, SimulatedTestsMoveAtTheVesselsRate) {
+  for (const std::string vessel : {"odin3dof", "odin-hs", "kvlcc2"}) {
+    for (const std::string maneuver : {"zigzag:20/20", "turning:35"}) {
+      RecordRecipe recipe;
+      recipe.vessel = vessel;
+      recipe.maneuver = maneuver;
+      recipe.duration_s = vessel == "kvlcc2" ? 400.0 : 120.0;
+      recipe.effects = ParseEffects({"current=0.3", "sensor_bias=0.0017", "saturation=0.8"}, 3);
+      recipe.gusts = vessel == "kvlcc2" ? "" : "8";  // kvlcc2 has no wind model
+      recipe.sensors = {"0.3", 0.02, {"imu=50", "gps=5"}, {"gps=0.05"}};
+      recipe.seed = 3;
+      const Dataset record = SimulateRecord(recipe).data;
+      const Actuation& act = FindVessel(vessel).Info().actuation;
+      EXPECT_EQ(ReplayYawRateLimit(act, record), act.yaw_rate_limit) << vessel << " " << maneuver;
+    }
+  }
 }
 
 // The seconds the replay's rudder takes from its execute to 19 deg.
