@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "core/csv_dataset.h"
 #include "core/error.h"
 #include "metrics/maneuver_of_record.h"
+#include "metrics/recorded_yaw_rate.h"
 #include "metrics/zigzag_response.h"
 #include "preprocessing/record_end.h"
 
@@ -77,6 +79,21 @@ void PrintPropellerStop(const Dataset& d) {
   }
 }
 
+// How fast the rudder channel [rad] moves in its large moves (metrics/recorded_yaw_rate.h): a move
+// of 5 deg or more between two samples is a log of the rudder's orders, which the closed-loop
+// replay of a data-driven model steps as the log did.
+void PrintRudderRate(const Dataset& d, const std::string& rudder) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  const double rate = LargeMoveRate(d, rudder, 2.0 * kDeg);
+  if (!(rate > 0) || d.rows() < 2) return;
+  const double period = d.duration() / static_cast<double>(d.rows() - 1);
+  std::printf("rudder %s: its large moves at %.3g deg/s%s\n", rudder.c_str(), rate / kDeg,
+              rate * period >= 5.0 * kDeg
+                  ? " (steps between two samples: the log holds the rudder's orders, which a "
+                    "data-driven model's replay steps as the log did)"
+                  : "");
+}
+
 struct InfoOptions {
   std::string data;
   bool zigzag = false;      // analyse as a zig-zag
@@ -109,10 +126,11 @@ void RunInfo(const InfoOptions& o) {
     const double a = test.kind.empty() ? o.zigzag_deg : test.rudder_deg;
     const double b = o.zigzag_deg > 0 ? o.zigzag_deg : test.check_deg;
     if (!(b > 0))
-      throw InputError(path + ": --zigzag: no zig-zag to read its heading check B from (no "
+      throw InputError(path +
+                       ": --zigzag: no zig-zag to read its heading check B from (no "
                        "rudder reversal from full angle); give B, --zigzag B");
     const ZigzagResponse z = AnalyseZigzag(d, b, o.heading, o.rudder, a);
-    const std::string source = o.zigzag_deg > 0   ? "given"
+    const std::string source = o.zigzag_deg > 0     ? "given"
                                : test.named.empty() ? "read from the record"
                                                     : "named by the log ('" + test.named +
                                                           "', checked against the record)";
@@ -125,6 +143,7 @@ void RunInfo(const InfoOptions& o) {
       std::printf("  reversal %zu at %8.2f s: overshoot %6.2f deg%s\n", i + 1, z.reversal_s[i],
                   z.overshoot_deg[i],
                   i + 1 == z.overshoot_deg.size() ? " (record may end first)" : "");
+    PrintRudderRate(d, o.rudder);
   }
 }
 

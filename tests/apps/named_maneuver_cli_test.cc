@@ -16,6 +16,7 @@ namespace {
 
 using testing::FreshTempDir;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using testing::RunUsvid;
 namespace fs = std::filesystem;
 
@@ -43,6 +44,9 @@ TEST_F(NamedManeuverCliTest, InfoReadsTheTestAsItsHeaderNamesIt) {
   EXPECT_THAT(r.out, HasSubstr("zig-zag 20/10 (heading check B named by the log ('Z20°/10° "
                                "starting to starboard', checked against the record))"));
   EXPECT_THAT(r.out, HasSubstr("first turn to starboard"));
+  // HSVA logs the rudder's angle, moving at the gear's 13 deg/s, 1.9 at full scale: no orders.
+  EXPECT_THAT(r.out, HasSubstr("rudder delta: its large moves at 1.9"));
+  EXPECT_THAT(r.out, Not(HasSubstr("orders")));
 }
 
 TEST_F(NamedManeuverCliTest, AHeaderTheRecordContradictsIsExitTwoNamingTheFile) {

@@ -265,6 +265,19 @@ TEST(EssoOsakaTest, ADataDrivenReplayStepsTheRudderAsTheLogDid) {
     return sum / static_cast<double>(v.size());
   };
   EXPECT_LT(mean(errors["sindy"]), mean(errors["nominal"]));
+  // `usvid info --zigzag` says so of a log: its rudder jumps by 40 deg between two samples.
+  const std::string log = (dir / "zz.csv").string();
+  ASSERT_EQ(RunUsvid("import --format csv --data " + kData +
+                     "/zigzag/zigzag_31-Jul-2020_13_04_24.csv --map \"t=t [s],psi=psi_hat [rad],"
+                     "r=r_angvelo [rad/s],n=n_prop [rps],delta=delta_rudder [rad]\" --out " +
+                     log)
+                .exit_code,
+            0);
+  const auto info = RunUsvid("info --data " + log + " --zigzag");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_THAT(info.out, ::testing::HasSubstr("rudder delta: its large moves at 397 deg/s (steps "
+                                             "between two samples: the log holds the rudder's "
+                                             "orders"));
 }
 
 TEST(EssoOsakaTest, DiagnoseNamesTheLoggedWindThatAModelIgnores) {
