@@ -223,9 +223,8 @@ class LentVariables {
  public:
   LentVariables(const PreparedData& prepared, GpProblem* all, long validation_begin,
                 double horizon_s, const std::vector<DerivedColumn>& derived)
-      : all_(all),
-        data_{prepared.data.t(), all->names, std::move(all->variables), validation_begin,
-              horizon_s, derived} {}
+      : all_(all), data_{prepared.data.t(), all->names, std::move(all->variables),
+                         validation_begin,  horizon_s,  derived} {}
   ~LentVariables() { all_->variables = std::move(data_.variables); }
   LentVariables(const LentVariables&) = delete;
   LentVariables& operator=(const LentVariables&) = delete;
@@ -310,6 +309,46 @@ Model WithTerm(Model model, int var) {
   return model;
 }
 
+// `model` with the product of the variables a and b added as one more term of weight 0.
+Model WithProduct(Model model, int a, int b) {
+  model.tree.push_back({Op::kVar, static_cast<uint16_t>(a), 1, 0.0});
+  model.tree.push_back({Op::kVar, static_cast<uint16_t>(b), 1, 0.0});
+  model.tree.push_back({Op::kMul, 0, 1, 0.0});
+  model.tree.push_back({Op::kAdd, 0, 1, 0.0});
+  UpdateLengths(model.tree);
+  model.term_roots = SplitTerms(model.tree);
+  model.weights.push_back(0.0);
+  return model;
+}
+
+// Whether one of `model`'s terms is the product of the variables a and b.
+bool HasProduct(const Model& model, int a, int b, const std::vector<std::string>& names) {
+  const std::string& x = names[static_cast<size_t>(a)];
+  const std::string& y = names[static_cast<size_t>(b)];
+  for (const int root : model.term_roots) {
+    const std::string term = ToString(model.tree, root, names);  // "(v * r)"
+    if (term == "(" + x + " * " + y + ")" || term == "(" + y + " * " + x + ")") return true;
+  }
+  return false;
+}
+
+// The rigid body's centripetal terms in body axes, u' += c v r and v' += c u r, offered to the
+// chosen equations of u and v that lack them (each of weight 0, for the simulation refit to size;
+// kinematics_offer). Returns the states offered one.
+std::vector<std::string> OfferKinematics(const std::vector<std::string>& states,
+                                         const GpProblem& all, std::vector<Model>& offered) {
+  std::vector<std::string> names;
+  const int u = Index(all, "u"), v = Index(all, "v"), r = Index(all, "r");
+  if (u < 0 || v < 0 || r < 0) return names;
+  for (size_t i = 0; i < states.size(); ++i) {
+    const int other = states[i] == "u" ? v : states[i] == "v" ? u : -1;
+    if (other < 0 || HasProduct(offered[i], other, r, all.names)) continue;
+    offered[i] = WithProduct(offered[i], other, r);
+    names.push_back(states[i]);
+  }
+  return names;
+}
+
 // The weights refitted by simulation error, each chosen equation that does not damp its own
 // state (by `rule`, Damps) first offered a linear term in it, of weight 0, for the simulation
 // refit to size: the linear damping every hull has (X_u u, Y_v v, N_r r), which a real log's
@@ -317,28 +356,33 @@ Model WithTerm(Model model, int var) {
 // on the Esso Osaka runs GP's surge and sway had none and diverged). The offer stays only when that
 // refit is accepted (it lowers the simulation error of the fit and the validation parts, and
 // free-runs the record); otherwise the equations are refitted as they were chosen. `damped` lists
-// the states offered and kept.
+// the states offered and kept; `kinematic` those offered the centripetal term (OfferKinematics)
+// in the same refit.
 SimulationRefit RefineWithDamping(const PreparedData& prepared,
                                   const std::vector<std::string>& states, GpProblem* all,
                                   const std::vector<DerivedColumn>& derived, long train_rows,
-                                  double horizon_s, DampingOffer rule, std::vector<Model>* bests,
-                                  std::vector<std::string>* damped) {
+                                  double horizon_s, const GpIdentifyOptions& options,
+                                  std::vector<Model>* bests, std::vector<std::string>* damped,
+                                  std::vector<std::string>* kinematic) {
   std::vector<Model> offered = *bests;
   std::vector<std::string> names;
   for (size_t i = 0; i < states.size(); ++i) {
     const int var = Index(*all, states[i]);
-    if (rule == DampingOffer::kNone ||
-        Damps(offered[i], var, *all, derived, prepared.data.t(), rule))
+    if (options.damping_offer == DampingOffer::kNone ||
+        Damps(offered[i], var, *all, derived, prepared.data.t(), options.damping_offer))
       continue;
     offered[i] = WithTerm(offered[i], var);
     names.push_back(states[i]);
   }
-  if (!names.empty()) {
+  std::vector<std::string> coupled;
+  if (options.kinematics_offer) coupled = OfferKinematics(states, *all, offered);
+  if (!names.empty() || !coupled.empty()) {
     SimulationRefit refit =
         RefineBySimulation(prepared, states, all, derived, train_rows, horizon_s, &offered);
     if (refit.accepted) {
       *bests = std::move(offered);
       *damped = std::move(names);
+      *kinematic = std::move(coupled);
       return refit;
     }
   }
@@ -471,10 +515,10 @@ GpIdentification IdentifyWithGp(
                                        select, surge, &all, &symmetric);
   SimulationRefit refit;
   const bool refine = select && options.weight_fit == WeightFit::kSimulation;
-  std::vector<std::string> damped;
+  std::vector<std::string> damped, kinematic;
   if (refine)
     refit = RefineWithDamping(prepared, states, &all, derived, train_rows, options.horizon_s,
-                              options.damping_offer, &bests, &damped);
+                              options, &bests, &damped, &kinematic);
 
   for (size_t i = 0; i < states.size(); ++i) {
     const std::string& state = states[i];
@@ -490,6 +534,10 @@ GpIdentification IdentifyWithGp(
     chosen["weights"] = WeightsJson(refit, refine, options.horizon_s);
     // Whether the equation was offered its own state as a damping term, which the refit kept.
     chosen["weights"]["damping_term_added"] = std::ranges::find(damped, state) != damped.end();
+    // Whether it was offered the centripetal term (kinematics_offer), which the refit kept.
+    if (options.kinematics_offer)
+      chosen["weights"]["kinematic_term_added"] =
+          std::ranges::find(kinematic, state) != kinematic.end();
     // Whether the chosen equation's damping was written with |u| for astern (astern_symmetry.h).
     chosen["astern_symmetric"] = std::ranges::find(symmetric, state) != symmetric.end();
     out.details[state] = {{"r2_train", best.r2},          {"r2_heldout", best.r2_heldout},

@@ -8,11 +8,10 @@
 // stopped, and which candidate was chosen and why.
 #pragma once
 
-#include <string_view>
-
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "methods/gp/search.h"
@@ -41,8 +40,10 @@ struct GpIdentifyOptions {
   GpOptions search;
   double validation_fraction = 0.2;  // the record's last part; 0: the search's best is kept
   double horizon_s = 10.0;           // of the short-horizon simulations
-  WeightFit weight_fit = WeightFit::kSimulation;  // needs a validation part
+  WeightFit weight_fit = WeightFit::kSimulation;         // needs a validation part
   DampingOffer damping_offer = DampingOffer::kUndamped;  // with the simulation refit
+  // With the simulation refit: u' offered v*r and v' u*r where the chosen equation lacks it.
+  bool kinematics_offer = false;
   // Variables computed from the states (regime_features.h): searched like any other, written
   // into the equations as their expressions, recomputed from the simulated states when
   // candidates are simulated.

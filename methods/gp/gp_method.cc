@@ -62,6 +62,12 @@ std::vector<OptionSpec> GpOptionSpecs() {
                    "which chosen equations the simulation refit offers a linear damping term in "
                    "their own state, kept if the refit is: those that do not damp it on average "
                    "over some record (undamped), or at every row (every-row), or none"),
+      ChoiceOption("kinematics", "none", {"none", "offer"},
+                   "with the simulation refit, offer surge the centripetal v*r and sway u*r where "
+                   "the chosen equation of u or v lacks it, kept if the refit is (offer: the rigid "
+                   "body's terms in body axes, which a log's noisy surge derivative hides; on Esso "
+                   "Osaka GP's surge had none and kept its speed through the turning circles), or "
+                   "not (none)"),
       ChoiceOption("yaw_bias", "equation", {"equation", "zigzag"},
                    "r's constant as the fit left it (equation), or set so that the model, "
                    "replayed closed-loop on each zig-zag among the training records, has their "
@@ -121,6 +127,7 @@ gp::GpIdentifyOptions GpOptionsFor(const IdentifyRequest& request, const MethodO
   g.damping_offer = o.Text("damping") == "every-row" ? gp::DampingOffer::kEveryRow
                     : o.Text("damping") == "none"    ? gp::DampingOffer::kNone
                                                      : gp::DampingOffer::kUndamped;
+  g.kinematics_offer = o.Text("kinematics") == "offer";
   if (std::string error; !s.IsValid(&error))
     throw InputError("method gp: option " + error);  // IsValid names the field, the option's key
   return g;
@@ -151,6 +158,7 @@ nlohmann::json GpDetails(const MethodOptions& o, const gp::GpIdentifyOptions& gp
           {"horizon_s", gpo.horizon_s},
           {"weight_fit", weight_fit},
           {"damping", o.Text("damping")},
+          {"kinematics", o.Text("kinematics")},
           {"fitness", o.Text("fitness")},
           {"fit_rows", so.fit_rows},
           {"node_evaluations", gp.node_evaluations},
@@ -209,7 +217,7 @@ void WriteGreyBoxSearch(const gp::GreyBoxResult& r, nlohmann::json& model) {
 // The base a grey-box fit corrects ('vessel': --vessel), refusing the options of whole
 // equations that have no part in it.
 std::string GreyBoxBase(const IdentifyRequest& request, const MethodOptions& o) {
-  for (const char* key : {"validation_fraction", "horizon_s", "fit", "damping"})
+  for (const char* key : {"validation_fraction", "horizon_s", "fit", "damping", "kinematics"})
     if (o.Given(key))
       throw InputError(std::string("method gp: option ") + key +
                        " has no part in a grey-box fit (--base), whose corrections are chosen by "
