@@ -223,8 +223,9 @@ class LentVariables {
  public:
   LentVariables(const PreparedData& prepared, GpProblem* all, long validation_begin,
                 double horizon_s, const std::vector<DerivedColumn>& derived)
-      : all_(all), data_{prepared.data.t(), all->names, std::move(all->variables),
-                         validation_begin,  horizon_s,  derived} {}
+      : all_(all),
+        data_{prepared.data.t(), all->names, std::move(all->variables), validation_begin,
+              horizon_s, derived} {}
   ~LentVariables() { all_->variables = std::move(data_.variables); }
   LentVariables(const LentVariables&) = delete;
   LentVariables& operator=(const LentVariables&) = delete;
