@@ -126,11 +126,10 @@ void RunInfo(const InfoOptions& o) {
     const double a = test.kind.empty() ? o.zigzag_deg : test.rudder_deg;
     const double b = o.zigzag_deg > 0 ? o.zigzag_deg : test.check_deg;
     if (!(b > 0))
-      throw InputError(path +
-                       ": --zigzag: no zig-zag to read its heading check B from (no "
+      throw InputError(path + ": --zigzag: no zig-zag to read its heading check B from (no "
                        "rudder reversal from full angle); give B, --zigzag B");
     const ZigzagResponse z = AnalyseZigzag(d, b, o.heading, o.rudder, a);
-    const std::string source = o.zigzag_deg > 0     ? "given"
+    const std::string source = o.zigzag_deg > 0   ? "given"
                                : test.named.empty() ? "read from the record"
                                                     : "named by the log ('" + test.named +
                                                           "', checked against the record)";

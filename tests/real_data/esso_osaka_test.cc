@@ -86,7 +86,8 @@ struct Zigzag {
 TEST(EssoOsakaTest, TheParticularsAloneReplayEachZigzagFromItsExecute) {
   if (!fs::exists(kData)) GTEST_SKIP() << "shared data absent: " << kData;
   const fs::path dir = FreshTempDir();
-  const std::string vessel = std::string(USVID_SOURCE_DIR) + "/docs/vessels/files/esso-osaka.yaml";
+  const std::string vessel =
+      std::string(USVID_SOURCE_DIR) + "/docs/vessels/files/esso-osaka.yaml";
   const std::string map =
       "\"t=t [s],north=x_position_mid [m],east=y_position_mid [m],psi=psi_hat [rad],"
       "u=u_velo [m/s],v=vm_velo [m/s],r=r_angvelo [rad/s],n=n_prop [rps],"
@@ -113,8 +114,8 @@ TEST(EssoOsakaTest, TheParticularsAloneReplayEachZigzagFromItsExecute) {
     const std::string spec =
         "zigzag:" + std::to_string(z.angle) + "/" + std::to_string(std::abs(z.angle));
     const fs::path out = dir / z.file;
-    const auto r = RunUsvid("evaluate --model " + model + " --data " + csv + " --maneuver " + spec +
-                            " --out " + out.string());
+    const auto r = RunUsvid("evaluate --model " + model + " --data " + csv + " --maneuver " +
+                            spec + " --out " + out.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const nlohmann::json loop = ReadJsonFile((out / "metrics.json").string()).at("closed_loop");
     ASSERT_EQ(loop.at("status"), "ok") << z.file;
