@@ -518,11 +518,12 @@ ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& 
   ManeuverSpec parsed = ParseManeuverSpec(spec);
   parsed.base_offset_rad = base_course_offset_rad;
   // An equation model's yaw command moves as the record's did (metrics/recorded_yaw_rate.h).
+  const bool vessel_model = IsVesselModel(model);
   Actuation act = info.actuation;
-  if (!IsVesselModel(model)) act.yaw_rate_limit = ReplayYawRateLimit(act, recorded);
+  if (!vessel_model) act.yaw_rate_limit = ReplayYawRateLimit(act, recorded);
   std::unique_ptr<Maneuver> rule = MakeManeuver(parsed, act, recorded.duration(), 1);
   RecordedApproach maneuver(std::move(rule), act, recorded);
-  if (IsVesselModel(model))
+  if (vessel_model)
     return ReplayVesselModel(model, maneuver, SampleRate(recorded), recorded, from_recorded_state);
   return ReplayEquationModel(model, info, maneuver, recorded);
 }

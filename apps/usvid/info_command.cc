@@ -80,8 +80,8 @@ void PrintPropellerStop(const Dataset& d) {
 }
 
 // How fast the rudder channel [rad] moves in its large moves (metrics/recorded_yaw_rate.h): a move
-// of 5 deg or more between two samples is a log of the rudder's orders, which the closed-loop
-// replay of a data-driven model steps as the log did.
+// of 5 deg or more between two samples is a log of the rudder's orders. (Whether a replay steps
+// them is the vessel's to say: ReplayYawRateLimit, against its rate.)
 void PrintRudderRate(const Dataset& d, const std::string& rudder) {
   constexpr double kDeg = std::numbers::pi / 180.0;
   const double rate = LargeMoveRate(d, rudder, 2.0 * kDeg);
@@ -89,8 +89,9 @@ void PrintRudderRate(const Dataset& d, const std::string& rudder) {
   const double period = d.duration() / static_cast<double>(d.rows() - 1);
   std::printf("rudder %s: its large moves at %.3g deg/s%s\n", rudder.c_str(), rate / kDeg,
               rate * period >= 5.0 * kDeg
-                  ? " (steps between two samples: the log holds the rudder's orders, which a "
-                    "data-driven model's replay steps as the log did)"
+                  ? " (steps between two samples: the log holds the rudder's orders; a "
+                    "data-driven model's replay steps them where they outrun twice the vessel's "
+                    "rate)"
                   : "");
 }
 
