@@ -10,7 +10,10 @@
 #     declared and never read would be accepted and silently ignored. (Identify checks the same
 #     at run time, after every fit: MethodOptions::Unread.)
 #  7. model.json's keys are read through core/model_view.h (ModelView) and nowhere else: a method
-#     writes its model, every reader takes it through the view.
+#     writes its model, every reader takes it through the view;
+#  8. no function body is longer than 80 lines (from the line after its opening brace to the line
+#     before its closing one), measured with Universal Ctags, which gives each function's first
+#     and last line (tools/install-deps.sh --test installs it).
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root"
@@ -77,6 +80,24 @@ if grep -rnP '^(?!\s*//).*\bmodel(\.(at|value|contains|find)\("|\["[a-z_]+"\](?!
      "${sources[@]}" --include='*.h' --include='*.cc' | grep -v '^core/model_view\.'; then
   echo "model key: read it through ModelView (core/model_view.h)"
   fail=1
+fi
+
+if command -v ctags >/dev/null && ctags --version | grep -q 'Universal Ctags'; then
+  while IFS=$'\t' read -r file line end name; do
+    # The body opens on the first line from the signature's that ends with '{'.
+    open=$(awk -v from="$line" -v to="$end" 'NR >= from && NR <= to && /\{[[:space:]]*$/ { print NR; exit }' "$file")
+    body=$((end - ${open:-$line} - 1))
+    if ((body > 80)); then
+      echo "function: $name ($file:$line) has a body of $body lines; at most 80"
+      fail=1
+    fi
+  done < <(ctags -R --languages=C++ --langmap=C++:+.in --c++-kinds=f --fields=+ne -o - "${layers[@]}" |
+             awk -F'\t' '{ l = ""; e = ""
+                           for (i = 4; i <= NF; i++) { if ($i ~ /^line:/) l = substr($i, 6)
+                                                      if ($i ~ /^end:/) e = substr($i, 5) }
+                           if (l != "" && e != "" && e - l > 81) print $2 "\t" l "\t" e "\t" $1 }')
+else
+  echo "function length: not checked (Universal Ctags not installed: tools/install-deps.sh --test)"
 fi
 
 exit $fail

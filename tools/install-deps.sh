@@ -3,7 +3,8 @@
 #   tools/install-deps.sh          what the build needs (the README's first command)
 #   tools/install-deps.sh --test   that, and the test command's tools: clang 14 with its
 #                                  sanitizers, libFuzzer and OpenMP, OpenMPI, and Chromium for the
-#                                  report's rendering test (some 1 GB more)
+#                                  report's rendering test (some 1 GB more), and Universal
+#                                  Ctags for the architecture test's function-length rule
 set -euo pipefail
 packages=(g++ cmake ninja-build ccache git
   libeigen3-dev libceres-dev libnlopt-cxx-dev libgtest-dev libgmock-dev libbenchmark-dev
@@ -13,7 +14,8 @@ case "${1:-}" in
   --test)
     packages+=(clang-14 libclang-rt-14-dev libomp-14-dev  # clang's sanitizers, libFuzzer, OpenMP
                openmpi-bin libopenmpi-dev                  # the MPI build (-DUSVID_WITH_MPI=ON)
-               chromium)                                   # the report's rendering test
+               chromium                                    # the report's rendering test
+               universal-ctags)                            # the function-length rule
     ;;
   "") ;;
   *)
