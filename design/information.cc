@@ -49,7 +49,7 @@ void CheckFocus(const DesignProblem& problem, const std::vector<std::string>& na
     if (std::find(names.begin(), names.end(), p) == names.end()) {
       std::string list;
       for (const std::string& k : names) list += (list.empty() ? "" : ", ") + k;
-      throw InputError("design: --parameters: " + problem.method + " on " + problem.vessel +
+      throw InputError("design: --parameters: " + problem.method + " on " + problem.vessel.Name() +
                        " has no free parameter '" + p + "' (free: " + list + ")");
     }
 }
@@ -62,11 +62,11 @@ void CheckProblem(const DesignProblem& problem) {
   if (!method.names.empty()) CheckFocus(problem, method.names);
 }
 
-Dataset SimulateManeuver(const std::string& vessel, const std::string& spec, double seconds,
+Dataset SimulateManeuver(const VesselRef& vessel, const std::string& spec, double seconds,
                          uint64_t seed) {
   if (!(seconds > 0.0) || !std::isfinite(seconds))
     throw InputError("design: --duration must be positive, not " + std::to_string(seconds));
-  const VesselSimulator& sim = FindVessel(vessel);
+  const VesselSimulator& sim = vessel.Simulator();
   auto maneuver = MakeManeuver(spec, sim.Info().actuation, seconds, seed);
   return sim.RunManeuver(*maneuver, sim.Info().default_params, {}, RunOptions{}).data;
 }
@@ -103,7 +103,7 @@ ManeuverInformation InformationOf(const DesignProblem& problem, const std::strin
   o.information_only = true;
   o.noise_sd = problem.noise;
   const Dataset data = SimulateManeuver(problem.vessel, maneuver, problem.seconds, seed);
-  const VesselInfo& info = FindVessel(problem.vessel).Info();
+  const VesselInfo& info = problem.vessel.Info();
   const RefitResult r = RefitVessel(problem.vessel, data, info.default_params, o);
 
   ManeuverInformation m;
@@ -112,7 +112,7 @@ ManeuverInformation InformationOf(const DesignProblem& problem, const std::strin
   m.information = r.information;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(m.information);
   if (m.names.empty() || !(eig.eigenvalues().maxCoeff() > 0.0))
-    throw InputError("design: " + maneuver + " on " + problem.vessel +
+    throw InputError("design: " + maneuver + " on " + problem.vessel.Name() +
                      " carries no information about the parameters of " + problem.method);
   // Directions with no information at all keep a finite, huge sd (1e-300 of the largest).
   const Eigen::VectorXd lambda = eig.eigenvalues().cwiseMax(eig.eigenvalues().maxCoeff() * 1e-300);

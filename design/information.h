@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "core/dataset.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid::design {
 
@@ -43,7 +44,8 @@ using NoiseModel = std::map<std::string, double>;
 
 // What a design study asks.
 struct DesignProblem {
-  std::string vessel, method;
+  VesselRef vessel;  // resolved where named
+  std::string method;
   double seconds = 600.0;  // trial length
   NoiseModel noise;
   std::vector<std::string> focus;  // parameters of interest, as the method names them; empty: all
@@ -81,7 +83,7 @@ NoiseModel ReferenceNoise(const Dataset& reference, const std::vector<std::strin
 void CheckProblem(const DesignProblem& problem);
 
 // The maneuver `spec` of `seconds` on the vessel, simulated once (seed: for random maneuvers).
-Dataset SimulateManeuver(const std::string& vessel, const std::string& spec, double seconds,
+Dataset SimulateManeuver(const VesselRef& vessel, const std::string& spec, double seconds,
                          uint64_t seed);
 
 // The trial as a method would record it: the maneuver (its seed 1) with each channel's noise as

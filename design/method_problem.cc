@@ -31,15 +31,15 @@ std::vector<std::string> EbLrNames() {
 
 }  // namespace
 
-MethodProblem MethodProblemOf(const std::string& vessel, const std::string& method) {
-  const VesselInfo& info = FindVessel(vessel).Info();  // throws for an unknown vessel
+MethodProblem MethodProblemOf(const VesselRef& vessel, const std::string& method) {
+  const VesselInfo& info = vessel.Info();
   MethodProblem p;
   if (method == kRefitMethodName) return p;
   if (method == fossen::kMethodName || method == eb_lr::kMethodName) {
     const std::string own(method == fossen::kMethodName ? Odin3Dof::kName : Eb2Dof::kName);
-    if (vessel != own)
+    if (vessel.Name() != own)
       throw InputError("design: " + method + " is designed for " + own +
-                       " only (its model is that vessel's), not " + vessel);
+                       " only (its model is that vessel's), not " + vessel.Name());
     p.refit.free = info.params;  // all of them
     p.refit.prior_sd = 1e9;      // none
     if (method == fossen::kMethodName) p.refit.segment_s = 10.0;  // its shooting segments
@@ -55,7 +55,7 @@ MethodProblem MethodProblemOf(const std::string& vessel, const std::string& meth
                    " has no simulator's parameters to design a maneuver for (use " + known + ")");
 }
 
-Probe ProbeFit(const std::string& vessel, const std::string& method, const Dataset& data) {
+Probe ProbeFit(const VesselRef& vessel, const std::string& method, const Dataset& data) {
   Probe probe;
   if (method != eb_lr::kMethodName) return probe;
   IdentifyRequest r;

@@ -25,6 +25,7 @@
 
 #include "core/dataset.h"
 #include "methods/refit/refit.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid::design {
 
@@ -33,7 +34,7 @@ struct MethodProblem {
   std::vector<std::string> names;  // each free parameter as the method's model.json names it
 };
 
-MethodProblem MethodProblemOf(const std::string& vessel, const std::string& method);
+MethodProblem MethodProblemOf(const VesselRef& vessel, const std::string& method);
 
 struct Probe {
   std::string unusable;   // why the method cannot fit the trial; "" when it can
@@ -42,6 +43,6 @@ struct Probe {
 
 // eb-lr fitted to `data` (a noisy run of the trial). The shooting fits take any record and are
 // not probed (an empty probe).
-Probe ProbeFit(const std::string& vessel, const std::string& method, const Dataset& data);
+Probe ProbeFit(const VesselRef& vessel, const std::string& method, const Dataset& data);
 
 }  // namespace usvid::design

@@ -52,7 +52,7 @@ std::optional<ManeuverInformation> OptimizeManeuver(const DesignProblem& problem
                                                     const std::string& family, int evaluations) {
   const ManeuverSpec parsed = ParseManeuverSpec(family);
   const std::string& name = parsed.name;
-  const auto knobs = KnobsOf(parsed.kind, FindVessel(problem.vessel).Info());
+  const auto knobs = KnobsOf(parsed.kind, problem.vessel.Info());
   if (!knobs) return std::nullopt;
   auto objective = [&](const std::vector<double>& x) {
     try {

@@ -296,11 +296,10 @@ void MeasureExtended(const Context& cx, const MeasuredData& d, const Eigen::Vect
 
 }  // namespace
 
-Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
-                   const std::vector<double>& params, const DiagnoseOptions& options,
-                   std::ostream* log) {
+Diagnosis Diagnose(const Dataset& data, const VesselRef& vessel, const std::vector<double>& params,
+                   const DiagnoseOptions& options, std::ostream* log) {
   const auto start = std::chrono::steady_clock::now();
-  const VesselSimulator& sim = FindVessel(vessel);
+  const VesselSimulator& sim = vessel.Simulator();
   const EffectFitter& fitter = FindEffectFitter(sim.Info().type);
   MeasuredData d = PrepareMeasuredData(data, sim, params, options.split);
   const bool wind_over_ground = d.base.wind_over_ground;  // PrepareMeasuredData's, kept
@@ -308,7 +307,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   d.base.wind_over_ground = wind_over_ground;
   const Context cx{sim, fitter, params, options, log};
 
-  Diagnosis out = Describe(data, vessel, cx, d);
+  Diagnosis out = Describe(data, vessel.Name(), cx, d);
 
   // 1. Show.
   const Eigen::VectorXd nominal_held = fitter.Residuals(d, d.heldout, params, std::nullopt);
@@ -323,7 +322,7 @@ Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
   // The same candidates in every round: the extended model has the same inputs.
   const std::vector<EffectSearch> searches = Searches(d, fitter);
   if (log)
-    *log << "diagnose: " << vessel << ", " << d.rows() << " rows, train " << out.train_s
+    *log << "diagnose: " << vessel.Name() << ", " << d.rows() << " rows, train " << out.train_s
          << " s, held out " << out.heldout_s << " s; fitting " << searches.size()
          << " candidate effects"
          << (d.fit.begin > d.train.begin

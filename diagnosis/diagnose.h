@@ -29,6 +29,7 @@
 #include "core/dataset.h"
 #include "diagnosis/effect_fitter.h"
 #include "diagnosis/residual_analysis.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid::diagnosis {
 
@@ -119,8 +120,7 @@ struct Diagnosis {
   double seconds = 0.0;
 };
 
-Diagnosis Diagnose(const Dataset& data, const std::string& vessel,
-                   const std::vector<double>& params, const DiagnoseOptions& options,
-                   std::ostream* log = nullptr);
+Diagnosis Diagnose(const Dataset& data, const VesselRef& vessel, const std::vector<double>& params,
+                   const DiagnoseOptions& options, std::ostream* log = nullptr);
 
 }  // namespace usvid::diagnosis

@@ -50,19 +50,18 @@ namespace {
 // the vessel logs its jets' states and the method takes inputs as channels (not a vessel model,
 // nor the inputs named by hand; eb-lr finds its steady windows where the commands are held).
 std::string ForcesFor(const std::string& method, const nlohmann::json& options,
-                      const std::string& vessel) {
+                      const VesselRef& vessel) {
   if (options.contains("forces"))
     return options["forces"] == "none" ? "" : options["forces"].get<std::string>();
   if (vessel.empty() || options.contains("inputs") || !FindSuiteMethod(method).channel_inputs)
     return "";
-  return HasWaterjetStates(FindVessel(vessel).Info().states) ? "waterjet" : "";
+  return HasWaterjetStates(vessel.Info().states) ? "waterjet" : "";
 }
 
 }  // namespace
 
 IdentifyRequest FitRequest(const std::string& method, const nlohmann::json& options,
-                           const std::string& vessel, uint64_t seed,
-                           const PreprocessOptions& base) {
+                           const VesselRef& vessel, uint64_t seed, const PreprocessOptions& base) {
   IdentifyRequest r;
   r.method = method;
   r.vessel = vessel;

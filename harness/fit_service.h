@@ -13,6 +13,7 @@
 #include "methods/identify_request.h"
 #include "methods/method.h"
 #include "methods/method_options.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -33,7 +34,7 @@ nlohmann::json OwnFitOptions(const nlohmann::json& options);
 // forces is the waterjet map for a method that takes inputs as channels on a vessel that logs
 // its jets (and no inputs named), else none. Threads and the data's name are the caller's.
 IdentifyRequest FitRequest(const std::string& method, const nlohmann::json& options,
-                           const std::string& vessel, uint64_t seed,
+                           const VesselRef& vessel, uint64_t seed,
                            const PreprocessOptions& base = {});
 
 // `method` fitted to `data` by `request` (methods/identify.h), then the steps the model asks

@@ -33,7 +33,7 @@
 
 namespace usvid {
 
-Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
+Dataset SimulateForSuite(const VesselRef& vessel, const std::string& maneuver, double seconds,
                          double noise, uint64_t seed, const SuiteConditions& conditions) {
   RecordRecipe recipe;
   recipe.vessel = vessel;
@@ -52,7 +52,7 @@ namespace {
 
 // Complexity, structure recovery against the true terms, and parameter error against the
 // simulator's parameters where the model names them.
-void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool measured,
+void ScoreModel(const VesselRef& vessel, const nlohmann::json& model, bool measured,
                 ResultRow& row) {
   double precision = 0.0, recall = 0.0;
   int known = 0;
@@ -68,7 +68,7 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
   }
   for (const auto& [state, text] : view.Equations()) {
     row.terms += TermCount(text);
-    if (const auto truth = TrueTerms(vessel, state)) {
+    if (const auto truth = TrueTerms(vessel.Name(), state)) {
       const StructureScore s = ScoreStructure(text, *truth);
       precision += s.precision;
       recall += s.recall;
@@ -80,7 +80,7 @@ void ScoreModel(const std::string& vessel, const nlohmann::json& model, bool mea
     row.recall = recall / known;
   }
   if (measured || vessel.empty()) return;  // no true parameters to compare with
-  const VesselInfo& info = FindVessel(vessel).Info();
+  const VesselInfo& info = vessel.Info();
   double worst = -1.0;
   for (size_t i = 0; i < info.params.size(); ++i)
     if (const std::optional<double> p = view.Parameter(info.params[i]))
@@ -104,7 +104,7 @@ std::string InputsOf(const nlohmann::json& model) {
 IdentifyRequest RequestFor(const Suite& suite, const FitJob& job) {
   IdentifyRequest r = FitRequest(job.method.method, job.method.options, job.vessel, job.seed);
   r.threads = 1;  // the suite runs jobs in parallel
-  r.data_name = job.vessel + "/" + job.train_maneuver;
+  r.data_name = job.vessel.Name() + "/" + job.train_maneuver;
   if (!suite.conditions.logged.empty() && !job.vessel.empty() &&
       FindSuiteMethod(job.method.method).any_inputs && !job.method.options.contains("inputs")) {
     r.inputs = DefaultChannels(r).inputs;
@@ -146,9 +146,9 @@ class SimulatedRecords {
  public:
   explicit SimulatedRecords(const Suite& suite) : suite_(suite) {}
 
-  std::shared_ptr<const Dataset> Get(const std::string& vessel, const std::string& maneuver,
+  std::shared_ptr<const Dataset> Get(const VesselRef& vessel, const std::string& maneuver,
                                      double seconds, double noise, uint64_t seed) {
-    const Key key{vessel, maneuver, seconds, noise, seed};
+    const Key key{vessel.Name(), maneuver, seconds, noise, seed};
     {
       std::lock_guard lock(mutex_);
       if (auto it = kept_.find(key); it != kept_.end()) return it->second;
@@ -184,9 +184,9 @@ Dataset FoldTrainingData(const Suite& suite, const std::string& train,
 // A test record whose log names its maneuver (metrics/maneuver_header.h) is read against that
 // name before any fit: a name the record contradicts, or one usvid does not know, stops the run
 // (InputError naming the file: exit 2), rather than failing every row that replays it.
-void CheckNamedManeuver(const Dataset& record, const std::string& vessel) {
+void CheckNamedManeuver(const Dataset& record, const VesselRef& vessel) {
   if (!record.metadata().contains("maneuver") || vessel.empty()) return;
-  const Actuation& act = FindVessel(vessel).Info().actuation;
+  const Actuation& act = vessel.Info().actuation;
   ReadTestOfRecord(record, "any", record.Has("psi") ? "psi" : "chi",
                    act.input_names.at(act.yaw_input));
 }
@@ -258,7 +258,7 @@ std::vector<ResultRow> RunCell(const Suite& suite, const FitJob& job,
                                const std::map<std::string, Dataset>& test_sets,
                                SimulatedRecords& simulated) {
   ResultRow base;
-  base.vessel = job.vessel.empty() ? suite.name : job.vessel;  // vessel-less data: the suite
+  base.vessel = job.vessel.empty() ? suite.name : job.vessel.Name();  // vessel-less data: the suite
   base.train_maneuver = TrainingLabel(suite, job.train_maneuver);
   base.method = job.method.Label();
   base.noise = job.noise;
@@ -304,7 +304,8 @@ std::map<size_t, std::vector<ResultRow>> RunCells(
     for (const SuiteData& d : suite.train_data) train_sets[d.name] = LoadSuiteData(d);
   for (const SuiteData& d : suite.test_data) {
     test_sets[d.name] = LoadSuiteData(d);
-    CheckNamedManeuver(test_sets[d.name], suite.vessels.empty() ? "" : suite.vessels.front());
+    CheckNamedManeuver(test_sets[d.name],
+                       suite.vessels.empty() ? VesselRef() : suite.vessels.front());
   }
   std::map<size_t, std::vector<ResultRow>> cells;
   SimulatedRecords simulated(suite);
@@ -377,8 +378,8 @@ std::string CellProgress(size_t finished, size_t total, const FitJob& job,
   // The job's id with its vessel named as a reader knows it (a vessel file's name:, not its path).
   const std::string id = job.Id();
   std::string line = "[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
-                     (id.starts_with(job.vessel) && !job.vessel.empty()
-                          ? VesselLabel(job.vessel) + id.substr(job.vessel.size())
+                     (id.starts_with(job.vessel.Name()) && !job.vessel.empty()
+                          ? VesselLabel(job.vessel.Name()) + id.substr(job.vessel.Name().size())
                           : id);
   // A fit that failed fails every test row the same way: say it once.
   if (!rows.empty() && rows.front().status != "ok" &&

@@ -21,7 +21,7 @@ namespace usvid {
 // The data a suite trains or tests on: `maneuver` on `vessel` (step grids run to the end of
 // their grid) under the suite's hidden effects, noise on every measured channel, then the
 // sensors' rates, all from `seed`.
-Dataset SimulateForSuite(const std::string& vessel, const std::string& maneuver, double seconds,
+Dataset SimulateForSuite(const VesselRef& vessel, const std::string& maneuver, double seconds,
                          double noise, uint64_t seed, const SuiteConditions& conditions = {});
 
 // Every cell (fit job) of the suite, in one process; rows in job order.

@@ -68,7 +68,7 @@ std::string SuiteMethod::Label() const {
 
 std::string FitJob::Id() const {
   std::ostringstream s;
-  s << vessel << "/" << train_maneuver << "/" << method.Label() << "/noise=" << noise
+  s << vessel.Name() << "/" << train_maneuver << "/" << method.Label() << "/noise=" << noise
     << "/seed=" << seed;
   return s.str();
 }
@@ -91,8 +91,8 @@ void CheckSuiteConditions(const Suite& s, const std::string& file) {
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.what());
   }
-  for (const std::string& vessel : s.vessels) {
-    const VesselInfo& info = FindVessel(vessel).Info();
+  for (const VesselRef& vessel : s.vessels) {
+    const VesselInfo& info = vessel.Info();
     try {
       for (const Effect& e : effects)
         if (e.kind == EffectKind::kWind && !info.wind_body)
@@ -163,7 +163,7 @@ std::vector<FitJob> FitJobs(const Suite& s) {
   // vessel cannot run at all (a zig-zag without a heading) are left out.
   std::vector<FitJob> jobs;
   if (s.Measured()) {
-    const std::string vessel = s.vessels.empty() ? "" : s.vessels[0];
+    const VesselRef vessel = s.vessels.empty() ? VesselRef() : s.vessels[0];
     // The data do not change with the seed: only a seeded method's search (gp's) does.
     for (const std::string& train : s.train_maneuvers)
       for (const SuiteMethod& m : s.methods)
@@ -174,8 +174,8 @@ std::vector<FitJob> FitJobs(const Suite& s) {
           }
     return jobs;
   }
-  for (const std::string& vessel : s.vessels) {
-    const VesselInfo& info = FindVessel(vessel).Info();
+  for (const VesselRef& vessel : s.vessels) {
+    const VesselInfo& info = vessel.Info();
     for (const std::string& train : s.train_maneuvers) {
       if (IsManeuverTest(train) && info.actuation.heading_state < 0) continue;
       if (KindOfManeuver(train) == ManeuverKind::kStepGrid && info.actuation.thrust_input < 0)

@@ -43,6 +43,7 @@
 #include "harness/suite_data.h"
 #include "harness/suite_methods.h"
 #include "methods/method_options.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -87,7 +88,7 @@ struct SuiteCrossValidation {
 
 struct Suite {
   std::string name = "suite";
-  std::vector<std::string> vessels;
+  std::vector<VesselRef> vessels;  // resolved as the suite is read
   std::vector<std::string> train_maneuvers, test_maneuvers;
   std::vector<SuiteMethod> methods;
   std::vector<double> noise;
@@ -107,7 +108,8 @@ struct Suite {
 
 // One fit: a method trained on one vessel's maneuver at a noise level and seed.
 struct FitJob {
-  std::string vessel, train_maneuver;
+  VesselRef vessel;
+  std::string train_maneuver;
   SuiteMethod method;
   double noise = 0.0;
   uint64_t seed = 1;

@@ -47,9 +47,9 @@ std::string Text(const nlohmann::json& v, const Context& c, const std::string& f
 // not every vessel has): refused before any fit.
 void CheckManeuver(const Suite& s, const std::string& spec, const std::string& where) {
   std::string why;
-  for (const std::string& vessel : s.vessels) {
+  for (const VesselRef& vessel : s.vessels) {
     try {
-      MakeManeuver(spec, FindVessel(vessel).Info().actuation, 0.0, 1);
+      MakeManeuver(spec, vessel.Info().actuation, 0.0, 1);
       return;
     } catch (const InputError& e) {
       if (why.empty()) why = e.what();
@@ -68,21 +68,24 @@ void ReadCv(const nlohmann::json& v, const Context& c, Suite& s) {
 // A simulated suite's vessels, or a measured one's (at most one, or none when the methods name
 // their channels); a vessel file named relative to the suite, as its data are.
 void ReadVessels(const nlohmann::json& v, const Context& c, Suite& s) {
+  std::vector<std::string> names;
   if (c.measured) {
     if (!v.is_array()) throw InputError(c.file + ": vessels: expected an array");
     for (const auto& item : v) {
       if (!item.is_string()) throw InputError(c.file + ": vessels: names are strings");
-      s.vessels.push_back(item.get<std::string>());
+      names.push_back(item.get<std::string>());
     }
-    if (s.vessels.size() > 1)
+    if (names.size() > 1)
       throw InputError(c.file + ": a suite on measured data has at most one vessel");
   } else {
-    s.vessels = ListOf<std::string>(v, c.file + ": vessels");
+    names = ListOf<std::string>(v, c.file + ": vessels");
   }
-  for (std::string& vessel : s.vessels)
-    if (IsVesselFile(vessel))
-      vessel = SuitePath(std::filesystem::path(c.file).parent_path().string(), vessel);
-  for (const std::string& vessel : s.vessels) FindVessel(vessel);  // throws on unknown names
+  s.vessels.clear();
+  for (std::string& name : names) {
+    if (IsVesselFile(name))
+      name = SuitePath(std::filesystem::path(c.file).parent_path().string(), name);
+    s.vessels.emplace_back(name);  // resolved here: throws on an unknown name
+  }
 }
 
 std::vector<SuiteData> DataList(const nlohmann::json& v, const std::string& file,
@@ -202,7 +205,11 @@ using Json = nlohmann::json;
 
 Json WriteName(const Suite& s) { return s.name; }
 Json WriteCv(const Suite& s) { return s.cv.On() ? Json(s.cv.kind) : Json(); }
-Json WriteVessels(const Suite& s) { return s.vessels; }
+Json WriteVessels(const Suite& s) {
+  Json names = Json::array();
+  for (const VesselRef& vessel : s.vessels) names.push_back(vessel.Name());
+  return names;
+}
 
 // A cross-validated suite as it was given, with its "cv": parsed again, it expands alike.
 Json WriteData(const Suite& s) {

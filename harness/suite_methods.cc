@@ -21,8 +21,8 @@ nlohmann::json DiagnosedModel(const Dataset& train, const IdentifyRequest& reque
   options.split.max_fit_rows = o.Integer("fit_rows");
   options.max_causes = static_cast<int>(o.Integer("causes"));
   options.discover = false;  // proposals are for a person to read, not part of the model
-  const diagnosis::Diagnosis d = diagnosis::Diagnose(
-      train, request.vessel, FindVessel(request.vessel).Info().default_params, options);
+  const diagnosis::Diagnosis d =
+      diagnosis::Diagnose(train, request.vessel, request.vessel.Info().default_params, options);
   nlohmann::json model = diagnosis::ExtendedModelJson(d);
   model["states"] = d.channels;
   return model;

@@ -24,14 +24,14 @@ std::vector<std::string> StatesExcept(const VesselInfo& info,
 
 }  // namespace
 
-std::vector<std::string> VesselVariables(const std::string& vessel) {
-  return StatesExcept(FindVessel(vessel).Info(), kNotVariables);
+std::vector<std::string> VesselVariables(const VesselRef& vessel) {
+  return StatesExcept(vessel.Info(), kNotVariables);
 }
 
 Channels DefaultChannels(const IdentifyRequest& o) {
   Channels c{o.states, o.states, o.inputs};
   if (!o.vessel.empty()) {
-    const VesselInfo& info = FindVessel(o.vessel).Info();
+    const VesselInfo& info = o.vessel.Info();
     if (c.states.empty()) {
       c.variables = StatesExcept(info, kNotVariables);
       std::set<std::string> no_equation = kNotVariables;
@@ -84,7 +84,7 @@ ChannelFit PrepareChannelFit(const Dataset& data, const IdentifyRequest& o, Chan
   for (const std::string& note : fit.prepared.notes) Log(log, note);
   fit.model = {
       {"method", o.method},
-      {"vessel", o.vessel},
+      {"vessel", o.vessel.Name()},
       {"states", channels.states},
       {"variables", channels.variables},
       {"inputs", channels.inputs},

@@ -12,6 +12,7 @@
 #include "methods/identify_request.h"
 #include "methods/method.h"
 #include "preprocessing/pipeline.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -22,7 +23,7 @@ struct Channels {
 };
 
 // A vessel's states less positions, heading and actuator feedback: what its dynamics depend on.
-std::vector<std::string> VesselVariables(const std::string& vessel);
+std::vector<std::string> VesselVariables(const VesselRef& vessel);
 
 // The request's --states and --inputs, else the vessel's: its states less positions, heading
 // and actuator feedback (and the msd's position x, which has no equation but is a variable),

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "preprocessing/pipeline.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -22,7 +23,7 @@ inline constexpr long kCeresFitRows = 60000;
 
 struct IdentifyRequest {
   std::string method;  // a registered method's name (methods/registry.h)
-  std::string vessel;  // states and inputs from it (when not given)
+  VesselRef vessel;    // states and inputs from it (when not given); resolved where named
   std::vector<std::string> states, inputs;
   std::string data_name;  // for model.json's train.data
   PreprocessOptions preprocess;

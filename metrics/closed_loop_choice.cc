@@ -21,7 +21,7 @@ constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 // reversals show it: a half swing at least, which the reading checks against the first order
 // (zigzag_response.h); with one reversal alone nothing tells a random run's reversal from full
 // angle from a zig-zag's.
-std::vector<RecordedTest> TestRecords(const Dataset& train, const std::string& vessel) {
+std::vector<RecordedTest> TestRecords(const Dataset& train, const VesselRef& vessel) {
   std::vector<RecordedTest> out;
   for (RecordedTest& t : RecordedTests(train, vessel, {"zigzag", "turning"}))
     if (KindOfManeuver(t.spec) != ManeuverKind::kZigzag ||
@@ -89,9 +89,10 @@ nlohmann::json CriteriaRow(const Criteria& c, bool admissible) {
 }  // namespace
 
 nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
-                                  const std::string& vessel_given) {
+                                  const VesselRef& vessel_given) {
   nlohmann::json report = {{"applied", false}};
-  const std::string vessel = !vessel_given.empty() ? vessel_given : ModelView(model).Vessel();
+  const VesselRef vessel =
+      !vessel_given.empty() ? vessel_given : VesselRef(ModelView(model).Vessel());
   const std::vector<ModelAlternative> alternatives = ModelView(model).Alternatives();
   if (alternatives.empty()) {
     report["reason"] = "the model weighed no alternatives";
@@ -102,7 +103,7 @@ nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
     return report;
   }
   // A zig-zag's and a turning circle's angles are a rudder's: odin3dof steers by a yaw moment.
-  if (!FindVessel(vessel).Info().actuation.yaw_is_angle) {
+  if (!vessel.Info().actuation.yaw_is_angle) {
     report["reason"] =
         "the vessel steers by no rudder angle, so no zig-zag or turning circle is "
         "read from the records: the free runs chose";

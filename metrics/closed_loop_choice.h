@@ -16,6 +16,7 @@
 #include <string>
 
 #include "core/dataset.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -30,6 +31,6 @@ namespace usvid {
 // error, and where it was replayed its mean errors and whether it was admissible ("replayed":
 // false otherwise). With no such test among the records the model is left as fitted.
 nlohmann::json ChooseByClosedLoop(nlohmann::json& model, const Dataset& train,
-                                  const std::string& vessel);
+                                  const VesselRef& vessel);
 
 }  // namespace usvid

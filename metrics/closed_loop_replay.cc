@@ -511,10 +511,10 @@ nlohmann::json Value(double v) { return std::isfinite(v) ? nlohmann::json(v) : n
 
 }  // namespace
 
-ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
+ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const VesselRef& vessel,
                                 const std::string& spec, const Dataset& recorded,
                                 bool from_recorded_state, double base_course_offset_rad) {
-  const VesselInfo& info = FindVessel(vessel).Info();
+  const VesselInfo& info = vessel.Info();
   ManeuverSpec parsed = ParseManeuverSpec(spec);
   parsed.base_offset_rad = base_course_offset_rad;
   // An equation model's yaw command moves as the record's did (metrics/recorded_yaw_rate.h).
@@ -576,22 +576,22 @@ nlohmann::json ManeuverCriteria(const std::string& spec, const Dataset& data,
   throw InputError("closed loop: '" + spec + "' has no maneuver criteria");
 }
 
-std::string RecordedManeuverSpec(const std::string& spec, const std::string& vessel,
+std::string RecordedManeuverSpec(const std::string& spec, const VesselRef& vessel,
                                  const Dataset& recorded) {
   if (!IsBareManeuverTest(spec) || vessel.empty()) return spec;
-  const Actuation& act = FindVessel(vessel).Info().actuation;
+  const Actuation& act = vessel.Info().actuation;
   // The heading as logged: a derived course needs psi itself (core/derived_channels.h).
   const std::string read = ManeuverOfRecord(recorded, spec, recorded.Has("psi") ? "psi" : "chi",
                                             act.input_names.at(act.yaw_input));
   return read.empty() ? spec : read;
 }
 
-ManeuverScorer::ManeuverScorer(const std::string& vessel, const std::string& spec,
+ManeuverScorer::ManeuverScorer(const VesselRef& vessel, const std::string& spec,
                                const Dataset& recorded_data)
     : vessel_(vessel), spec_(spec) {
   Dataset full = recorded_data;
   AddDerivedChannels(full);
-  const Actuation& act = FindVessel(vessel).Info().actuation;
+  const Actuation& act = vessel.Info().actuation;
   rudder_ = act.input_names.at(act.yaw_input);
   // A real log's test starts after its approach: replay from the lead-in before the execute.
   recorded_ = FromLeadIn(spec, full, full.Has("psi") ? "psi" : "chi", rudder_);
@@ -659,7 +659,7 @@ nlohmann::json ManeuverScorer::Score(const nlohmann::json& model) const {
   return out;
 }
 
-nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
+nlohmann::json ClosedLoopScore(const nlohmann::json& model, const VesselRef& vessel,
                                const std::string& spec, const Dataset& recorded_data) {
   nlohmann::json out = {{"maneuver", spec}};
   if (spec.empty()) {

@@ -27,6 +27,7 @@
 #include <string>
 
 #include "core/dataset.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -44,7 +45,7 @@ struct ClosedLoopReplay {
 // velocities) instead of its own steady state. A zig-zag reverses about a base course
 // `base_course_offset_rad` off the model's heading at the execute: the record's, which
 // ManeuverScorer reads once (metrics/zigzag_response.h).
-ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const std::string& vessel,
+ClosedLoopReplay ReplayManeuver(const nlohmann::json& model, const VesselRef& vessel,
                                 const std::string& spec, const Dataset& recorded,
                                 bool from_recorded_state = false,
                                 double base_course_offset_rad = 0.0);
@@ -79,7 +80,7 @@ class ManeuverScorer {
  public:
   // Throws InputError as ClosedLoopScore does for a record without the maneuver's channels, or
   // whose first turn goes the other way than `spec`'s.
-  ManeuverScorer(const std::string& vessel, const std::string& spec, const Dataset& recorded);
+  ManeuverScorer(const VesselRef& vessel, const std::string& spec, const Dataset& recorded);
   nlohmann::json Score(const nlohmann::json& model) const;
   // The replay Score reads its criteria from (the report's plan views, harness/plan_view.h);
   // throws InputError when the model cannot be replayed.
@@ -90,7 +91,8 @@ class ManeuverScorer {
   double base_course_offset_rad() const { return base_course_offset_rad_; }
 
  private:
-  std::string vessel_, spec_, rudder_;
+  VesselRef vessel_;
+  std::string spec_, rudder_;
   Dataset recorded_;                                        // from the lead-in on
   std::optional<double> replayed_from_s_;                   // where it was cut, if it was
   double base_course_offset_rad_ = 0.0;                     // a zig-zag's, read from the record
@@ -102,14 +104,14 @@ class ManeuverScorer {
 // status "ok"; "diverged at T s (channel)"; or "not replayable: why" (an open-loop maneuver, a
 // record without a maneuver, a model that cannot run one): never a missing field, never throws
 // for the model's sake (a record without the maneuver's channels still throws InputError).
-nlohmann::json ClosedLoopScore(const nlohmann::json& model, const std::string& vessel,
+nlohmann::json ClosedLoopScore(const nlohmann::json& model, const VesselRef& vessel,
                                const std::string& spec, const Dataset& recorded);
 
 // The spec that replays a measured record: "zigzag" or "turning" alone is the test the record
 // holds, its angle and side read from it with `vessel`'s rudder (metrics/maneuver_of_record.h);
 // any other spec, or one the record does not hold, is returned as it is. Measured records only:
 // a simulated suite's "zigzag" is the maneuver it simulated (20/20).
-std::string RecordedManeuverSpec(const std::string& spec, const std::string& vessel,
+std::string RecordedManeuverSpec(const std::string& spec, const VesselRef& vessel,
                                  const Dataset& recorded);
 
 }  // namespace usvid

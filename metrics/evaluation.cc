@@ -10,6 +10,7 @@
 #include "metrics/fit_metrics.h"
 #include "preprocessing/pipeline.h"
 #include "preprocessing/waterjet_forces.h"
+#include "simulation/vessel_ref.h"
 #include "simulation/vessel_simulator.h"
 #include "simulators/vessel.h"
 
@@ -126,9 +127,8 @@ double HullLength(const nlohmann::json& model) {
   const ModelView view(model);
   if (const std::string vessel = view.Vessel(); !vessel.empty()) {
     const std::vector<std::string> known = VesselNames();
-    if ((std::ranges::find(known, vessel) != known.end() || IsVesselFile(vessel)) &&
-        FindVessel(vessel).Info().length_m > 0)
-      length = FindVessel(vessel).Info().length_m;
+    if (std::ranges::find(known, vessel) != known.end() || IsVesselFile(vessel))
+      if (const double l = VesselRef(vessel).Info().length_m; l > 0) length = l;
   }
   return view.LengthM().value_or(length);
 }

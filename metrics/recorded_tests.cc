@@ -5,7 +5,7 @@
 
 namespace usvid {
 
-std::vector<RecordedTest> RecordedTests(const Dataset& train, const std::string& vessel,
+std::vector<RecordedTest> RecordedTests(const Dataset& train, const VesselRef& vessel,
                                         const std::vector<std::string>& kinds) {
   std::vector<RecordedTest> out;
   const std::vector<long> starts = RecordStarts(train.t());

@@ -9,6 +9,7 @@
 
 #include "core/dataset.h"
 #include "metrics/closed_loop_replay.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -20,7 +21,7 @@ struct RecordedTest {
 // The records of `train` that hold a test of one of `kinds` ("zigzag", "turning"; the first
 // that a record holds), each with its time from 0, replayed on `vessel`'s rudder. A record
 // without a heading or rudder, or that holds none of them, is left out.
-std::vector<RecordedTest> RecordedTests(const Dataset& train, const std::string& vessel,
+std::vector<RecordedTest> RecordedTests(const Dataset& train, const VesselRef& vessel,
                                         const std::vector<std::string>& kinds);
 
 }  // namespace usvid

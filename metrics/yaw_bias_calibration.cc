@@ -128,9 +128,10 @@ double BestShift(const Evaluate& evaluate, double step, CriteriaCost& best) {
 }  // namespace
 
 nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
-                                const std::string& vessel_given) {
+                                const VesselRef& vessel_given) {
   nlohmann::json report = {{"applied", false}};
-  const std::string vessel = !vessel_given.empty() ? vessel_given : ModelView(model).Vessel();
+  const VesselRef vessel =
+      !vessel_given.empty() ? vessel_given : VesselRef(ModelView(model).Vessel());
   const std::optional<std::string> equation = ModelView(model).Equation("r");
   if (!equation) {
     report["reason"] = "the model has no equation of r";
@@ -185,7 +186,7 @@ nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
   return report;
 }
 
-void CalibrateRequested(nlohmann::json& model, const Dataset& train, const std::string& vessel) {
+void CalibrateRequested(nlohmann::json& model, const Dataset& train, const VesselRef& vessel) {
   if (ModelView(model).Calibration("choose") == "closed-loop")
     ModelEdit(model).SetCalibration("choose", ChooseByClosedLoop(model, train, vessel));
   if (ModelView(model).Calibration("yaw_bias") != "zigzag") return;

@@ -23,6 +23,7 @@
 #include <string>
 
 #include "core/dataset.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -36,10 +37,10 @@ namespace usvid {
 // A model that does not ask is left as it is. Before it, a grey-box model that asks for it
 // (model["calibration"]["choose"] == "closed-loop") is chosen among its alternatives by the
 // training records' closed-loop tests (closed_loop_choice.h).
-void CalibrateRequested(nlohmann::json& model, const Dataset& train, const std::string& vessel);
+void CalibrateRequested(nlohmann::json& model, const Dataset& train, const VesselRef& vessel);
 
 // The calibration itself, for a model with an r equation; returns the report above.
 nlohmann::json CalibrateYawBias(nlohmann::json& model, const Dataset& train,
-                                const std::string& vessel);
+                                const VesselRef& vessel);
 
 }  // namespace usvid

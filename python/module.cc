@@ -71,7 +71,7 @@ py::dict Simulate(const std::string& vessel, const py::object& maneuver, const p
     recipe.seed = seed;
     SimulatedRecord record = SimulateRecord(recipe);
     if (record.diverged)
-      throw InputError("simulate: the " + FindVessel(vessel).Info().name +
+      throw InputError("simulate: the " + recipe.vessel.Info().name +
                        " simulation diverged at t = " + std::to_string(record.diverged_at_s) +
                        " s");
     data = std::move(record.data);
@@ -142,8 +142,9 @@ py::dict Diagnose(const py::dict& data, const std::string& vessel, int causes, b
     diagnosis::DiagnoseOptions options;
     options.max_causes = causes;
     options.discover = discover;
+    const VesselRef ref(vessel);
     const diagnosis::Diagnosis result =
-        diagnosis::Diagnose(d, vessel, FindVessel(vessel).Info().default_params, options);
+        diagnosis::Diagnose(d, ref, ref.Info().default_params, options);
     out = diagnosis::DiagnosisToJson(result);
     out["model"] = diagnosis::ExtendedModelJson(result);
   }

@@ -68,7 +68,7 @@ nlohmann::json RunTruth(const RecordRecipe& r, const VesselInfo& info,
 
 SimulatedRecord SimulateRecord(const RecordRecipe& r,
                                const std::function<void(const std::string&)>& log) {
-  const VesselSimulator& sim = FindVessel(r.vessel);
+  const VesselSimulator& sim = r.vessel.Simulator();
   const VesselInfo& info = sim.Info();
   const std::vector<double>& params = r.params.empty() ? info.default_params : r.params;
   const EffectValues<double> values = ValuesOf(r.effects, info.inputs, info.states);

@@ -17,11 +17,12 @@
 #include "maneuvers/true_wind.h"
 #include "sensors/sensor_chain.h"
 #include "simulation/run_options.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
 struct RecordRecipe {
-  std::string vessel;                 // a registered vessel or a vessel file
+  VesselRef vessel;                   // a registered vessel or a vessel file
   std::string maneuver;               // a maneuver spec; empty: `inputs` drive the run
   const Dataset* inputs = nullptr;    // recorded inputs (zero-order hold), when no maneuver
   double duration_s = 0.0;            // 0: the maneuver's own

@@ -42,8 +42,8 @@ void RunDesign(const DesignOptions& o) {
   // The sensors' noise, the same for every maneuver: a fraction of each state's spread on the
   // first maneuver.
   problem.noise = design::ReferenceNoise(
-      design::SimulateManeuver(o.vessel, o.maneuvers.at(0), o.duration, 1),
-      FindVessel(o.vessel).Info().states, o.noise);
+      design::SimulateManeuver(problem.vessel, o.maneuvers.at(0), o.duration, 1),
+      problem.vessel.Info().states, o.noise);
   design::DesignStudy study;
   study.vessel = o.vessel;
   study.method = o.method;

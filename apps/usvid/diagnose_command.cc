@@ -17,7 +17,7 @@
 #include "diagnosis/diagnose.h"
 #include "diagnosis/diagnosis_json.h"
 #include "diagnosis/diagnosis_report.h"
-#include "simulation/vessel_simulator.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 namespace {
@@ -32,9 +32,9 @@ struct DiagnoseCliOptions {
 };
 
 void RunDiagnose(const DiagnoseCliOptions& o) {
-  const VesselSimulator& sim = FindVessel(o.vessel);
+  const VesselRef vessel(o.vessel);
   const std::vector<double> params =
-      o.params.empty() ? sim.Info().default_params : sim.Info().ParamsFromFile(o.params);
+      o.params.empty() ? vessel.Info().default_params : vessel.Info().ParamsFromFile(o.params);
   diagnosis::DiagnoseOptions options = o.options;
   // A model diagnosed before brings its effects: the next diagnosis starts from them.
   if (!o.params.empty()) options.base_effects = EffectsOfFile(o.params);
@@ -42,7 +42,7 @@ void RunDiagnose(const DiagnoseCliOptions& o) {
   if (o.threads < 0) throw InputError("--threads must be 0 (all cores) or more");
   const Dataset data = ReadDataFile(o.data, "usvid diagnose");
   EnsureOutputDirectory(o.out);
-  const diagnosis::Diagnosis d = diagnosis::Diagnose(data, o.vessel, params, options, &std::cerr);
+  const diagnosis::Diagnosis d = diagnosis::Diagnose(data, vessel, params, options, &std::cerr);
   diagnosis::WriteDiagnosisReport(d, o.out);
   WriteJsonFile(o.out + "/model.json", diagnosis::ExtendedModelJson(d));
   WriteJsonFile(o.out + "/diagnosis.json", diagnosis::DiagnosisToJson(d));

@@ -27,7 +27,7 @@
 #include "metrics/closed_loop_replay.h"
 #include "metrics/evaluation.h"
 #include "plot/figure_grid.h"
-#include "simulation/vessel_simulator.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 namespace {
@@ -57,12 +57,10 @@ ScoredRecord EvaluateRecord(const nlohmann::json& model, const EvaluateOptions& 
   }
   nlohmann::json& metrics = r.evaluation.metrics;
   if (!o.maneuver.empty()) {
-    std::string vessel = o.vessel;
-    if (vessel.empty()) vessel = ModelView(model).Vessel();
+    const VesselRef vessel(!o.vessel.empty() ? o.vessel : ModelView(model).Vessel());
     if (vessel.empty())
       throw InputError(o.model +
                        ": --maneuver needs a vessel: the model names none, give --vessel");
-    FindVessel(vessel);  // throws for an unknown name
     metrics["closed_loop"] =
         ClosedLoopScore(model, vessel, RecordedManeuverSpec(o.maneuver, vessel, r.data), r.data);
   }

@@ -32,7 +32,8 @@ const std::map<std::string, std::string> kOldFlags = {{"horizon_s", "--horizon"}
                                                       {"segment_s", "--segment"}};
 
 struct IdentifyOptions {
-  IdentifyRequest request;
+  IdentifyRequest request;  // the method, seed and threads given (the rest: FitRequest)
+  std::string vessel;       // --vessel, resolved by FitRequest
   std::string data;
   std::string params;
   PreprocessFlags pre;
@@ -80,14 +81,14 @@ void RunIdentify(const IdentifyOptions& o) {
   CheckOutputFile(o.out);
   // The request as a suite's or Python's is made (harness/fit_service.h), over the preprocessing
   // only the command line has (--interpolation, --delay, ...).
-  IdentifyRequest r = FitRequest(o.request.method, GivenOptions(o), o.request.vessel,
-                                 o.request.seed, o.pre.Options());
+  IdentifyRequest r =
+      FitRequest(o.request.method, GivenOptions(o), o.vessel, o.request.seed, o.pre.Options());
   r.threads = o.request.threads;
   CheckedOptions(FindMethod(r.method), r, "usvid identify");  // before the data are read
   r.data_name = o.data;
   if (!o.params.empty()) {
     if (r.vessel.empty()) throw InputError("--params: needs --vessel");
-    r.start_params = FindVessel(r.vessel).Info().ParamsFromFile(o.params);
+    r.start_params = r.vessel.Info().ParamsFromFile(o.params);
   }
   // Every record needs the named channels, except those identify derives (speed and course,
   // and a force map's forces when one is given).
@@ -186,7 +187,7 @@ void AddIdentifyCommand(CLI::App& app) {
   cmd->add_option("--data", o->data,
                   "Training data CSV, or several (a.csv,b.csv,...) fitted jointly")
       ->required();
-  cmd->add_option("--vessel", o->request.vessel,
+  cmd->add_option("--vessel", o->vessel,
                   "Take states and inputs from this simulator: " + VesselChoices());
   o->pre.Add(*cmd, /*fit_keys=*/false);
   AddMethodOptionFlags(*cmd, *o);

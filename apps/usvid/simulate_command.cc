@@ -97,9 +97,9 @@ void RunSimulate(const SimulateOptions& o) {
     throw InputError("simulate: give exactly one of --maneuver and --inputs");
   if (!(o.dt > 0) || !(o.rate_hz > 0)) throw InputError("--dt and --rate: must be positive");
   CheckOutputFile(o.out);
-  const VesselInfo& info = FindVessel(o.vessel).Info();
   RecordRecipe recipe;
   recipe.vessel = o.vessel;
+  const VesselInfo& info = recipe.vessel.Info();
   recipe.maneuver = o.maneuver;
   recipe.duration_s = o.duration;
   recipe.cruise = o.cruise;

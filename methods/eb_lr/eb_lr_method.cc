@@ -38,7 +38,7 @@ eb_lr::EbLrOptions EbLrOptionsFor(const IdentifyRequest& o, const std::vector<st
   eo.sigma_speed_basis = {{1, 0}, {0, 0}, {2, 0}, {3, 0}, {4, 0}, {0, 2}, {0, 4}};
   eo.mass_rate_basis = {{0, 0}};
   if (o.vessel.empty()) return eo;
-  const Actuation& a = FindVessel(o.vessel).Info().actuation;
+  const Actuation& a = o.vessel.Info().actuation;
   if (a.thrust_input < 0 || a.yaw_input < 0) return eo;
   std::vector<std::string> commands = {a.input_names[a.thrust_input], a.input_names[a.yaw_input]};
   if (data.Has(commands[0]) && data.Has(commands[1])) eo.held_inputs = std::move(commands);
@@ -50,9 +50,9 @@ eb_lr::EbLrOptions EbLrOptionsFor(const IdentifyRequest& o, const std::vector<st
 Channels EbLrChannels(const IdentifyRequest& o) {
   Channels c = DefaultChannels(o);
   if (!o.vessel.empty() && o.states.empty()) {
-    const Actuation& a = FindVessel(o.vessel).Info().actuation;
+    const Actuation& a = o.vessel.Info().actuation;
     if (a.thrust_input < 0)
-      throw InputError("--method eb-lr: vessel " + o.vessel + " has no thrust input");
+      throw InputError("--method eb-lr: vessel " + o.vessel.Name() + " has no thrust input");
     c.states = c.variables = {"U", "r"};
     if (o.inputs.empty())
       c.inputs =

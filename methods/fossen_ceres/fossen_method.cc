@@ -127,8 +127,8 @@ std::vector<double> RudderRpsStart(const VesselInfo& info) {
 nlohmann::json IdentifyFossenModel(const Dataset& data, const IdentifyRequest& request,
                                    const MethodOptions& o, const Logger& log) {
   const Channels c = DefaultChannels(request);
-  const bool file_ship = c.inputs == kRudderRps && !request.vessel.empty() &&
-                         FindVessel(request.vessel).Info().type == "mmg";
+  const bool file_ship =
+      c.inputs == kRudderRps && !request.vessel.empty() && request.vessel.Info().type == "mmg";
   if (c.states != std::vector<std::string>{"u", "v", "r"} ||
       (c.inputs != kForces && c.inputs != kJetForces && c.inputs != kWaterjets &&
        c.inputs != kRudder && !file_ship))
@@ -147,8 +147,8 @@ nlohmann::json IdentifyFossenModel(const Dataset& data, const IdentifyRequest& r
   else if (inputs == kRudder)
     fit.model.update(IdentifyFossen<fossen::RudderModel>(request, o, data, fit.prepared, log));
   else if (inputs == kRudderRps)
-    fit.model.update(IdentifyFossen<fossen::RudderRpsModel>(
-        request, o, data, fit.prepared, log, RudderRpsStart(FindVessel(request.vessel).Info())));
+    fit.model.update(IdentifyFossen<fossen::RudderRpsModel>(request, o, data, fit.prepared, log,
+                                                            RudderRpsStart(request.vessel.Info())));
   else
     fit.model.update(IdentifyFossen<fossen::Odin3DofModel>(request, o, data, fit.prepared, log));
   SetTrain(fit, request);

@@ -216,7 +216,7 @@ void WriteGreyBoxSearch(const gp::GreyBoxResult& r, nlohmann::json& model) {
 
 // The base a grey-box fit corrects ('vessel': --vessel), refusing the options of whole
 // equations that have no part in it.
-std::string GreyBoxBase(const IdentifyRequest& request, const MethodOptions& o) {
+VesselRef GreyBoxBase(const IdentifyRequest& request, const MethodOptions& o) {
   for (const char* key : {"validation_fraction", "horizon_s", "fit", "damping", "kinematics"})
     if (o.Given(key))
       throw InputError(std::string("method gp: option ") + key +
@@ -229,7 +229,7 @@ std::string GreyBoxBase(const IdentifyRequest& request, const MethodOptions& o) 
     throw InputError("method gp: features=" + f +
                      " is for whole equations; a grey-box fit (--base) searches on the vessel's "
                      "states and inputs (and rudder_inflow)");
-  const std::string base = o.Text("base") == "vessel" ? request.vessel : o.Text("base");
+  const VesselRef base = o.Text("base") == "vessel" ? request.vessel : VesselRef(o.Text("base"));
   if (base.empty())
     throw InputError("method gp: base=vessel needs --vessel (or give the vessel: --base NAME)");
   return base;
@@ -240,11 +240,11 @@ std::string GreyBoxBase(const IdentifyRequest& request, const MethodOptions& o) 
 nlohmann::json IdentifyGreyBoxModel(const Dataset& data, const IdentifyRequest& request,
                                     const MethodOptions& o, const gp::GpIdentifyOptions& gpo) {
   const auto start = std::chrono::steady_clock::now();
-  const std::string base = GreyBoxBase(request, o);
-  const VesselInfo& info = FindVessel(base).Info();
-  const std::vector<double> params = base == request.vessel && !request.start_params.empty()
-                                         ? request.start_params
-                                         : info.default_params;
+  const VesselRef base = GreyBoxBase(request, o);
+  const VesselInfo& info = base.Info();
+  const std::vector<double> params =
+      base.Name() == request.vessel.Name() && !request.start_params.empty() ? request.start_params
+                                                                            : info.default_params;
   gp::GreyBoxOptions g;
   g.search = gpo.search;
   if (o.Flag("rudder_inflow")) {
@@ -264,14 +264,14 @@ nlohmann::json IdentifyGreyBoxModel(const Dataset& data, const IdentifyRequest& 
     if (!IsPositionOrHeading(s)) states.push_back(s);
   nlohmann::json model = {
       {"method", request.method},
-      {"vessel", base},
+      {"vessel", base.Name()},
       {"states", states},
       {"inputs", info.inputs},
       {"parameters", parameters},
       {"effects", effects},
       {"corrections", r.corrections},  // the vessel plus these, per state: the effects' sums
       {"gp",
-       {{"base", base},
+       {{"base", base.Name()},
         {"operators", gp::OperatorList(gpo.search.functions)},
         {"features", features},
         {"population", gpo.search.population},
@@ -302,7 +302,7 @@ nlohmann::json IdentifyGpModel(const Dataset& data, const IdentifyRequest& reque
         "it with base (docs/gp.md#grey-box)");
   ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request, data), log);
   const double froude_per_speed =
-      request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);
+      request.vessel.empty() ? 0.0 : request.vessel.Simulator().FroudeNumber(1.0).value_or(0.0);
   const std::string features_choice = o.Text("features");
   gpo.features =
       RegimeFeatures(features_choice, froude_per_speed, fit.prepared.data, kGpFroudeHinges);

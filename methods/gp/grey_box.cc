@@ -88,7 +88,7 @@ struct Candidate {
 
 // What the three steps share: the vessel, its states and inputs, the search's variables.
 struct GreyBoxFit {
-  const std::string& vessel;
+  const VesselRef& vessel;
   const std::vector<double>& params;
   std::vector<std::string> states, inputs;
   GpProblem problem;  // the variables of the first parts
@@ -221,11 +221,11 @@ void RefitOnEveryRow(const GreyBoxFit& fit, const Dataset& data,
 
 }  // namespace
 
-GreyBoxResult IdentifyGreyBox(const std::string& vessel, const std::vector<double>& params,
+GreyBoxResult IdentifyGreyBox(const VesselRef& vessel, const std::vector<double>& params,
                               const Dataset& data, const GreyBoxOptions& options) {
   if (!(options.heldout > 0.0 && options.heldout < 1.0))
     throw InputError("gp --base: the held-out share must be in (0, 1)");
-  const VesselInfo& info = FindVessel(vessel).Info();
+  const VesselInfo& info = vessel.Info();
   GreyBoxFit fit{vessel, params, DynamicStates(info, data), info.InputsIn(data), {}};
   // 1. Each record's first part fits, its last part judges.
   const RecordSplit parts = SplitEachRecord(data, options.heldout, 16, "gp --base");

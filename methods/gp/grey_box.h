@@ -26,6 +26,7 @@
 #include "effects/effect.h"
 #include "methods/gp/search.h"
 #include "methods/regime_features.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid::gp {
 
@@ -77,7 +78,7 @@ struct GreyBoxResult {
 
 // The corrections to `vessel` with parameters `params` that `data` (raw records: states and the
 // vessel's inputs) supports. Throws InputError naming what is missing (a state column, rows).
-GreyBoxResult IdentifyGreyBox(const std::string& vessel, const std::vector<double>& params,
+GreyBoxResult IdentifyGreyBox(const VesselRef& vessel, const std::vector<double>& params,
                               const Dataset& data, const GreyBoxOptions& options);
 
 }  // namespace usvid::gp

@@ -24,7 +24,7 @@ double AbsCosine(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 
 }  // namespace
 
-std::vector<CoefficientShape> ClosestFreeCoefficient(const std::string& vessel,
+std::vector<CoefficientShape> ClosestFreeCoefficient(const VesselRef& vessel,
                                                      const Dataset& prepared,
                                                      const std::vector<std::string>& names,
                                                      const std::vector<double>& params,

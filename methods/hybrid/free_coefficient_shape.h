@@ -12,6 +12,7 @@
 
 #include "core/dataset.h"
 #include "methods/hybrid/term_proposals.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid::hybrid {
 
@@ -24,7 +25,7 @@ struct CoefficientShape {
 // df_s/dp on `prepared` (DerivativeResidual's rows; central differences of relative step 1e-4)
 // is closest in shape to the proposal's term column, both uncentred (a force through zero).
 // Rows where either is not finite are left out.
-std::vector<CoefficientShape> ClosestFreeCoefficient(const std::string& vessel,
+std::vector<CoefficientShape> ClosestFreeCoefficient(const VesselRef& vessel,
                                                      const Dataset& prepared,
                                                      const std::vector<std::string>& names,
                                                      const std::vector<double>& params,

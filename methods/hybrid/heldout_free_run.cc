@@ -8,10 +8,10 @@
 
 namespace usvid::hybrid {
 
-double HeldoutFreeRunError(const std::string& vessel, const Dataset& heldout,
+double HeldoutFreeRunError(const VesselRef& vessel, const Dataset& heldout,
                            const std::vector<double>& params, const std::vector<Effect>& terms,
                            const std::vector<std::string>& states, double stop_above) {
-  const VesselSimulator& simulator = FindVessel(vessel);
+  const VesselSimulator& simulator = vessel.Simulator();
   const VesselInfo& info = simulator.Info();
   // One segment per stretch between gaps: each record (core/records.h) is one free run.
   const SegmentedError run =

@@ -14,6 +14,7 @@
 
 #include "core/dataset.h"
 #include "effects/effect.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid::hybrid {
 
@@ -23,7 +24,7 @@ namespace usvid::hybrid {
 // leaves the bounds of simulation/divergence_bounds.h. A caller that weighs a model only against
 // a bound passes it as `stop_above`: once the error is sure to exceed it, the records left are
 // not run and the error so far (a lower bound, above `stop_above`) is returned.
-double HeldoutFreeRunError(const std::string& vessel, const Dataset& heldout,
+double HeldoutFreeRunError(const VesselRef& vessel, const Dataset& heldout,
                            const std::vector<double>& params, const std::vector<Effect>& terms,
                            const std::vector<std::string>& states,
                            double stop_above = std::numeric_limits<double>::infinity());

@@ -28,7 +28,7 @@ void ThinRows(Dataset& data, long max_rows) {
 }
 
 // The held-out multiple-shooting score of the vessel with `fit`'s parameters and terms.
-RefitResult HeldoutScore(const std::string& vessel, const Dataset& heldout, const RefitResult& fit,
+RefitResult HeldoutScore(const VesselRef& vessel, const Dataset& heldout, const RefitResult& fit,
                          const RefitOptions& refit) {
   RefitOptions o = refit;
   o.hold_model = true;
@@ -83,7 +83,7 @@ RefitOptions SelectionRefit(const HybridOptions& options, const VesselInfo& info
 // a freed coefficient's own shape set aside on request). The residual is regressed on the
 // library at rows spread over the first part (at most the refits' max_rows): the library has
 // tens of columns, and on a long log it was the largest block held.
-void ProposeFromResidual(const std::string& vessel, const VesselInfo& info, const Dataset& first,
+void ProposeFromResidual(const VesselRef& vessel, const VesselInfo& info, const Dataset& first,
                          const std::vector<std::string>& states, const std::vector<double>& start,
                          const RefitResult& vessel_fit, long max_rows, const HybridOptions& options,
                          HybridResult& result) {
@@ -127,7 +127,7 @@ void ProposeFromResidual(const std::string& vessel, const VesselInfo& info, cons
 
 // The record's two parts and what the selection compares against.
 struct SelectionData {
-  const std::string& vessel;
+  const VesselRef& vessel;
   const Dataset& first;
   const Dataset& heldout;
   const std::vector<double>& start;
@@ -193,11 +193,11 @@ std::vector<Effect> SelectTerms(const SelectionData& d, const RefitOptions& refi
 
 }  // namespace
 
-HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
+HybridResult IdentifyHybrid(const VesselRef& vessel, const Dataset& data,
                             const std::vector<double>& start, const HybridOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   CheckOptions(options);
-  const VesselInfo& info = FindVessel(vessel).Info();
+  const VesselInfo& info = vessel.Info();
   const std::vector<std::string> states = DynamicStatesIn(info, data);
   const RefitOptions refit = SelectionRefit(options, info, data);
   // Each record fits and judges (core/records.h): cut at the share of the rows alone, eight

@@ -27,6 +27,7 @@
 #include "methods/hybrid/free_coefficient_shape.h"
 #include "methods/hybrid/term_proposals.h"
 #include "methods/refit/refit.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid::hybrid {
 
@@ -53,10 +54,10 @@ struct HybridOptions {
 };
 
 struct SelectionRound {
-  std::vector<double> heldout_error;  // per proposal (infinity: already chosen or failed)
+  std::vector<double> heldout_error;   // per proposal (infinity: already chosen or failed)
   std::vector<double> free_run_error;  // per proposal (heldout_free_run.h; infinity: diverged)
-  double likelihood_ratio = 0.0;      // of the best
-  int chosen = -1;                    // index into proposals; -1: none good enough, stop
+  double likelihood_ratio = 0.0;       // of the best
+  int chosen = -1;                     // index into proposals; -1: none good enough, stop
 };
 
 struct HybridResult {
@@ -77,7 +78,7 @@ struct HybridResult {
 };
 
 // Throws InputError as RefitVessel does, or for options out of range.
-HybridResult IdentifyHybrid(const std::string& vessel, const Dataset& data,
+HybridResult IdentifyHybrid(const VesselRef& vessel, const Dataset& data,
                             const std::vector<double>& start, const HybridOptions& options);
 
 }  // namespace usvid::hybrid

@@ -22,7 +22,7 @@ nlohmann::json FiniteOr(double error) {
 nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o,
                                    const MethodOptions& options, const Logger& log) {
   if (o.vessel.empty()) throw InputError("--method hybrid: needs --vessel");
-  const VesselInfo& info = FindVessel(o.vessel).Info();
+  const VesselInfo& info = o.vessel.Info();
   hybrid::HybridOptions ho;
   ho.refit = RefitOptionsFor(options);
   ho.refit.threads = o.threads > 0 ? o.threads : 1;  // proposals in parallel, each one thread
@@ -68,7 +68,7 @@ nlohmann::json IdentifyHybridModel(const Dataset& data, const IdentifyRequest& o
                std::to_string(h.proposals.size()) + " proposed terms kept; held-out error " +
                std::to_string(h.vessel_heldout_error) + " -> " + std::to_string(h.heldout_error));
   return {{"method", o.method},
-          {"vessel", o.vessel},
+          {"vessel", o.vessel.Name()},
           {"states", h.fit.channels},
           {"inputs", info.inputs},
           {"parameters", RefitParameters(h.fit)},

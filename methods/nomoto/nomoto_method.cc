@@ -13,7 +13,7 @@ namespace {
 Channels NomotoChannels(const IdentifyRequest& o) {
   Channels c = DefaultChannels(o);
   if (!o.vessel.empty() && o.states.empty()) {
-    const VesselInfo& info = FindVessel(o.vessel).Info();
+    const VesselInfo& info = o.vessel.Info();
     c.states = c.variables = {info.states[info.actuation.rate_state]};
     c.inputs = {info.actuation.input_names[info.actuation.yaw_input]};
   }

@@ -15,15 +15,15 @@
 // given value; at most kMaxRefitTerms. The hybrid method (methods/hybrid) finds them.
 #pragma once
 
-#include <string_view>
-
 #include <Eigen/Core>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/dataset.h"
 #include "effects/effect.h"
+#include "simulation/vessel_ref.h"
 
 namespace usvid {
 
@@ -81,7 +81,7 @@ struct RefitResult {
 
 // Throws InputError for an unknown vessel or parameter, or data without the vessel's inputs or
 // dynamic states.
-RefitResult RefitVessel(const std::string& vessel, const Dataset& data,
+RefitResult RefitVessel(const VesselRef& vessel, const Dataset& data,
                         const std::vector<double>& start, const RefitOptions& options);
 
 // The mean squared normalised residual of a fit: 2 final_cost / residuals (the prior's part is
@@ -93,7 +93,7 @@ double MeanSquaredError(const RefitResult& fit);
 // at every row of preprocessed data (smoothed states and inputs, derivatives "<s>_dot"; the
 // kinematic states from the data where present, else 0). Throws InputError for an unknown
 // vessel or a missing channel.
-std::map<std::string, Eigen::VectorXd> DerivativeResidual(const std::string& vessel,
+std::map<std::string, Eigen::VectorXd> DerivativeResidual(const VesselRef& vessel,
                                                           const Dataset& prepared,
                                                           const std::vector<double>& params);
 

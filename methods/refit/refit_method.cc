@@ -13,7 +13,7 @@ namespace {
 nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o,
                              const MethodOptions& method_options, const Logger& log) {
   if (o.vessel.empty()) throw InputError("--method refit: needs --vessel");
-  const VesselInfo& info = FindVessel(o.vessel).Info();
+  const VesselInfo& info = o.vessel.Info();
   const RefitOptions options = RefitOptionsFor(method_options);
   const RefitResult fit = RefitVessel(
       o.vessel, data, o.start_params.empty() ? info.default_params : o.start_params, options);
@@ -22,7 +22,7 @@ nlohmann::json IdentifyRefit(const Dataset& data, const IdentifyRequest& o,
                std::to_string(fit.segments) + " segments" +
                (spread ? " spread over the record (--fit-rows)" : "") + ": " + fit.termination);
   return {{"method", o.method},
-          {"vessel", o.vessel},
+          {"vessel", o.vessel.Name()},
           {"states", fit.channels},
           {"inputs", info.inputs},
           {"parameters", RefitParameters(fit)},
@@ -38,7 +38,8 @@ Method RefitMethod() {
   m.summary = "the --vessel's own coefficients, Ceres multiple shooting";
   m.options = RefitOptionSpecs();
   m.identify = IdentifyRefit;
-  m.relative_cost = 20.0;  // multiple shooting through the vessel: about GP's time on a vessel's runs
+  m.relative_cost =
+      20.0;  // multiple shooting through the vessel: about GP's time on a vessel's runs
   return m;
 }
 

@@ -113,8 +113,7 @@ std::string EmptyEquationError(const std::string& state, const nlohmann::json& d
 double WeakWindowSeconds(const Dataset& prepared, const IdentifyRequest& request,
                          const std::vector<std::string>& states, int folds) {
   double seconds = 0.0;
-  if (!request.vessel.empty())
-    seconds = HullLengthSeconds(prepared, FindVessel(request.vessel).Info());
+  if (!request.vessel.empty()) seconds = HullLengthSeconds(prepared, request.vessel.Info());
   if (!(seconds > 0) && !states.empty() && prepared.rows() > 8) {
     const bool has_r = std::ranges::find(states, "r") != states.end();
     const Eigen::VectorXd x = prepared[has_r ? "r" : states.front()];
@@ -159,7 +158,7 @@ nlohmann::json IdentifySindyModel(const Dataset& data, const IdentifyRequest& re
   sindy::SindyOptions options = SindyOptionsFor(o);
   ChannelFit fit = PrepareChannelFit(data, request, DefaultChannels(request, data), log);
   const double froude_per_speed =
-      request.vessel.empty() ? 0.0 : FindVessel(request.vessel).FroudeNumber(1.0).value_or(0.0);
+      request.vessel.empty() ? 0.0 : request.vessel.Simulator().FroudeNumber(1.0).value_or(0.0);
   const std::vector<DerivedVariable> features =
       RegimeFeatures(o.Text("features"), froude_per_speed, fit.prepared.data, kSindyFroudeHinges);
   // Regime features enter SINDy's library as linear columns named by DerivedVariable::Column.

@@ -31,7 +31,7 @@ Suite SmallSuite() {
 
 std::vector<ResultRow> Rows(const FitJob& job) {
   ResultRow ok;
-  ok.vessel = job.vessel;
+  ok.vessel = job.vessel.Name();
   ok.train_maneuver = job.train_maneuver;
   ok.test_maneuver = "multisine";
   ok.method = job.method.Label();

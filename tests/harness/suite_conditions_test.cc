@@ -131,7 +131,7 @@ TEST(SuiteConditionsTest, WavesAndDropoutsReachTheRecords) {
 TEST(SuiteConditionsTest, TheRealisticSuiteHasTheSeaAndTheSensorsOfATrial) {
   const Suite s = LoadEmbeddedSuite("realistic");
   EXPECT_EQ(s.name, "realistic");
-  EXPECT_EQ(s.vessels, (std::vector<std::string>{"odin3dof", "odin-hs"}));
+  EXPECT_EQ(s.vessels, (std::vector<VesselRef>{"odin3dof", "odin-hs"}));
   EXPECT_EQ(s.train_maneuvers, (std::vector<std::string>{"autopilot", "random-steps"}));
   EXPECT_EQ(s.conditions.effects,
             (std::vector<std::string>{"current=0.3", "sensor_bias=0.0017", "saturation=0.8"}));
