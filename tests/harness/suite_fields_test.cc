@@ -110,5 +110,33 @@ TEST(SuiteFieldsTest, DefaultsAreThoseDeclared) {
               HasSubstr("| `noise` | every | [0.005] simulated, [0] measured |"));
 }
 
+// A field's default as docs/suites.md states it (its declared text) is the value the code gives
+// a suite that leaves the field out: the text's first word, read as JSON, is what the field's
+// writer writes back, and a field written back as nothing says "none".
+TEST(SuiteFieldsTest, EachDeclaredDefaultIsTheCodesDefault) {
+  const Suite s = ParseSuite({{"vessels", {"odin3dof"}},
+                              {"train_maneuvers", {"random-steps"}},
+                              {"test_maneuvers", {"zigzag:20/20"}},
+                              {"methods", {"nominal"}}},
+                             "s.json");
+  int checked = 0;
+  for (const SuiteField& f : SuiteFields()) {
+    if (!f.AppliesTo(/*measured=*/false) || f.RequiredIn(/*measured=*/false) ||
+        f.key == "vessels")
+      continue;
+    const std::string text(f.default_text);
+    const nlohmann::json written = f.write(s);
+    if (written.is_null()) {
+      EXPECT_TRUE(text.starts_with("none")) << f.key << ": \"" << text << "\"";
+    } else {
+      const nlohmann::json declared =
+          nlohmann::json::parse(text.substr(0, text.find(' ')), nullptr, false);
+      EXPECT_EQ(declared, written) << f.key << ": \"" << text << "\"";
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 10);  // name, pairs, noise, seeds, the conditions, the seconds
+}
+
 }  // namespace
 }  // namespace usvid
