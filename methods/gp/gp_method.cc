@@ -242,9 +242,9 @@ nlohmann::json IdentifyGreyBoxModel(const Dataset& data, const IdentifyRequest& 
   const auto start = std::chrono::steady_clock::now();
   const VesselRef base = GreyBoxBase(request, o);
   const VesselInfo& info = base.Info();
-  const std::vector<double> params =
-      base.Name() == request.vessel.Name() && !request.start_params.empty() ? request.start_params
-                                                                            : info.default_params;
+  const std::vector<double> params = base == request.vessel && !request.start_params.empty()
+                                         ? request.start_params
+                                         : info.default_params;
   gp::GreyBoxOptions g;
   g.search = gpo.search;
   if (o.Flag("rudder_inflow")) {

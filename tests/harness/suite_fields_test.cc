@@ -19,6 +19,14 @@ namespace {
 
 using ::testing::HasSubstr;
 
+// A simulated suite that gives its required fields alone.
+nlohmann::json MinimalSimulatedSuite() {
+  return {{"vessels", {"odin3dof"}},
+          {"train_maneuvers", {"random-steps"}},
+          {"test_maneuvers", {"zigzag:20/20"}},
+          {"methods", {"nominal"}}};
+}
+
 std::string Refusal(const nlohmann::json& suite) {
   try {
     ParseSuite(suite, "s.json");
@@ -70,10 +78,7 @@ TEST(SuiteFieldsTest, EachFieldIsDeclaredOnce) {
 // A field of a simulated suite given to one on measured data (and the reverse) is refused,
 // naming the file and the field; so is a missing required field.
 TEST(SuiteFieldsTest, AFieldOfTheOtherKindIsRefused) {
-  const nlohmann::json simulated = {{"vessels", {"odin3dof"}},
-                                    {"train_maneuvers", {"random-steps"}},
-                                    {"test_maneuvers", {"zigzag:20/20"}},
-                                    {"methods", {"nominal"}}};
+  const nlohmann::json simulated = MinimalSimulatedSuite();
   EXPECT_EQ(Refusal(simulated), "");
   nlohmann::json cv = simulated;
   cv["cv"] = "runs";
@@ -96,11 +101,7 @@ TEST(SuiteFieldsTest, AFieldOfTheOtherKindIsRefused) {
 
 // Defaults come from the declarations' kind: noise 0.5 % simulated, none on measured data.
 TEST(SuiteFieldsTest, DefaultsAreThoseDeclared) {
-  const Suite s = ParseSuite({{"vessels", {"odin3dof"}},
-                              {"train_maneuvers", {"random-steps"}},
-                              {"test_maneuvers", {"zigzag:20/20"}},
-                              {"methods", {"nominal"}}},
-                             "s.json");
+  const Suite s = ParseSuite(MinimalSimulatedSuite(), "s.json");
   EXPECT_EQ(s.name, "suite");
   EXPECT_EQ(s.noise, std::vector<double>{0.005});
   EXPECT_EQ(s.seeds, std::vector<uint64_t>{1});
@@ -114,11 +115,7 @@ TEST(SuiteFieldsTest, DefaultsAreThoseDeclared) {
 // a suite that leaves the field out: the text's first word, read as JSON, is what the field's
 // writer writes back, and a field written back as nothing says "none".
 TEST(SuiteFieldsTest, EachDeclaredDefaultIsTheCodesDefault) {
-  const Suite s = ParseSuite({{"vessels", {"odin3dof"}},
-                              {"train_maneuvers", {"random-steps"}},
-                              {"test_maneuvers", {"zigzag:20/20"}},
-                              {"methods", {"nominal"}}},
-                             "s.json");
+  const Suite s = ParseSuite(MinimalSimulatedSuite(), "s.json");
   int checked = 0;
   for (const SuiteField& f : SuiteFields()) {
     if (!f.AppliesTo(/*measured=*/false) || f.RequiredIn(/*measured=*/false)) continue;
