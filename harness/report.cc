@@ -1,15 +1,16 @@
 #include "harness/report.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <exception>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
-
-#include <omp.h>
 
 #include "core/atomic_file.h"
 #include "core/parallel_for.h"
@@ -75,7 +76,7 @@ RunFigures ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
   std::map<std::string, const ResultRow*> chosen;  // method -> row
   for (const ResultRow& r : rows)
     if (r.vessel == vessel && r.test_maneuver == test && r.status == "ok" &&
-        r.noise == suite.noise.front() && r.seed == suite.seeds.front() && !chosen.count(r.method))
+        ReportDrawsFreeRun(suite, r) && !chosen.count(r.method))
       chosen[r.method] = &r;
   if (chosen.empty()) return {};
   const ResultRow& first = *chosen.begin()->second;
@@ -87,21 +88,26 @@ RunFigures ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
     held = SimulateForSuite(vessel, test, suite.test_seconds, first.noise, first.test_seed,
                             suite.conditions);
   }
-  std::map<std::string, Evaluation> runs;
+  // The free run each row was scored on, or (a row read back from a resumed run's cells) the
+  // same run again.
+  std::map<std::string, std::shared_ptr<const FreeRun>> runs;
   for (const auto& [method, r] : chosen)
-    runs[method] = EvaluateModel(r->model, held, EvaluationScope::kFreeRunOnly);
+    runs[method] = r->free_run
+                       ? r->free_run
+                       : std::make_shared<const FreeRun>(
+                             EvaluateModel(r->model, held, EvaluationScope::kFreeRunOnly).run);
   // The states the models identify (a vessel model: its dynamic states), and on measured data
   // the heading too.
   // Each method keeps its colour in every panel and both figures, also where another method has
   // no such channel.
   std::map<std::string, SeriesStyle> styles;
-  for (const auto& [method, e] : runs)
+  for (const auto& [method, run] : runs)
     styles[method] = PaletteStyle(SeriesStyle::Dashed(), styles.size());
   const auto figure = [&](const std::set<std::string>& only) {
     std::set<std::string> channels;
-    for (const auto& [method, e] : runs)
+    for (const auto& [method, run] : runs)
       if (only.empty() || only.contains(method))
-        for (const std::string& c : e.run.channels)
+        for (const std::string& c : run->channels)
           if (!IsPositionOrHeading(c) || (suite.Measured() && (c == "psi" || c == "chi")))
             channels.insert(c);
     FigureGrid grid;
@@ -111,11 +117,11 @@ RunFigures ExampleRun(const Suite& suite, const std::vector<ResultRow>& rows,
       if (!held.Has(c)) continue;
       LinePlot p;
       p.SetYLabel(c).AddSeries("measured", held.t(), held[c], SeriesStyle::Measured());
-      for (const auto& [method, e] : runs)
-        if ((only.empty() || only.contains(method)) && e.run.simulated.Has(c))
+      for (const auto& [method, run] : runs)
+        if ((only.empty() || only.contains(method)) && run->simulated.Has(c))
           p.AddSeries(method + " (trained on " + chosen[method]->train_maneuver + ")" +
-                          (e.run.diverged ? ", diverged" : ""),
-                      held.t(), e.run.simulated[c], styles.at(method));
+                          (run->diverged ? ", diverged" : ""),
+                      held.t(), run->simulated[c], styles.at(method));
       grid.Add(std::move(p));
     }
     return grid.ToSvg(1000, 80 + 240 * static_cast<int>(channels.size()));

@@ -5,11 +5,14 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
 namespace usvid {
+
+struct FreeRun;  // metrics/free_run.h
 
 struct ResultRow {
   std::string vessel, train_maneuver, test_maneuver, method;
@@ -23,7 +26,7 @@ struct ResultRow {
   std::map<std::string, double> regime_fit_percent;  // mean over states, per speed regime
   // Per prediction horizon ("5", "30" s, "all": the free run), the mean fit % over the states.
   std::map<std::string, double> horizon_fit_percent;
-  std::optional<double> valid_prediction_s;    // the free run's valid prediction time
+  std::optional<double> valid_prediction_s;     // the free run's valid prediction time
   std::map<std::string, double> derivative_r2;  // per state: the equation against the data
   bool diverged = false;
   double diverged_at_s = 0.0;
@@ -38,6 +41,10 @@ struct ResultRow {
   std::optional<double> parameter_error;  // largest relative error of named true parameters
   std::string status = "ok";              // or "failed: why"
   nlohmann::json model;  // the fitted model (kept in memory for the report, not written)
+  // The free run the row was scored on, where the report draws it (ReportDrawsFreeRun,
+  // run_suite.h): kept in memory, not written. A row read back from a resumed run's cells or
+  // from another MPI rank has none, and the report runs the model again.
+  std::shared_ptr<const FreeRun> free_run;
 
   // The row as results.json holds it (no model; a failed row only says why).
   nlohmann::json ToJson() const;

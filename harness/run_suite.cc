@@ -181,6 +181,15 @@ Dataset FoldTrainingData(const Suite& suite, const std::string& train,
   return JoinRecords(std::move(records));
 }
 
+}  // namespace
+
+bool ReportDrawsFreeRun(const Suite& suite, const ResultRow& row) {
+  return row.noise == suite.noise.front() && row.seed == suite.seeds.front() &&
+         (suite.Measured() || row.test_maneuver == suite.test_maneuvers.front());
+}
+
+namespace {
+
 // A test record whose log names its maneuver (metrics/maneuver_header.h) is read against that
 // name before any fit: a name the record contradicts, or one usvid does not know, stops the run
 // (InputError naming the file: exit 2), rather than failing every row that replays it.
@@ -211,7 +220,8 @@ ResultRow ScoreOnTest(const Suite& suite, const FitJob& job, const ResultRow& ba
             ? nullptr
             : simulated.Get(job.vessel, test, suite.test_seconds, job.noise, row.test_seed);
     const Dataset& held = simulated_held ? *simulated_held : test_sets.at(test);
-    const Scores e = EvaluateModel(model, held, EvaluationScope::kRowScores).scores;
+    Evaluation evaluation = EvaluateModel(model, held, EvaluationScope::kRowScores);
+    const Scores& e = evaluation.scores;
     for (const auto& [channel, score] : e.channels)
       row.channel_fit_percent[channel] = score.fit_percent;
     double sum = 0.0;
@@ -240,6 +250,8 @@ ResultRow ScoreOnTest(const Suite& suite, const FitJob& job, const ResultRow& ba
     row.diverged = e.diverged;
     row.diverged_at_s = e.diverged_at_s;
     row.diverged_channel = e.diverged_channel;
+    if (ReportDrawsFreeRun(suite, row))
+      row.free_run = std::make_shared<const FreeRun>(std::move(evaluation.run));
     const std::string spec = TestManeuverSpec(suite, test);
     row.closed_loop = ClosedLoopScore(
         model, job.vessel, suite.Measured() ? RecordedManeuverSpec(spec, job.vessel, held) : spec,

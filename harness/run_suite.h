@@ -24,6 +24,11 @@ namespace usvid {
 Dataset SimulateForSuite(const VesselRef& vessel, const std::string& maneuver, double seconds,
                          double noise, uint64_t seed, const SuiteConditions& conditions = {});
 
+// Whether the report (report.h) draws the free run of `row`: the first noise level and seed, on
+// a simulated suite's first test maneuver or on any test of measured data. Such rows keep the
+// free run they were scored on (ResultRow::free_run), so that the report need not run it again.
+bool ReportDrawsFreeRun(const Suite& suite, const ResultRow& row);
+
 // Every cell (fit job) of the suite, in one process; rows in job order.
 std::vector<ResultRow> RunSuite(const Suite& suite, int threads,
                                 const std::function<void(const std::string&)>& progress = {});

@@ -118,6 +118,23 @@ TEST_F(ResumeCliTest, OnlyTheCellsRemovedAreRunAgain) {
   }
 }
 
+// A run draws its example figure from the free runs its rows were scored on (ResultRow::free_run);
+// a resumed run's rows, read back from the cells, have none, and the report runs each model
+// again. Both must draw the same figure, to the byte.
+TEST_F(ResumeCliTest, AResumedRunDrawsTheFreeRunsTheScoresWereOn) {
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(RunUsvid(Compare(out)).exit_code, 0);
+  const std::string scored = ReadTextFile((out / "run_msd.svg").string());
+  ASSERT_THAT(scored, HasSubstr("gp"));
+  fs::remove(out / "run_msd.svg");
+
+  const auto resumed = RunUsvid(Compare(out));
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_THAT(resumed.err, HasSubstr("resuming: 8 of 8 cells"));
+  EXPECT_TRUE(ComputedCells(resumed.err).empty());
+  EXPECT_EQ(ReadTextFile((out / "run_msd.svg").string()), scored);
+}
+
 TEST_F(ResumeCliTest, CellsOfAnotherSuiteAreRefusedUnlessFresh) {
   const fs::path out = dir_ / "out";
   ASSERT_EQ(RunUsvid(Compare(out)).exit_code, 0);
