@@ -75,10 +75,13 @@ DistributedRun RunSuiteDistributed(const Suite& suite, const std::string& out_di
       const size_t j = c.at("index").get<size_t>();
       finished[j] = CellRows(c.at("cell"), jobs.at(j).Id(), "a rank's cell");
     }
-  // This rank's own cells give their rows the free runs the report draws (in memory only).
+  // This rank's own cells give their rows the free runs and replays the report draws (in memory
+  // only).
   for (const auto& [j, rows] : mine)
-    for (size_t i = 0; i < rows.size() && i < finished[j].size(); ++i)
+    for (size_t i = 0; i < rows.size() && i < finished[j].size(); ++i) {
       finished[j][i].free_run = rows[i].free_run;
+      finished[j][i].replay = rows[i].replay;
+    }
   for (auto& [j, rows] : finished) run.rows.insert(run.rows.end(), rows.begin(), rows.end());
   return run;
 }

@@ -111,17 +111,17 @@ std::string HeadingAndRudder(const std::string& title, const std::vector<Track>&
 
 }  // namespace
 
-std::vector<std::string> PlanView(
-    const std::string& title, const std::string& vessel, const std::string& spec,
-    const Dataset& held, const std::vector<std::pair<std::string, nlohmann::json>>& models) {
+std::vector<std::string> PlanView(const std::string& title, const std::string& vessel,
+                                  const std::string& spec, const Dataset& held,
+                                  const std::vector<PlannedModel>& models) {
   if (!IsManeuverTest(spec) || !held.Has("north") || !held.Has("east") || !held.Has("psi"))
     return {};
   try {
     const ManeuverScorer scorer(vessel, spec, held);
     std::vector<Track> tracks = {{"measured", scorer.recorded()}};
-    for (const auto& [label, model] : models) {
+    for (const auto& [label, model, scored] : models) {
       try {
-        const ClosedLoopReplay replay = scorer.Replay(model);
+        const ClosedLoopReplay replay = scored ? *scored : scorer.Replay(model);
         if (!replay.run.Has("north") || !replay.run.Has("east")) continue;
         tracks.push_back(
             {label + (replay.diverged ? ", diverged" : ""), replay.run, replay.diverged});

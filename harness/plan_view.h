@@ -6,21 +6,30 @@
 // time, with the band of +-B about the base course outside which the overshoots lie.
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "core/dataset.h"
+#include "metrics/closed_loop_replay.h"
 
 namespace usvid {
 
-// `models`: (label, model.json) in the order drawn; models that cannot be replayed are left
-// out. `spec`: the maneuver the record holds (RecordedManeuverSpec). The SVG figures: the plan,
-// then on a zig-zag the heading and rudder; none when the spec has no criteria, the record
-// lacks north and east, or the maneuver cannot be read from it.
-std::vector<std::string> PlanView(
-    const std::string& title, const std::string& vessel, const std::string& spec,
-    const Dataset& held, const std::vector<std::pair<std::string, nlohmann::json>>& models);
+// A model a plan view draws: its label, its model.json, and the replay of this record its row
+// was scored on (null: the plan view replays the model itself).
+struct PlannedModel {
+  std::string label;
+  nlohmann::json model;
+  std::shared_ptr<const ClosedLoopReplay> replay;
+};
+
+// `models`: in the order drawn; models that cannot be replayed are left out. `spec`: the
+// maneuver the record holds (RecordedManeuverSpec). The SVG figures: the plan, then on a zig-zag
+// the heading and rudder; none when the spec has no criteria, the record lacks north and east,
+// or the maneuver cannot be read from it.
+std::vector<std::string> PlanView(const std::string& title, const std::string& vessel,
+                                  const std::string& spec, const Dataset& held,
+                                  const std::vector<PlannedModel>& models);
 
 }  // namespace usvid

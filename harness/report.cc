@@ -165,9 +165,10 @@ std::vector<std::string> TestPlanViews(const Suite& suite, const std::vector<Res
     if (r.vessel == vessel && r.status == "ok" && r.test_maneuver == test &&
         !model.count(r.method) && !r.model.is_null())
       model[r.method] = &r;
-  std::vector<std::pair<std::string, nlohmann::json>> drawn;
+  std::vector<PlannedModel> drawn;
   for (const std::string& method : shown)
-    if (model.count(method)) drawn.emplace_back(method, model.at(method)->model);
+    if (model.count(method))
+      drawn.push_back({method, model.at(method)->model, model.at(method)->replay});
   const Dataset held = LoadSuiteData(*data);
   const std::string spec = RecordedManeuverSpec(data->maneuver, vessel, held);
   return PlanView(VesselLabel(vessel) + ", held-out " + test, vessel, spec, held, drawn);

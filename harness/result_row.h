@@ -12,7 +12,8 @@
 
 namespace usvid {
 
-struct FreeRun;  // metrics/free_run.h
+struct FreeRun;           // metrics/free_run.h
+struct ClosedLoopReplay;  // metrics/closed_loop_replay.h
 
 struct ResultRow {
   std::string vessel, train_maneuver, test_maneuver, method;
@@ -45,6 +46,9 @@ struct ResultRow {
   // run_suite.h): kept in memory, not written. A row read back from a resumed run's cells or
   // from another MPI rank has none, and the report runs the model again.
   std::shared_ptr<const FreeRun> free_run;
+  // Likewise the closed-loop replay its criteria were read from (closed_loop), on measured data,
+  // for the report's plan views (harness/plan_view.h).
+  std::shared_ptr<const ClosedLoopReplay> replay;
 
   // The row as results.json holds it (no model; a failed row only says why).
   nlohmann::json ToJson() const;

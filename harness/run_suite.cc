@@ -253,9 +253,12 @@ ResultRow ScoreOnTest(const Suite& suite, const FitJob& job, const ResultRow& ba
     if (ReportDrawsFreeRun(suite, row))
       row.free_run = std::make_shared<const FreeRun>(std::move(evaluation.run));
     const std::string spec = TestManeuverSpec(suite, test);
+    ClosedLoopReplay replay;
     row.closed_loop = ClosedLoopScore(
         model, job.vessel, suite.Measured() ? RecordedManeuverSpec(spec, job.vessel, held) : spec,
-        held);
+        held, &replay);
+    if (suite.Measured() && ReportDrawsFreeRun(suite, row) && replay.run.rows() > 0)
+      row.replay = std::make_shared<const ClosedLoopReplay>(std::move(replay));
   } catch (const std::exception& e) {
     row.status = std::string("failed: ") + e.what();
     row.closed_loop = NotReplayed(suite, test, "the model's evaluation failed");

@@ -26,7 +26,8 @@ Dataset SimulateForSuite(const VesselRef& vessel, const std::string& maneuver, d
 
 // Whether the report (report.h) draws the free run of `row`: the first noise level and seed, on
 // a simulated suite's first test maneuver or on any test of measured data. Such rows keep the
-// free run they were scored on (ResultRow::free_run), so that the report need not run it again.
+// free run they were scored on (ResultRow::free_run), and on measured data the closed-loop
+// replay (ResultRow::replay), so that the report need not run them again.
 bool ReportDrawsFreeRun(const Suite& suite, const ResultRow& row);
 
 // Every cell (fit job) of the suite, in one process; rows in job order.

@@ -617,7 +617,7 @@ ClosedLoopReplay ManeuverScorer::Replay(const nlohmann::json& model) const {
                         base_course_offset_rad_);
 }
 
-nlohmann::json ManeuverScorer::Score(const nlohmann::json& model) const {
+nlohmann::json ManeuverScorer::Score(const nlohmann::json& model, ClosedLoopReplay* kept) const {
   nlohmann::json out = {{"maneuver", spec_}};
   const bool cut = replayed_from_s_.has_value();
   if (cut) out["replayed_from_s"] = *replayed_from_s_;
@@ -656,11 +656,13 @@ nlohmann::json ManeuverScorer::Score(const nlohmann::json& model) const {
                               ? nlohmann::json(m.get<double>() - measured.get<double>())
                               : nlohmann::json();
   }
+  if (kept) *kept = std::move(replay);
   return out;
 }
 
 nlohmann::json ClosedLoopScore(const nlohmann::json& model, const VesselRef& vessel,
-                               const std::string& spec, const Dataset& recorded_data) {
+                               const std::string& spec, const Dataset& recorded_data,
+                               ClosedLoopReplay* replay) {
   nlohmann::json out = {{"maneuver", spec}};
   if (spec.empty()) {
     out["status"] = "not replayable: recorded inputs only (the test data name no maneuver)";
@@ -674,7 +676,7 @@ nlohmann::json ClosedLoopScore(const nlohmann::json& model, const VesselRef& ves
     out["status"] = "not replayable: no vessel to take the actuators and limits from";
     return out;
   }
-  return ManeuverScorer(vessel, spec, recorded_data).Score(model);
+  return ManeuverScorer(vessel, spec, recorded_data).Score(model, replay);
 }
 
 }  // namespace usvid

@@ -81,7 +81,9 @@ class ManeuverScorer {
   // Throws InputError as ClosedLoopScore does for a record without the maneuver's channels, or
   // whose first turn goes the other way than `spec`'s.
   ManeuverScorer(const VesselRef& vessel, const std::string& spec, const Dataset& recorded);
-  nlohmann::json Score(const nlohmann::json& model) const;
+  // `replay`: where the replay the criteria were read from is moved to, if given (left as it
+  // was when the model cannot be replayed).
+  nlohmann::json Score(const nlohmann::json& model, ClosedLoopReplay* replay = nullptr) const;
   // The replay Score reads its criteria from (the report's plan views, harness/plan_view.h);
   // throws InputError when the model cannot be replayed.
   ClosedLoopReplay Replay(const nlohmann::json& model) const;
@@ -104,8 +106,10 @@ class ManeuverScorer {
 // status "ok"; "diverged at T s (channel)"; or "not replayable: why" (an open-loop maneuver, a
 // record without a maneuver, a model that cannot run one): never a missing field, never throws
 // for the model's sake (a record without the maneuver's channels still throws InputError).
+// `replay`: as ManeuverScorer::Score's.
 nlohmann::json ClosedLoopScore(const nlohmann::json& model, const VesselRef& vessel,
-                               const std::string& spec, const Dataset& recorded);
+                               const std::string& spec, const Dataset& recorded,
+                               ClosedLoopReplay* replay = nullptr);
 
 // The spec that replays a measured record: "zigzag" or "turning" alone is the test the record
 // holds, its angle and side read from it with `vessel`'s rudder (metrics/maneuver_of_record.h);

@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <set>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -106,6 +106,19 @@ TEST(EmbeddedSuitesSmokeTest, RealScoresEveryRowOfEveryTrack) {
     EXPECT_THAT(zigzag, ::testing::HasSubstr(text));
   EXPECT_THAT(ReadTextFile((kvlcc2 / "report.html").string()),
               ::testing::HasSubstr("turned 180 deg: the tactical diameter"));
+  // The figures draw the free runs and closed-loop replays the rows were scored on
+  // (ResultRow::free_run, replay); resumed, the rows are read back from the cells without them
+  // and the report runs the models again: the same figures, to the byte.
+  const std::vector<fs::path> figures = {kvlcc2 / "plan_kvlcc2_1_heading.svg",
+                                         kvlcc2 / "plan_kvlcc2_2.svg", kvlcc2 / "run_kvlcc2.svg"};
+  std::vector<std::string> scored;
+  for (const fs::path& f : figures) scored.push_back(ReadTextFile(f.string()));
+  const auto resumed = RunUsvid("compare --suite real --quick --data-dir " + data +
+                                " --threads 2 --out " + out.string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_THAT(resumed.err, ::testing::HasSubstr("resuming:"));
+  for (size_t i = 0; i < figures.size(); ++i)
+    EXPECT_EQ(ReadTextFile(figures[i].string()), scored[i]) << figures[i];
 }
 
 // KVLCC2 of both tanks (docs/compare.md#kvlcc2-both-tanks) runs where a further run can score
