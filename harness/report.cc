@@ -1,7 +1,5 @@
 #include "harness/report.h"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -11,6 +9,8 @@
 #include <memory>
 #include <set>
 #include <sstream>
+
+#include <omp.h>
 
 #include "core/atomic_file.h"
 #include "core/parallel_for.h"

@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <set>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
