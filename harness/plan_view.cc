@@ -121,10 +121,11 @@ std::vector<std::string> PlanView(const std::string& title, const std::string& v
     std::vector<Track> tracks = {{"measured", scorer.recorded()}};
     for (const auto& [label, model, scored] : models) {
       try {
-        const ClosedLoopReplay replay = scored ? *scored : scorer.Replay(model);
-        if (!replay.run.Has("north") || !replay.run.Has("east")) continue;
+        const std::shared_ptr<const ClosedLoopReplay> replay =
+            scored ? scored : std::make_shared<const ClosedLoopReplay>(scorer.Replay(model));
+        if (!replay->run.Has("north") || !replay->run.Has("east")) continue;
         tracks.push_back(
-            {label + (replay.diverged ? ", diverged" : ""), replay.run, replay.diverged});
+            {label + (replay->diverged ? ", diverged" : ""), replay->run, replay->diverged});
       } catch (const InputError&) {
         // Not replayable (an open-loop model of other inputs): its row says why.
       }
