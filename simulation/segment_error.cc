@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -53,17 +55,28 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
   for (const auto& [first, last] : segments)
     for (const std::string& c : channels)
       count += data[c].segment(first, last - first + 1).array().isFinite().count();
+  // The order the segments run in: the data's, or the largest likely error first.
+  std::vector<size_t> order(segments.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  if (stop.likely_errors.size() == segments.size())
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      return stop.likely_errors[a] > stop.likely_errors[b];
+    });
+  // Each segment's squared errors over the variances, in the order they are summed.
+  std::vector<std::vector<double>> terms(segments.size());
   SegmentedError out;
-  double total = 0.0;
-  for (const auto& [first, last] : segments) {
+  out.segment_errors.assign(segments.size(), std::numeric_limits<double>::quiet_NaN());
+  double so_far = 0.0;  // in the order run
+  for (const size_t s : order) {
     if (out.diverged && stop.at_divergence) {
       out.stopped = true;
       break;
     }
-    if (count > 0 && total / static_cast<double>(count) > stop.above) {
+    if (count > 0 && so_far / static_cast<double>(count) > stop.above) {
       out.stopped = true;
       break;
     }
+    const auto [first, last] = segments[s];
     std::vector<bool> keep(data.rows(), false);
     for (Eigen::Index i = first; i <= last; ++i) keep[i] = true;
     Dataset segment = data;
@@ -80,14 +93,26 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
         x(static_cast<Eigen::Index>(c)) = (*simulated[c])(k);
       out.diverged = bounds.Exceeded(x) >= 0;
     }
+    double sum = 0.0;
     for (size_t c = 0; c < channels.size(); ++c) {
       const Eigen::VectorXd& y = segment[channels[c]];
       for (Eigen::Index k = 0; k < segment.rows(); ++k) {
         if (!std::isfinite(y(k))) continue;  // not sampled there
         const double e = k < r.data.rows() ? (*simulated[c])(k)-y(k) : y(k);
-        total += e * e / variance[c];
+        terms[s].push_back(e * e / variance[c]);
+        so_far += terms[s].back();
+        sum += terms[s].back();
       }
     }
+    out.segment_errors[s] = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  }
+  // A finished run's total is summed in the data's order, whatever order the segments ran in; a
+  // stopped one's is what its segments add.
+  double total = so_far;
+  if (!out.stopped) {
+    total = 0.0;
+    for (const std::vector<double>& segment_terms : terms)
+      for (const double term : segment_terms) total += term;
   }
   out.error = count > 0 ? total / static_cast<double>(count) : 0.0;
   return out;

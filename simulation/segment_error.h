@@ -23,13 +23,21 @@ struct SegmentedError {
   // Whether the segments were left unrun at a SegmentStop: `error` is then what the segments
   // run so far add over all rows, a lower bound of the whole.
   bool stopped = false;
+  // Each segment's share of `error` (its squared errors over the variances, over all rows' count),
+  // in the data's order; NaN for a segment left unrun.
+  std::vector<double> segment_errors;
 };
 
 // When a caller that needs only a bound may leave the remaining segments unrun: at the first
 // that diverges, and once the error is sure to exceed `above` (the squared errors only add).
+// `likely_errors` (one per segment, or empty) guesses each segment's error, say a similar model's
+// segment_errors: the segments are then run largest guess first, so that a model worse than the
+// bound is found out after fewer of them. A run that finishes has the same error, bit for bit, in
+// any order (the squared errors are summed in the data's order).
 struct SegmentStop {
   bool at_divergence = false;
   double above = std::numeric_limits<double>::infinity();
+  std::vector<double> likely_errors;
 };
 
 SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,

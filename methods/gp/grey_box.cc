@@ -130,7 +130,9 @@ ForwardSelection SelectForward(const GreyBoxFit& fit, const Dataset& heldout,
   ForwardSelection out;
   std::vector<Effect> kept_terms;
   std::set<std::string> corrected;
-  double error = hybrid::HeldoutFreeRunError(fit.vessel, heldout, fit.params, {}, fit.states);
+  hybrid::HeldoutFreeRun base =
+      hybrid::HeldoutFreeRuns(fit.vessel, heldout, fit.params, {}, fit.states);
+  double error = base.error;
   result.vessel_free_run_error = error;
   for (int round = 0; round < static_cast<int>(fit.states.size()); ++round) {
     // What a candidate's error can matter up to: to be kept, within the parsimony of an error
@@ -140,14 +142,18 @@ ForwardSelection SelectForward(const GreyBoxFit& fit, const Dataset& heldout,
     const double keepable = (1.0 + options.parsimony) * (1.0 - options.min_gain) * error;
     const double matters = round == 0 ? std::max(error, keepable) : keepable;
     std::vector<double> errors(candidates.size(), kDiverged);
+    std::vector<hybrid::HeldoutFreeRun> runs(candidates.size());
     ParallelFor(static_cast<int>(candidates.size()), options.search.threads, [&](int i) {
       if (corrected.contains(candidates[i].state)) return;
       std::vector<Effect> terms = kept_terms;
       for (Effect& e : AsEffects(candidates[i].model, fit.problem.names, candidates[i].state))
         terms.push_back(std::move(e));
       try {
-        errors[i] = hybrid::HeldoutFreeRunError(fit.vessel, heldout, fit.params, terms, fit.states,
-                                                matters);
+        // The records the model of the round's start found hardest run first: a candidate
+        // worse than `matters` is mostly worse there too, and is stopped sooner.
+        runs[i] = hybrid::HeldoutFreeRuns(fit.vessel, heldout, fit.params, terms, fit.states,
+                                          matters, base.per_record);
+        errors[i] = runs[i].error;
       } catch (const std::exception&) {
         // A term the vessel cannot evaluate is not chosen (its error stays infinite).
       }
@@ -176,6 +182,7 @@ ForwardSelection SelectForward(const GreyBoxFit& fit, const Dataset& heldout,
     for (Effect& e : AsEffects(c.model, fit.problem.names, c.state))
       kept_terms.push_back(std::move(e));
     error = errors[best];
+    base = std::move(runs[best]);  // kept, so run to the end: every record's share is known
     out.errors.push_back(error);
   }
   result.free_run_error = error;

@@ -29,4 +29,18 @@ double HeldoutFreeRunError(const VesselRef& vessel, const Dataset& heldout,
                            const std::vector<std::string>& states,
                            double stop_above = std::numeric_limits<double>::infinity());
 
+// The same, with each record's share of the error (NaN for a record left unrun). `likely`, a
+// similar model's shares (or empty), runs the records it found worst first, so that a model
+// worse than `stop_above` is stopped after fewer of them; a finished error does not depend on
+// it (simulation/segment_error.h).
+struct HeldoutFreeRun {
+  double error = 0.0;
+  std::vector<double> per_record;
+};
+HeldoutFreeRun HeldoutFreeRuns(const VesselRef& vessel, const Dataset& heldout,
+                               const std::vector<double>& params, const std::vector<Effect>& terms,
+                               const std::vector<std::string>& states,
+                               double stop_above = std::numeric_limits<double>::infinity(),
+                               const std::vector<double>& likely = {});
+
 }  // namespace usvid::hybrid

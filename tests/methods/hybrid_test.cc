@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "core/records.h"
@@ -112,6 +113,41 @@ TEST(HybridTest, AFreeRunChecksTheModelOnEachHeldOutRecordFromItsOwnStart) {
   const double e = hybrid::HeldoutFreeRunError("odin3dof", joined, info.default_params,
                                                {kCrossFlowYaw, unstable}, states);
   EXPECT_TRUE(std::isinf(e)) << e;
+}
+
+TEST(HybridTest, AFreeRunThatMayStopRunsTheLikelyWorstRecordFirst) {
+  // Three records, the last of a vessel with twice the cross-flow term: the model with the term
+  // once free-runs the first two to the noise and misses the third. Asked only whether its error
+  // exceeds half of what it is, it must run the third to know; run in the data's order, it runs
+  // all three, and run the hardest first (as a similar model found them), that one alone. A run
+  // that finishes has the same error, bit for bit, in either order.
+  const VesselInfo& info = FindVessel("odin3dof").Info();
+  Effect twice = kCrossFlowYaw;
+  twice.parameters["coefficient"] *= 2.0;
+  const Dataset joined =
+      JoinRecords({Simulate({kCrossFlowYaw}, 200, 7), Simulate({kCrossFlowYaw}, 200, 8),
+                   Simulate({twice}, 200, 9)});
+  const std::vector<std::string> states = {"u", "v", "r"};
+  const auto run = [&](double stop_above, const std::vector<double>& likely) {
+    return hybrid::HeldoutFreeRuns("odin3dof", joined, info.default_params, {kCrossFlowYaw}, states,
+                                   stop_above, likely);
+  };
+  const hybrid::HeldoutFreeRun whole = run(std::numeric_limits<double>::infinity(), {});
+  ASSERT_EQ(whole.per_record.size(), 3u);
+  EXPECT_GT(whole.per_record[2], 10.0 * (whole.per_record[0] + whole.per_record[1]));
+  const std::vector<double> likely = whole.per_record;
+  const hybrid::HeldoutFreeRun reordered = run(std::numeric_limits<double>::infinity(), likely);
+  EXPECT_EQ(reordered.error, whole.error);
+  EXPECT_EQ(reordered.per_record, whole.per_record);
+
+  const double bound = 0.5 * whole.error;
+  const hybrid::HeldoutFreeRun in_order = run(bound, {});
+  EXPECT_EQ(in_order.error, whole.error);  // the last record decides: all three run
+  const hybrid::HeldoutFreeRun worst_first = run(bound, likely);
+  EXPECT_GT(worst_first.error, bound);  // a lower bound, above what was asked
+  EXPECT_LT(worst_first.error, whole.error);
+  EXPECT_TRUE(std::isnan(worst_first.per_record[0]) && std::isnan(worst_first.per_record[1]));
+  EXPECT_EQ(worst_first.per_record[2], whole.per_record[2]);
 }
 
 TEST(HybridTest, RefusesWhatItCannotDo) {
