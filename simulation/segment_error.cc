@@ -58,10 +58,15 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
   // The order the segments run in: the data's, or the largest likely error first.
   std::vector<size_t> order(segments.size());
   std::iota(order.begin(), order.end(), size_t{0});
-  if (stop.likely_errors.size() == segments.size())
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-      return stop.likely_errors[a] > stop.likely_errors[b];
-    });
+  if (stop.likely_errors.size() == segments.size()) {
+    // A guess of NaN (a segment the similar model left unrun) runs last.
+    const auto guess = [&](size_t s) {
+      const double e = stop.likely_errors[s];
+      return std::isnan(e) ? -std::numeric_limits<double>::infinity() : e;
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return guess(a) > guess(b); });
+  }
   // Each segment's squared errors over the variances, in the order they are summed.
   std::vector<std::vector<double>> terms(segments.size());
   SegmentedError out;

@@ -148,6 +148,9 @@ TEST(HybridTest, AFreeRunThatMayStopRunsTheLikelyWorstRecordFirst) {
   EXPECT_LT(worst_first.error, whole.error);
   EXPECT_TRUE(std::isnan(worst_first.per_record[0]) && std::isnan(worst_first.per_record[1]));
   EXPECT_EQ(worst_first.per_record[2], whole.per_record[2]);
+  // A guess the similar model left unrun (NaN) runs last.
+  EXPECT_EQ(run(bound, {std::nan(""), std::nan(""), 1.0}).per_record[2], whole.per_record[2]);
+  EXPECT_TRUE(std::isnan(run(bound, {std::nan(""), std::nan(""), 1.0}).per_record[0]));
 }
 
 TEST(HybridTest, RefusesWhatItCannotDo) {
