@@ -12,14 +12,13 @@
 #include "simulation/divergence_bounds.h"
 
 namespace usvid {
+namespace {
 
-SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
-                                          const std::vector<double>& params,
-                                          const EffectValues<double>& effects, const Dataset& data,
-                                          const std::vector<std::string>& channels,
-                                          double segment_s, const RunOptions& options,
-                                          const SegmentStop& stop) {
-  if (!(segment_s > 0)) throw InputError("segment length must be positive");
+using SegmentRows = std::pair<Eigen::Index, Eigen::Index>;  // [first, last]
+
+// Each channel's variance over the data (over its sampled rows), at least 1e-300.
+std::vector<double> SegmentChannelVariances(const Dataset& data,
+                                            const std::vector<std::string>& channels) {
   std::vector<double> variance;
   for (const std::string& c : channels) {
     const Eigen::ArrayXd v = data[c].array();
@@ -32,9 +31,13 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
       variance.push_back(std::max(sampled.select((v - mean).square(), 0.0).sum() / n, 1e-300));
     }
   }
-  // The segments: [first, last] rows, within segment_s and across no gap; each run from its
-  // first row's measured state.
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> segments;
+  return variance;
+}
+
+// The segments: [first, last] rows, within segment_s and across no gap; each run from its
+// first row's measured state.
+std::vector<SegmentRows> SegmentsWithin(const Dataset& data, double segment_s) {
+  std::vector<SegmentRows> segments;
   const Eigen::VectorXd& t = data.t();
   const double gap = GapLimit(t, kRawGapFactor);  // no segment runs across a gap
   Eigen::Index start = 0;
@@ -50,64 +53,90 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
     segments.emplace_back(start, end);
     start = end;
   }
+  return segments;
+}
+
+// The order the segments run in: the data's, or the largest likely error first (a guess of NaN,
+// a segment the similar model left unrun, last).
+std::vector<size_t> SegmentRunOrder(size_t count, const std::vector<double>& likely) {
+  std::vector<size_t> order(count);
+  std::iota(order.begin(), order.end(), size_t{0});
+  if (likely.size() != count) return order;
+  const auto guess = [&](size_t s) {
+    return std::isnan(likely[s]) ? -std::numeric_limits<double>::infinity() : likely[s];
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return guess(a) > guess(b); });
+  return order;
+}
+
+// Runs one segment open-loop from its first row: its squared errors over the variances, in the
+// order they are summed, go to `terms`; true when the run stopped early or left the bounds.
+bool RunOneSegment(const VesselSimulator& sim, const std::vector<double>& params,
+                   const EffectValues<double>& effects, const Dataset& data,
+                   const std::vector<std::string>& channels, const std::vector<double>& variance,
+                   const RunOptions& options, SegmentRows rows, std::vector<double>& terms) {
+  std::vector<bool> keep(data.rows(), false);
+  for (Eigen::Index i = rows.first; i <= rows.second; ++i) keep[i] = true;
+  Dataset segment = data;
+  segment.KeepRows(keep);
+  const SimulationResult r = sim.RunInputs(segment, params, effects, options);
+  std::vector<const Eigen::VectorXd*> simulated;
+  if (r.data.rows() > 0)
+    for (const std::string& c : channels) simulated.push_back(&r.data[c]);
+  bool diverged = r.data.rows() < segment.rows();
+  const DivergenceBounds bounds(channels, segment);
+  Eigen::VectorXd x(static_cast<Eigen::Index>(channels.size()));
+  for (Eigen::Index k = 0; k < r.data.rows() && !diverged; ++k) {
+    for (size_t c = 0; c < channels.size(); ++c)
+      x(static_cast<Eigen::Index>(c)) = (*simulated[c])(k);
+    diverged = bounds.Exceeded(x) >= 0;
+  }
+  for (size_t c = 0; c < channels.size(); ++c) {
+    const Eigen::VectorXd& y = segment[channels[c]];
+    for (Eigen::Index k = 0; k < segment.rows(); ++k) {
+      if (!std::isfinite(y(k))) continue;  // not sampled there
+      const double e = k < r.data.rows() ? (*simulated[c])(k)-y(k) : y(k);
+      terms.push_back(e * e / variance[c]);
+    }
+  }
+  return diverged;
+}
+
+}  // namespace
+
+SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
+                                          const std::vector<double>& params,
+                                          const EffectValues<double>& effects, const Dataset& data,
+                                          const std::vector<std::string>& channels,
+                                          double segment_s, const RunOptions& options,
+                                          const SegmentStop& stop) {
+  if (!(segment_s > 0)) throw InputError("segment length must be positive");
+  const std::vector<double> variance = SegmentChannelVariances(data, channels);
+  const std::vector<SegmentRows> segments = SegmentsWithin(data, segment_s);
   // The rows the error averages over, known before any run: each segment's sampled values.
   long count = 0;
   for (const auto& [first, last] : segments)
     for (const std::string& c : channels)
       count += data[c].segment(first, last - first + 1).array().isFinite().count();
-  // The order the segments run in: the data's, or the largest likely error first.
-  std::vector<size_t> order(segments.size());
-  std::iota(order.begin(), order.end(), size_t{0});
-  if (stop.likely_errors.size() == segments.size()) {
-    // A guess of NaN (a segment the similar model left unrun) runs last.
-    const auto guess = [&](size_t s) {
-      const double e = stop.likely_errors[s];
-      return std::isnan(e) ? -std::numeric_limits<double>::infinity() : e;
-    };
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return guess(a) > guess(b); });
-  }
   // Each segment's squared errors over the variances, in the order they are summed.
   std::vector<std::vector<double>> terms(segments.size());
   SegmentedError out;
   out.segment_errors.assign(segments.size(), std::numeric_limits<double>::quiet_NaN());
   double so_far = 0.0;  // in the order run
-  for (const size_t s : order) {
-    if (out.diverged && stop.at_divergence) {
+  for (const size_t s : SegmentRunOrder(segments.size(), stop.likely_errors)) {
+    if ((out.diverged && stop.at_divergence) ||
+        (count > 0 && so_far / static_cast<double>(count) > stop.above)) {
       out.stopped = true;
       break;
     }
-    if (count > 0 && so_far / static_cast<double>(count) > stop.above) {
-      out.stopped = true;
-      break;
-    }
-    const auto [first, last] = segments[s];
-    std::vector<bool> keep(data.rows(), false);
-    for (Eigen::Index i = first; i <= last; ++i) keep[i] = true;
-    Dataset segment = data;
-    segment.KeepRows(keep);
-    const SimulationResult r = sim.RunInputs(segment, params, effects, options);
-    std::vector<const Eigen::VectorXd*> simulated;
-    if (r.data.rows() > 0)
-      for (const std::string& c : channels) simulated.push_back(&r.data[c]);
-    out.diverged = out.diverged || r.data.rows() < segment.rows();
-    const DivergenceBounds bounds(channels, segment);
-    Eigen::VectorXd x(static_cast<Eigen::Index>(channels.size()));
-    for (Eigen::Index k = 0; k < r.data.rows() && !out.diverged; ++k) {
-      for (size_t c = 0; c < channels.size(); ++c)
-        x(static_cast<Eigen::Index>(c)) = (*simulated[c])(k);
-      out.diverged = bounds.Exceeded(x) >= 0;
-    }
+    const bool diverged = RunOneSegment(sim, params, effects, data, channels, variance, options,
+                                        segments[s], terms[s]);
+    out.diverged = out.diverged || diverged;
     double sum = 0.0;
-    for (size_t c = 0; c < channels.size(); ++c) {
-      const Eigen::VectorXd& y = segment[channels[c]];
-      for (Eigen::Index k = 0; k < segment.rows(); ++k) {
-        if (!std::isfinite(y(k))) continue;  // not sampled there
-        const double e = k < r.data.rows() ? (*simulated[c])(k)-y(k) : y(k);
-        terms[s].push_back(e * e / variance[c]);
-        so_far += terms[s].back();
-        sum += terms[s].back();
-      }
+    for (const double term : terms[s]) {
+      so_far += term;
+      sum += term;
     }
     out.segment_errors[s] = count > 0 ? sum / static_cast<double>(count) : 0.0;
   }
