@@ -1,5 +1,7 @@
 #include "harness/report.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -9,8 +11,6 @@
 #include <memory>
 #include <set>
 #include <sstream>
-
-#include <omp.h>
 
 #include "core/atomic_file.h"
 #include "core/parallel_for.h"

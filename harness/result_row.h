@@ -27,7 +27,7 @@ struct ResultRow {
   std::map<std::string, double> regime_fit_percent;  // mean over states, per speed regime
   // Per prediction horizon ("5", "30" s, "all": the free run), the mean fit % over the states.
   std::map<std::string, double> horizon_fit_percent;
-  std::optional<double> valid_prediction_s;    // the free run's valid prediction time
+  std::optional<double> valid_prediction_s;     // the free run's valid prediction time
   std::map<std::string, double> derivative_r2;  // per state: the equation against the data
   bool diverged = false;
   double diverged_at_s = 0.0;

@@ -250,14 +250,14 @@ ResultRow ScoreOnTest(const Suite& suite, const FitJob& job, const ResultRow& ba
     row.diverged = e.diverged;
     row.diverged_at_s = e.diverged_at_s;
     row.diverged_channel = e.diverged_channel;
-    if (ReportDrawsFreeRun(suite, row))
-      row.free_run = std::make_shared<const FreeRun>(std::move(evaluation.run));
+    const bool drawn = ReportDrawsFreeRun(suite, row);
+    if (drawn) row.free_run = std::make_shared<const FreeRun>(std::move(evaluation.run));
     const std::string spec = TestManeuverSpec(suite, test);
     ClosedLoopReplay replay;
     row.closed_loop = ClosedLoopScore(
         model, job.vessel, suite.Measured() ? RecordedManeuverSpec(spec, job.vessel, held) : spec,
         held, &replay);
-    if (suite.Measured() && ReportDrawsFreeRun(suite, row) && replay.run.rows() > 0)
+    if (suite.Measured() && drawn && replay.run.rows() > 0)
       row.replay = std::make_shared<const ClosedLoopReplay>(std::move(replay));
   } catch (const std::exception& e) {
     row.status = std::string("failed: ") + e.what();

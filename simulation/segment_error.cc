@@ -119,34 +119,39 @@ SegmentedError SegmentedSimulationErrorOf(const VesselSimulator& sim,
   for (const auto& [first, last] : segments)
     for (const std::string& c : channels)
       count += data[c].segment(first, last - first + 1).array().isFinite().count();
-  // Each segment's squared errors over the variances, in the order they are summed.
-  std::vector<std::vector<double>> terms(segments.size());
+  const std::vector<size_t> order = SegmentRunOrder(segments.size(), stop.likely_errors);
+  // Run out of the data's order, each segment's squared errors over the variances are kept, to be
+  // summed in the data's order once all have run.
+  const bool reordered = !std::is_sorted(order.begin(), order.end());
+  std::vector<std::vector<double>> terms(reordered ? segments.size() : 0);
   SegmentedError out;
   out.segment_errors.assign(segments.size(), std::numeric_limits<double>::quiet_NaN());
   double so_far = 0.0;  // in the order run
-  for (const size_t s : SegmentRunOrder(segments.size(), stop.likely_errors)) {
+  for (const size_t s : order) {
     if ((out.diverged && stop.at_divergence) ||
         (count > 0 && so_far / static_cast<double>(count) > stop.above)) {
       out.stopped = true;
       break;
     }
+    std::vector<double> segment_terms;
     const bool diverged = RunOneSegment(sim, params, effects, data, channels, variance, options,
-                                        segments[s], terms[s]);
+                                        segments[s], segment_terms);
     out.diverged = out.diverged || diverged;
     double sum = 0.0;
-    for (const double term : terms[s]) {
+    for (const double term : segment_terms) {
       so_far += term;
       sum += term;
     }
     out.segment_errors[s] = count > 0 ? sum / static_cast<double>(count) : 0.0;
+    if (reordered) terms[s] = std::move(segment_terms);
   }
-  // A finished run's total is summed in the data's order, whatever order the segments ran in; a
-  // stopped one's is what its segments add.
+  // A finished run's total is summed in the data's order, whatever order the segments ran in (in
+  // the data's order, so_far is that sum); a stopped one's is what its segments add.
   double total = so_far;
-  if (!out.stopped) {
+  if (reordered && !out.stopped) {
     total = 0.0;
-    for (const std::vector<double>& segment_terms : terms)
-      for (const double term : segment_terms) total += term;
+    for (const std::vector<double>& kept : terms)
+      for (const double term : kept) total += term;
   }
   out.error = count > 0 ? total / static_cast<double>(count) : 0.0;
   return out;
