@@ -293,10 +293,16 @@ size_t DropCutCopies(nlohmann::json& suite, std::vector<std::string>& notes) {
 // rows the track trains on without --cv (Esso Osaka: about 110000 against 30642), and the
 // refit's time grows with its rows (54 s a fold on 60000, 27 folds), so each fold's refit takes
 // at most kCrossValidationFitRows, spread over all the fold's runs (methods/refit/typed_refit.h).
-nlohmann::json CrossValidatedMethods(const nlohmann::json& given, std::vector<std::string>& notes) {
+// A track none of whose methods is left is an InputError naming `file`, its track file.
+nlohmann::json CrossValidatedMethods(const nlohmann::json& given, const std::string& file,
+                                     std::vector<std::string>& notes) {
   nlohmann::json methods = nlohmann::json::array();
   for (const nlohmann::json& m : given)
     if (!SearchesTheVessel(m)) methods.push_back(m);
+  if (methods.empty())
+    throw InputError(file +
+                     ": methods: --cv leaves out diagnose and hybrid, and the track has no other "
+                     "method to cross-validate");
   if (methods.size() < given.size())
     notes.push_back(
         "diagnose and hybrid left out of the cross-validation: each fits for 200-500 s on the "
@@ -328,7 +334,7 @@ void PrepareCrossValidation(const TrackSpec& spec, const std::string& cv, const 
   suite["data"]["train"] = TrainingRunsOf(spec, data_dir, suite);
   const size_t runs = DropCutCopies(suite, notes);
   suite["cv"] = cv;
-  suite["methods"] = CrossValidatedMethods(suite["methods"], notes);
+  suite["methods"] = CrossValidatedMethods(suite["methods"], spec.file, notes);
   notes.push_back("leave-one-run-out cross-validation over " + std::to_string(runs) +
                   " runs: each left out in turn, every method fitted on the other " +
                   std::to_string(runs - 1) +
@@ -400,6 +406,7 @@ TrackSpec SpecOfTrack(const TrackFile& track, const fs::path& path, const fs::pa
   const fs::path folder = path.lexically_relative(data_dir);
   TrackSpec spec;
   spec.name = track.name;
+  spec.file = track.file;
   spec.from_track_file = true;
   spec.split = track.split;
   spec.read = track.read;

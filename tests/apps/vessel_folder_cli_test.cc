@@ -105,6 +105,10 @@ TEST_F(VesselFolderCliTest, ABadTrackFileIsExit2AtItsLineWithNothingWritten) {
           ":4:6: columns.r: 'yaw_rate' is not a column of");
   refused("format: csv\nscale: 0\n", ":2:8: scale: must be above 0, got 0");
   refused("format: csv\nmethod: [nomoto]\n", ":2:1: method: unknown key");
+  // Without a split the runs are cross-validated, which leaves out the methods that search the
+  // vessel: a track of nothing else has nothing to run.
+  refused("vessel: kvlcc2\nformat: csv\nmethods: [hybrid, diagnose]\n",
+          ": methods: --cv leaves out diagnose and hybrid, and the track has no other method");
 }
 
 TEST(VesselFolderInitTest, InitTrackStartsAFolderFromALogsHeader) {
