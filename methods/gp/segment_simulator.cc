@@ -49,12 +49,46 @@ double SegmentSimulator::FreeRunError(const std::vector<const Model*>& models,
   return steps > 0 ? total / static_cast<double>(steps) : 0.0;
 }
 
+// Which variables the models read: those their trees name, and the arguments of each derived
+// column they read (a derived column may read one before it, so in reverse order).
+std::vector<bool> SegmentSimulator::Read(const std::vector<const Model*>& models) const {
+  std::vector<bool> read(data_.names.size(), false);
+  for (const Model* m : models)
+    for (const Node& node : m->tree)
+      if (node.op == Op::kVar) read[node.var] = true;
+  for (auto d = data_.derived.rbegin(); d != data_.derived.rend(); ++d)
+    if (read[d->index])
+      for (const int a : d->arguments) read[a] = true;
+  return read;
+}
+
+void SegmentSimulator::FillColumns(const std::vector<bool>& read, const Eigen::ArrayXXd& state,
+                                   const long* starts, long k,
+                                   std::vector<std::vector<double>>& cols,
+                                   std::vector<const double*>& args) const {
+  const int count = static_cast<int>(state.cols());
+  for (size_t v = 0; v < cols.size(); ++v)
+    if (read[v])
+      for (int j = 0; j < count; ++j)
+        cols[v][j] = is_state_[v] >= 0 ? state(is_state_[v], j) : data_.variables[v](starts[j] + k);
+  for (const DerivedColumn& d : data_.derived) {
+    if (!read[d.index]) continue;
+    for (size_t a = 0; a < d.arguments.size(); ++a) args[a] = cols[d.arguments[a]].data();
+    d.expression.EvaluateColumns(std::span<const double* const>(args.data(), d.arguments.size()),
+                                 count, cols[d.index].data());
+  }
+}
+
 double SegmentSimulator::Error(const std::vector<const Model*>& models,
                                const std::vector<long>& starts, long steps, bool& diverged,
                                std::vector<double>* per_segment,
                                std::vector<double>* residuals) const {
   const int ns = static_cast<int>(state_vars_.size());
   const int nv = static_cast<int>(data_.names.size());
+  // A column no model reads is neither filled nor derived: on odin-hs the regime features (Fn
+  // and its hinges, each a square root) took over a third of this function when derived at
+  // every stage whether read or not (docs/performance.md, item 9).
+  const std::vector<bool> read = Read(models);
   diverged = false;
   std::vector<double> segment(starts.size(), 0.0);
   if (residuals) residuals->assign(starts.size() * steps * ns, 0.0);
@@ -65,22 +99,13 @@ double SegmentSimulator::Error(const std::vector<const Model*>& models,
     std::vector<const double*> pointers;
     for (const auto& c : cols) pointers.push_back(c.data());
     Interpreter<double> interp(pointers);
-    std::vector<const double*> args(data_.names.size());  // a derived column's arguments
+    std::vector<const double*> args(nv);  // FillColumns' buffer: a derived column's arguments
     Eigen::ArrayXXd x(ns, count), k1(ns, count), k2(ns, count), k3(ns, count), k4(ns, count);
     std::vector<bool> active(count, true);
     for (int j = 0; j < count; ++j)
       for (int s = 0; s < ns; ++s) x(s, j) = data_.variables[state_vars_[s]](starts[first + j]);
     auto derivative = [&](long k, const Eigen::ArrayXXd& state, Eigen::ArrayXXd& dx) {
-      for (int v = 0; v < nv; ++v)
-        for (int j = 0; j < count; ++j)
-          cols[v][j] = is_state_[v] >= 0 ? state(is_state_[v], j)
-                                         : data_.variables[v](starts[first + j] + k);
-      for (const DerivedColumn& d : data_.derived) {
-        for (size_t a = 0; a < d.arguments.size(); ++a) args[a] = cols[d.arguments[a]].data();
-        d.expression.EvaluateColumns(
-            std::span<const double* const>(args.data(), d.arguments.size()), count,
-            cols[d.index].data());
-      }
+      FillColumns(read, state, &starts[first], k, cols, args);
       for (int s = 0; s < ns; ++s) {
         const Model& m = *models[s];
         interp.Evaluate(m.tree, 0, count);

@@ -59,6 +59,15 @@ class SegmentSimulator {
   double FreeRunError(const std::vector<const Model*>& models, bool& diverged) const;
 
  private:
+  // For each variable, whether `models` read it (directly or through a derived column).
+  std::vector<bool> Read(const std::vector<const Model*>& models) const;
+  // The columns the models read, at step k of the segments starting at starts[0..count): each
+  // state's from `state` (a column per segment), the other variables' from the data, then the
+  // derived columns from those (`args`: a buffer of one pointer per variable).
+  void FillColumns(const std::vector<bool>& read, const Eigen::ArrayXXd& state, const long* starts,
+                   long k, std::vector<std::vector<double>>& cols,
+                   std::vector<const double*>& args) const;
+
   const SelectionData& data_;
   std::vector<int> state_vars_;
   std::vector<int> is_state_;
