@@ -46,7 +46,8 @@ struct RefitOptions {
   // Esso Osaka's cross-validated refit, 1e-10 let eight run to max_iterations crawling along a
   // valley (the last 56 steps of one lowered the cost by 2e-5 of itself in all); 1e-6 stopped
   // five of them at 21-95 iterations, each fold's cost within 8e-4 of its value at 1e-10
-  // (docs/performance.md#what-profiling-found-and-what-was-done-about-it, item 8).
+  // (docs/performance.md#what-profiling-found-and-what-was-done-about-it, item 8). Not used with
+  // hold_model, whose scores keep 1e-10 (SolveRefit, typed_refit.h).
   double function_tolerance = 1e-6;
   int threads = 1;
   std::vector<Effect> terms;  // missing_term effects, their coefficients fitted
